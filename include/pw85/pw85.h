@@ -1,0 +1,205 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/**
+ * @file pw85.h
+ * @brief The C ABI of pw85: the contact function of Perram and Wertheim
+ *        (J. Comp. Phys. 58(3), 409-416, 1985) for two ellipsoids.
+ *
+ * Storage conventions, used by every function below:
+ * - a vector is a `double[3]` (PW85_DIM) of Cartesian coordinates;
+ * - a symmetric matrix A is a `double[6]` (PW85_SYM) holding its upper
+ *   triangle row by row:
+ *   `a[0]=A00 a[1]=A01 a[2]=A02 a[3]=A11 a[4]=A12 a[5]=A22`;
+ * - a lower-triangular matrix L (Cholesky factor) is a `double[6]` holding
+ *   its lower triangle column by column:
+ *   `l[0]=L00 l[1]=L10 l[2]=L20 l[3]=L11 l[4]=L21 l[5]=L22`.
+ *
+ * An ellipsoid of centre c is the set {m : (m-c)ᵀ Q⁻¹ (m-c) ≤ 1}, where Q
+ * is symmetric positive definite; Q = Σ aᵢ² vᵢ vᵢᵀ for semi-axes aᵢ along
+ * unit vectors vᵢ. Q has the dimension of a squared length.
+ *
+ * Thread safety: every function is reentrant and thread-safe; none keeps
+ * state between calls. None prints, aborts, exits, allocates from the heap,
+ * or changes process-wide state (in particular GSL's error handler is never
+ * installed nor reached).
+ */
+#ifndef PW85_H
+#define PW85_H
+
+#include "pw85_version.h"
+
+/** Marks the exported functions; define it before including this header to
+ *  override (for example as empty, to link a static copy). */
+#ifndef PW85_API
+#if defined(_WIN32) && defined(PW85_BUILDING_DLL)
+#define PW85_API __declspec(dllexport)
+#elif defined(__GNUC__) && __GNUC__ >= 4
+#define PW85_API __attribute__((visibility("default")))
+#else
+#define PW85_API
+#endif
+#endif
+
+/** Exception specification of the functions below for C++ callers: none
+ *  of them throws. */
+#if defined(__cplusplus) && __cplusplus >= 201103L
+#define PW85_NOEXCEPT noexcept
+#else
+#define PW85_NOEXCEPT
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The dimension of the physical space. */
+#define PW85_DIM 3
+/** The number of independent entries of a symmetric PW85_DIM×PW85_DIM
+ *  matrix. */
+#define PW85_SYM 6
+/** The absolute tolerance on λ at which Brent's method stops. */
+#define PW85_LAMBDA_ATOL 1e-6
+/** The maximum number of iterations of Brent's method. */
+#define PW85_MAX_ITER 25
+/** The maximum number of Newton–Raphson steps that refine Brent's λ. */
+#define PW85_NR_ITER 3
+
+/** @name Status codes
+ *  Returned by the functions that return an int. Values never change once
+ *  released; new codes are appended.
+ *  @{ */
+#define PW85_SUCCESS 0     /**< success */
+#define PW85_EFAULT 1      /**< a pointer argument is NULL */
+#define PW85_EDOM 2        /**< an input is NaN or infinite */
+#define PW85_ENOTPOSDEF 3  /**< q1 or q2 is not positive definite */
+#define PW85_ERANGE 4      /**< μ² or the input's dynamic range exceeds the
+                                range of a double */
+#define PW85_ENOMEM 5      /**< the minimiser needs more working memory than
+                                pw85 reserves (not expected with any GSL) */
+/** @} */
+
+/**
+ * @brief Name a status code.
+ * @param[in] status a value returned by a pw85 function.
+ * @return a static, NUL-terminated English message (never NULL); an unknown
+ *         code gets "unknown pw85 status".
+ */
+PW85_API const char *pw85_strerror(int status) PW85_NOEXCEPT;
+
+/**
+ * @brief The version of the library actually loaded, "MAJOR.MINOR.PATCH".
+ *
+ * Compare with PW85_VERSION (the headers' version) when the library is loaded
+ * with dlopen.
+ * @return a static string (never NULL).
+ */
+PW85_API const char *pw85_version(void) PW85_NOEXCEPT;
+
+/**
+ * @brief Cholesky factorisation A = L·Lᵀ of a symmetric positive definite
+ *        3×3 matrix (internal, exposed for testing).
+ *
+ * Preconditions, not checked: a and l are valid pointers, the entries of
+ * a finite. If a pivot is not positive (A not positive definite to the
+ * resolution of the factorisation), every entry of l is set to NaN.
+ * @param[in] a the matrix A (upper triangle, see the file description).
+ * @param[out] l the lower-triangular factor L (see the file description).
+ */
+PW85_API void pw85__cholesky_decomp(double const a[PW85_SYM],
+                                    double l[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Solve L·Lᵀ·x = b by forward and back substitution (internal,
+ *        exposed for testing).
+ *
+ * Preconditions, not checked: pointers are valid, L has a non-zero
+ * diagonal. x may alias b.
+ * @param[in] l the factor from pw85__cholesky_decomp().
+ * @param[in] b the right-hand side.
+ * @param[out] x the solution.
+ */
+PW85_API void pw85__cholesky_solve(double const l[PW85_SYM],
+                                   double const b[PW85_DIM],
+                                   double x[PW85_DIM]) PW85_NOEXCEPT;
+
+/**
+ * @brief The quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ.
+ *
+ * @param[in] a the equatorial radius (a length).
+ * @param[in] c the polar radius (a length).
+ * @param[in] n the unit vector of the axis of revolution (not normalised
+ *              here: a non-unit n gives the formula's Q, not a spheroid).
+ * @param[out] q the matrix Q (a squared length). Not written if q is NULL;
+ *               filled with NaN if n is NULL. Non-finite input gives
+ *               non-finite entries.
+ */
+PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
+                            double q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Minus the function f of the contact problem:
+ *        −f(λ) = −λ(1−λ) r12ᵀ·Q(λ)⁻¹·r12, Q(λ) = (1−λ)·Q1 + λ·Q2.
+ *
+ * The signature is that of a gsl_function, so that GSL's minimisers can
+ * call it. Plain double arithmetic, no rescaling: intermediate values must
+ * stay within the range of a double (|r12|² and the entries of Q1, Q2
+ * between about 1e-300 and 1e300).
+ * @param[in] lambda λ, normally in [0, 1].
+ * @param[in] params 15 doubles: r12[3], then q1[6], then q2[6].
+ * @return −f(λ), a value ≤ 0 for λ in [0, 1]; NaN if params is NULL, if
+ *         lambda or an entry of params is not finite, or if Q(λ) is not
+ *         positive definite.
+ */
+PW85_API double pw85_f_neg(double lambda, double const *params) PW85_NOEXCEPT;
+
+/**
+ * @brief f(λ), the residual g(λ) = μ2²(λ) − μ1²(λ) and g′(λ) (internal,
+ *        exposed for testing; see the optimisation chapter of the docs).
+ *
+ * Preconditions, not checked: pointers valid, inputs finite, Q(λ) positive
+ * definite.
+ * @param[in] lambda λ in [0, 1].
+ * @param[in] r12 the centre-to-centre vector c2 − c1.
+ * @param[in] q1 the quadratic form of the first ellipsoid.
+ * @param[in] q2 the quadratic form of the second ellipsoid.
+ * @param[out] out out[0] = f(λ), out[1] = g(λ), out[2] = g′(λ).
+ */
+PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
+                             double const q1[PW85_SYM],
+                             double const q2[PW85_SYM], double out[3]) PW85_NOEXCEPT;
+
+/**
+ * @brief The contact function μ² of two ellipsoids and its maximiser λ.
+ *
+ * μ² = max over λ in [0, 1] of f(λ); μ is the common factor by which both
+ * ellipsoids must be scaled, centres fixed, to be externally tangent:
+ * μ² < 1 means they overlap, μ² > 1 that they are disjoint. μ² is
+ * dimensionless and invariant under r12 → t·r12, Q → t²·Q; inputs are
+ * rescaled internally by powers of two, so any finite input is accepted.
+ *
+ * @param[in] r12 the centre-to-centre vector c2 − c1 (any finite vector;
+ *                r12 = 0 gives μ² = 0, λ = ½).
+ * @param[in] q1 the quadratic form of the first ellipsoid.
+ * @param[in] q2 the quadratic form of the second ellipsoid.
+ * @param[out] out out[0] = μ² (≥ 0; may round to a subnormal or to 0 when
+ *                 μ² is below the range of a double), out[1] = λ in [0, 1].
+ * @return PW85_SUCCESS;
+ *         PW85_EFAULT if a pointer is NULL (out untouched);
+ *         PW85_EDOM if an input is NaN or infinite (out untouched);
+ *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite as stored,
+ *         to the resolution of a double Cholesky factorisation (out
+ *         untouched);
+ *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity, out[1] = λ;
+ *         or if the diagonal entries of q1 and q2 together span more than
+ *         the range of a double (ratio above about 1e600: out untouched);
+ *         PW85_ENOMEM if GSL's minimiser would need more than the working
+ *         memory reserved on the stack (out untouched; not expected).
+ */
+PW85_API int pw85_contact_function(double const r12[PW85_DIM],
+                                   double const q1[PW85_SYM],
+                                   double const q2[PW85_SYM], double out[2]) PW85_NOEXCEPT;
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* PW85_H */

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file pw85.hpp
+ * @brief The C++ API of pw85 (that of pw85 2.0): inline wrappers over the C
+ *        ABI of pw85.h, so that C++ code links the same -lpw85 and no C++
+ *        type crosses the library boundary.
+ *
+ * Vectors are `double[3]` and symmetric matrices `double[6]` (upper
+ * triangle, row by row), exactly as in pw85.h, whose documentation of each
+ * function applies here. Functions whose name starts with an underscore are
+ * internal, exposed for testing. Every function is thread-safe and none
+ * throws.
+ */
+#ifndef PW85_HPP
+#define PW85_HPP
+
+#include <cstddef>
+#include <string_view>
+
+#include "pw85.h"
+
+namespace pw85 {
+
+/** The dimension of the physical space (PW85_DIM). */
+constexpr std::size_t dim = PW85_DIM;
+/** The number of entries of a symmetric matrix (PW85_SYM). */
+constexpr std::size_t sym = PW85_SYM;
+/** The absolute tolerance on λ of Brent's method (PW85_LAMBDA_ATOL). */
+constexpr double lambda_atol = PW85_LAMBDA_ATOL;
+/** The maximum number of iterations of Brent's method (PW85_MAX_ITER). */
+constexpr std::size_t max_iter = PW85_MAX_ITER;
+/** The maximum number of Newton–Raphson refinement steps (PW85_NR_ITER). */
+constexpr std::size_t nr_iter = PW85_NR_ITER;
+
+/** Facts about this project, fixed at compile time from the headers. */
+namespace metadata {
+constexpr std::string_view name{"pw85"};
+/** The headers' version; pw85::library_version() gives the loaded one. */
+constexpr std::string_view version{PW85_VERSION};
+constexpr std::string_view description{
+    "Implementation of the \"contact function\" defined by Perram and "
+    "Wertheim (J. Comp. Phys. 58(3), 409-416, "
+    "DOI:10.1016/0021-9991(85)90171-8) for two ellipsoids."};
+constexpr std::string_view license{"BSD-3-Clause"};
+constexpr std::string_view author{"The pw85 developers"};
+/** Empty: the project has no public contact address yet. */
+constexpr std::string_view author_email{""};
+/** Empty: the project has no public home page yet. */
+constexpr std::string_view url{""};
+constexpr std::string_view year{"2026"};
+}  // namespace metadata
+
+/** The version of the library actually loaded (pw85_version()). */
+inline char const *library_version() noexcept { return pw85_version(); }
+
+/** The message of a status code (pw85_strerror()). */
+inline char const *strerror(int status) noexcept {
+  return pw85_strerror(status);
+}
+
+/** A = L·Lᵀ (pw85__cholesky_decomp()); a: double[6], l: double[6]. */
+inline void _cholesky_decomp(double const *a, double *l) noexcept {
+  pw85__cholesky_decomp(a, l);
+}
+
+/** Solves L·Lᵀ·x = b (pw85__cholesky_solve()). */
+inline void _cholesky_solve(double const *l, double const *b,
+                            double *x) noexcept {
+  pw85__cholesky_solve(l, b, x);
+}
+
+/** The quadratic form of a spheroid (pw85_spheroid()). */
+inline void spheroid(double a, double c, double const *n, double *q) noexcept {
+  pw85_spheroid(a, c, n, q);
+}
+
+/** −f(λ) (pw85_f_neg()), with r12, q1, q2 passed separately. NaN if a
+ *  pointer is NULL or an input is not finite. */
+inline double f_neg(double lambda, double const *r12, double const *q1,
+                    double const *q2) noexcept {
+  if (r12 == nullptr || q1 == nullptr || q2 == nullptr)
+    return pw85_f_neg(lambda, nullptr);
+  double params[PW85_DIM + 2 * PW85_SYM];
+  for (std::size_t i = 0; i < dim; ++i) params[i] = r12[i];
+  for (std::size_t i = 0; i < sym; ++i) {
+    params[dim + i] = q1[i];
+    params[dim + sym + i] = q2[i];
+  }
+  return pw85_f_neg(lambda, params);
+}
+
+/** out = {f(λ), g(λ), g′(λ)} (pw85__residual()). */
+inline void _residual(double lambda, double const *r12, double const *q1,
+                      double const *q2, double *out) noexcept {
+  pw85__residual(lambda, r12, q1, q2, out);
+}
+
+/** out = {μ², λ}; returns a PW85_* status (pw85_contact_function()). */
+inline int contact_function(double const *r12, double const *q1,
+                            double const *q2, double *out) noexcept {
+  return pw85_contact_function(r12, q1, q2, out);
+}
+
+}  // namespace pw85
+
+#endif  // PW85_HPP

@@ -1,0 +1,327 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "core.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+
+#include <cmath>
+#include <algorithm>
+#include <cfloat>
+#include <cstddef>
+
+#include "dd.hpp"
+#include "pw85.h"
+
+namespace pw85::detail {
+
+namespace {
+
+// Row and column of each stored entry of a symmetric matrix.
+constexpr int row_of[sym] = {0, 0, 0, 1, 1, 2};
+constexpr int col_of[sym] = {0, 1, 2, 1, 2, 2};
+constexpr int diag_of[dim] = {0, 3, 5};
+
+// y = A·x for symmetric A.
+void sym_mul(double const a[sym], double const x[dim], double y[dim]) noexcept {
+  y[0] = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
+  y[1] = a[1] * x[0] + a[3] * x[1] + a[4] * x[2];
+  y[2] = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
+}
+
+double dot(double const x[dim], double const y[dim]) noexcept {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+// Q(λ) = (1−λ)·Q1 + λ·Q2 (ch. 4, eq. (2)).
+void combine(double lambda, double const q1[sym], double const q2[sym],
+             double q[sym]) noexcept {
+  double const mu = 1.0 - lambda;
+  for (int i = 0; i < sym; ++i) q[i] = mu * q1[i] + lambda * q2[i];
+}
+
+double max_abs(double const *x, int n) noexcept {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
+  return m;
+}
+
+// The exponent e with x = m·2^e, m in [0.5, 1); 0 for x = 0.
+int exponent(double x) noexcept {
+  int e = 0;
+  std::frexp(x, &e);
+  return e;
+}
+
+// The problem that Brent's method sees: r, Q1, Q2 rescaled to order one.
+struct Problem {
+  double r[dim];
+  double q1[sym];
+  double q2[sym];
+};
+
+// −f(λ) for gsl_min; finite for every λ, as Brent's method requires (it
+// calls GSL's error handler on a non-finite value): where Q(λ) fails to
+// factorise (only possible through rounding), −f is taken as 0, the value
+// at the ends of [0, 1], which Brent's method never prefers.
+double brent_objective(double lambda, void *params) noexcept {
+  auto const *p = static_cast<Problem const *>(params);
+  double value = 0.0;
+  if (!f(lambda, p->r, p->q1, p->q2, &value) || !std::isfinite(value))
+    return 0.0;
+  return -value;
+}
+
+// f(λ), ω(λ) = λ·ρ − (1 − λ) and two candidate steps towards its root,
+// ρ = √(P2/P1), Pᵢ = sᵀ·Qᵢ·s,
+// s = Q(λ)⁻¹·r. With v = Q⁻¹·(Q2 − Q1)·s, s′ = −v (ch. 4, eq. (5)), so
+// Pᵢ′ = −2·sᵀ·Qᵢ·v and ρ′ = (ρ/2)·(P2′/P2 − P1′/P1).
+struct NewtonTerms {
+  double f;
+  double omega;
+  double newton;  // λ − ω/ω′
+  double fixed;   // 1/(1 + ρ), the root of ω if ρ were constant
+};
+
+bool newton_terms(double lambda, Problem const &p, NewtonTerms *t) noexcept {
+  double q[sym];
+  double l[sym];
+  combine(lambda, p.q1, p.q2, q);
+  if (!cholesky_decomp(q, l)) return false;
+  double q12[sym];
+  for (int i = 0; i < sym; ++i) q12[i] = p.q2[i] - p.q1[i];
+  double s[dim], u[dim], v[dim], q1s[dim], q2s[dim];
+  cholesky_solve(l, p.r, s);
+  sym_mul(q12, s, u);
+  cholesky_solve(l, u, v);
+  sym_mul(p.q1, s, q1s);
+  sym_mul(p.q2, s, q2s);
+  double const p1 = dot(s, q1s);
+  double const p2 = dot(s, q2s);
+  if (!(p1 > 0.0 && p2 > 0.0)) return false;
+  double const rho = std::sqrt(p2 / p1);
+  double const drho = 0.5 * rho * (-2.0 * dot(q2s, v) / p2 + 2.0 * dot(q1s, v) / p1);
+  t->f = lambda * (1.0 - lambda) * dot(p.r, s);
+  t->omega = lambda * rho - (1.0 - lambda);
+  // λ − ω/ω′ with ω′ = 1 + ρ + λρ′, rearranged so that it does not cancel
+  // when the root is far smaller than λ (ρ ≫ 1: a thin disc).
+  t->newton = (1.0 + lambda * lambda * drho) / (1.0 + rho + lambda * drho);
+  t->fixed = 1.0 / (1.0 + rho);
+  return std::isfinite(t->f) && std::isfinite(t->omega);
+}
+
+// Working memory of the GSL minimiser, on the stack: no allocation (GSL's
+// gsl_min_fminimizer_alloc calls the error handler when malloc fails).
+// Brent's state is 8 doubles in every GSL release.
+constexpr std::size_t minimizer_state_size = 512;
+
+}  // namespace
+
+bool cholesky_decomp(double const a[sym], double l[sym]) noexcept {
+  // Written so that a NaN pivot fails the test as a negative one does.
+  if (!(a[0] > 0.0)) return false;
+  l[0] = std::sqrt(a[0]);
+  l[1] = a[1] / l[0];
+  l[2] = a[2] / l[0];
+  double const d1 = a[3] - l[1] * l[1];
+  if (!(d1 > 0.0)) return false;
+  l[3] = std::sqrt(d1);
+  l[4] = (a[4] - l[1] * l[2]) / l[3];
+  double const d2 = a[5] - l[2] * l[2] - l[4] * l[4];
+  if (!(d2 > 0.0)) return false;
+  l[5] = std::sqrt(d2);
+  return true;
+}
+
+void forward_solve(double const l[sym], double const b[dim],
+                   double y[dim]) noexcept {
+  y[0] = b[0] / l[0];
+  y[1] = (b[1] - l[1] * y[0]) / l[3];
+  y[2] = (b[2] - l[2] * y[0] - l[4] * y[1]) / l[5];
+}
+
+void cholesky_solve(double const l[sym], double const b[dim],
+                    double x[dim]) noexcept {
+  double y[dim];
+  forward_solve(l, b, y);
+  x[2] = y[2] / l[5];
+  x[1] = (y[1] - l[4] * x[2]) / l[3];
+  x[0] = (y[0] - l[1] * x[1] - l[2] * x[2]) / l[0];
+}
+
+void spheroid(double a, double c, double const n[dim], double q[sym]) noexcept {
+  // In double-double: the diagonal a² + (c² − a²)·nᵢ² cancels when c ≪ a
+  // and nᵢ ≈ 1 (the polar entry of a flat oblate spheroid would otherwise
+  // lose up to log10(a²/c²) digits).
+  dd const a2 = two_prod(a, a);
+  dd const d = dd_add(two_prod(c, c), dd_neg(a2));
+  for (int k = 0; k < sym; ++k) {
+    dd const t = dd_mul(dd_mul(d, n[row_of[k]]), n[col_of[k]]);
+    q[k] = dd_round(row_of[k] == col_of[k] ? dd_add(a2, t) : t);
+  }
+}
+
+bool f(double lambda, double const r[dim], double const q1[sym],
+       double const q2[sym], double *value) noexcept {
+  double q[sym];
+  double l[sym];
+  combine(lambda, q1, q2, q);
+  if (!cholesky_decomp(q, l)) return false;
+  // rᵀ·Q⁻¹·r = |L⁻¹·r|², a sum of squares: one triangular solve instead of
+  // the two of ch. 4, eq. (4), and no cancellation.
+  double y[dim];
+  forward_solve(l, r, y);
+  *value = lambda * (1.0 - lambda) * dot(y, y);
+  return true;
+}
+
+void residual(double lambda, double const r[dim], double const q1[sym],
+              double const q2[sym], double out[3]) noexcept {
+  double q[sym];
+  double l[sym];
+  combine(lambda, q1, q2, q);
+  if (!cholesky_decomp(q, l)) {
+    out[0] = out[1] = out[2] = NAN;
+    return;
+  }
+  double q12[sym];
+  for (int i = 0; i < sym; ++i) q12[i] = q2[i] - q1[i];
+  double s[dim], u[dim], v[dim];
+  cholesky_solve(l, r, s);  // s = Q⁻¹·r
+  sym_mul(q12, s, u);       // u = Q12·s
+  cholesky_solve(l, u, v);  // v = Q⁻¹·u
+  double const rs = dot(r, s);
+  double const su = dot(s, u);
+  double const uv = dot(u, v);
+  double const w = lambda * (1.0 - lambda);
+  out[0] = w * rs;                                               // ch. 4 (4)
+  out[1] = (2.0 * lambda - 1.0) * rs + w * su;                   // ch. 5 (4)
+  out[2] = 2.0 * rs + 2.0 * (1.0 - 2.0 * lambda) * su - 2.0 * w * uv;  // (5)
+}
+
+bool is_positive_definite(double const q[sym]) noexcept {
+  // Symmetric diagonal scaling by powers of two, D·Q·D with D = diag(2^-hᵢ)
+  // and Qᵢᵢ ≈ 4^hᵢ: exact, preserves definiteness, and brings the diagonal
+  // to [1/4, 1) so that no square overflows or underflows however widely
+  // the diagonal entries range.
+  for (int k = 0; k < sym; ++k)
+    if (!std::isfinite(q[k])) return false;
+  int h[dim];
+  for (int i = 0; i < dim; ++i) {
+    if (!(q[diag_of[i]] > 0.0)) return false;
+    h[i] = exponent(q[diag_of[i]]) / 2;
+  }
+  double scaled[sym];
+  for (int k = 0; k < sym; ++k)
+    scaled[k] = std::ldexp(q[k], -(h[row_of[k]] + h[col_of[k]]));
+  double l[sym];
+  return cholesky_decomp(scaled, l);
+}
+
+int contact_function(double const r[dim], double const q1[sym],
+                     double const q2[sym], double out[2]) noexcept {
+  double const rmax = max_abs(r, dim);
+  if (rmax == 0.0) {  // coincident centres: f ≡ 0, λ is arbitrary
+    out[0] = 0.0;
+    out[1] = 0.5;
+    return PW85_SUCCESS;
+  }
+
+  // μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2) with λ unchanged (ch. 3,
+  // eq. (6)). Powers of two make the rescaling exact. r is brought to order
+  // one; Q1 and Q2 so that their diagonals (which bound every entry of a
+  // positive definite matrix) straddle one: at order one for ordinary
+  // input, and within range even for aspect ratios near 1e150.
+  int const er = exponent(rmax);
+  int emin = 0;
+  int emax = 0;
+  for (int k = 0; k < 2; ++k) {
+    double const *q = k == 0 ? q1 : q2;
+    for (int i : diag_of) {
+      int const e = exponent(q[i]);
+      emin = (k == 0 && i == 0) ? e : std::min(emin, e);
+      emax = (k == 0 && i == 0) ? e : std::max(emax, e);
+    }
+  }
+  int const eq = emin + (emax - emin) / 2;
+  Problem p;
+  for (int i = 0; i < dim; ++i) p.r[i] = std::ldexp(r[i], -er);
+  for (int i = 0; i < sym; ++i) {
+    p.q1[i] = std::ldexp(q1[i], -eq);
+    p.q2[i] = std::ldexp(q2[i], -eq);
+  }
+  // Only when the diagonals of Q1 and Q2 span more than the range of a
+  // double can the rescaling have flushed an entry that mattered to zero.
+  if (!is_positive_definite(p.q1) || !is_positive_definite(p.q2))
+    return PW85_ERANGE;
+
+  // Brent's method on −f over [0, 1] from λ = ½ (ch. 5). f(0) = f(1) = 0 and
+  // f(½) > 0, so the bracket encloses the maximum; checked all the same,
+  // since gsl_min_fminimizer_set_with_values calls GSL's error handler
+  // otherwise.
+  double const f_mid = brent_objective(0.5, &p);
+  double lambda = 0.5;
+  double best = -f_mid;
+  if (f_mid < 0.0) {
+    alignas(std::max_align_t) unsigned char state[minimizer_state_size];
+    gsl_min_fminimizer_type const *type = gsl_min_fminimizer_brent;
+    if (type->size > sizeof state) return PW85_ENOMEM;
+    gsl_min_fminimizer s{};
+    s.type = type;
+    s.state = state;
+    gsl_function objective{&brent_objective, &p};
+    gsl_min_fminimizer_set_with_values(&s, &objective, 0.5, f_mid, 0.0, 0.0,
+                                       1.0, 0.0);
+    for (int iter = 0; iter < PW85_MAX_ITER; ++iter) {
+      if (gsl_min_fminimizer_iterate(&s) != GSL_SUCCESS) break;
+      if (gsl_min_test_interval(s.x_lower, s.x_upper, PW85_LAMBDA_ATOL, 0.0) ==
+          GSL_SUCCESS)
+        break;
+    }
+    lambda = s.x_minimum;
+    best = -s.f_minimum;
+  }
+
+  // Newton–Raphson refinement (ch. 5). The root of g = μ2² − μ1² is sought
+  // as that of ω = μ2/μ1 − 1 scaled by (1−λ): ω(λ) = λ·ρ(λ) − (1 − λ) with
+  // ρ = √(P2/P1), Pᵢ = sᵀ·Qᵢ·s, since μ1² = (1−λ)²·P1 and μ2² = λ²·P2
+  // (ch. 5, eq. (1)). ω has the sign of g but is linear for two spheres and
+  // nearly so otherwise, where g varies sharply near λ = 0 or 1 and Newton's
+  // steps on g overshoot. The steps are safeguarded: ω(0) = −1 < 0 < ω(1),
+  // every evaluation narrows [lo, hi], and a step leaving it bisects.
+  // Every f(λ) is a lower bound of μ², so the largest value met is the best
+  // estimate of μ²; λ is the last iterate.
+  double lo = 0.0;
+  double hi = 1.0;
+  for (int k = 0; k < PW85_NR_ITER; ++k) {
+    NewtonTerms t;
+    if (!newton_terms(lambda, p, &t)) break;
+    if (t.f > best) best = t.f;
+    if (t.omega == 0.0) break;
+    (t.omega < 0.0 ? lo : hi) = lambda;
+    // Newton's step; where it leaves [lo, hi] (ρ′ is computed with
+    // cancellation when P1 and P2 vary fast), the sphere model's 1/(1 + ρ),
+    // exact when ρ is constant; bisection as a last resort.
+    double next = t.newton;
+    if (std::fabs(next - lambda) <= 4.0 * DBL_EPSILON * lambda) {
+      // Converged to the resolution of λ (the root may sit on lo or hi).
+      if (next > 0.0 && next < 1.0) lambda = next;
+      break;
+    }
+    if (!(next > lo && next < hi)) next = t.fixed;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    lambda = next;
+  }
+  double last = 0.0;
+  if (f(lambda, p.r, p.q1, p.q2, &last) && last > best) best = last;
+
+  double const mu2 = std::ldexp(best, 2 * er - eq);
+  out[1] = lambda;
+  if (std::isinf(mu2)) {
+    out[0] = HUGE_VAL;
+    return PW85_ERANGE;
+  }
+  out[0] = mu2;
+  return PW85_SUCCESS;
+}
+
+}  // namespace pw85::detail

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The numerical core of pw85 (private: never installed). Storage conventions
+// are those of include/pw85/pw85.h. Equation numbers refer to the seed
+// documentation (shared/seeds/pw85-1.0-documentation.txt), "ch. N, eq. (k)".
+#ifndef PW85_SRC_CORE_HPP
+#define PW85_SRC_CORE_HPP
+
+namespace pw85::detail {
+
+constexpr int dim = 3;
+constexpr int sym = 6;
+
+// A = L·Lᵀ. Returns false, with l partly written, when a pivot is not > 0
+// (A not positive definite to the resolution of the factorisation, or NaN).
+bool cholesky_decomp(double const a[sym], double l[sym]) noexcept;
+
+// Solves L·y = b (forward substitution). y may alias b.
+void forward_solve(double const l[sym], double const b[dim],
+                   double y[dim]) noexcept;
+
+// Solves L·Lᵀ·x = b. x may alias b.
+void cholesky_solve(double const l[sym], double const b[dim],
+                    double x[dim]) noexcept;
+
+// Q = a²·I + (c² − a²)·n·nᵀ (ch. 3, eq. (2) for a spheroid).
+void spheroid(double a, double c, double const n[dim], double q[sym]) noexcept;
+
+// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r, Q(λ) = (1−λ)Q1 + λQ2 (ch. 4, eqs. (1)–(4)),
+// in plain double arithmetic. Returns false when Q(λ) is not positive
+// definite; *f is then unspecified.
+bool f(double lambda, double const r[dim], double const q1[sym],
+       double const q2[sym], double *f) noexcept;
+
+// out = {f(λ), g(λ), g′(λ)} with g = μ2² − μ1² (ch. 5, eqs. (4)–(5)).
+// Precondition: Q(λ) positive definite; otherwise out holds NaN.
+void residual(double lambda, double const r[dim], double const q1[sym],
+              double const q2[sym], double out[3]) noexcept;
+
+// True when the stored matrix is positive definite to the resolution of a
+// double Cholesky factorisation, after an exact power-of-two rescaling of
+// its rows and columns. Entries must be finite.
+bool is_positive_definite(double const q[sym]) noexcept;
+
+// The contact function for finite, non-NULL input with q1, q2 positive
+// definite (the facade checks). Returns a PW85_* status; out = {μ², λ}.
+int contact_function(double const r[dim], double const q1[sym],
+                     double const q2[sym], double out[2]) noexcept;
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_CORE_HPP

@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The extern "C" facade: check arguments, call the core, map to a status.
+#include "pw85.h"
+
+#include <cmath>
+
+#include "core.hpp"
+
+namespace {
+
+namespace core = pw85::detail;
+
+bool all_finite(double const *x, int n) noexcept {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+extern "C" {
+
+const char *pw85_strerror(int status) noexcept {
+  switch (status) {
+    case PW85_SUCCESS:
+      return "success";
+    case PW85_EFAULT:
+      return "a pointer argument is NULL";
+    case PW85_EDOM:
+      return "an input is NaN or infinite";
+    case PW85_ENOTPOSDEF:
+      return "a quadratic form is not positive definite";
+    case PW85_ERANGE:
+      return "the contact function exceeds the range of a double";
+    case PW85_ENOMEM:
+      return "the minimiser needs more working memory than reserved";
+    default:
+      return "unknown pw85 status";
+  }
+}
+
+const char *pw85_version(void) noexcept { return PW85_VERSION; }
+
+void pw85__cholesky_decomp(double const a[PW85_SYM],
+                           double l[PW85_SYM]) noexcept {
+  // No status in the original signature: a failed factorisation is
+  // reported as NaN in every entry.
+  if (!core::cholesky_decomp(a, l))
+    for (int i = 0; i < PW85_SYM; ++i) l[i] = NAN;
+}
+
+void pw85__cholesky_solve(double const l[PW85_SYM], double const b[PW85_DIM],
+                          double x[PW85_DIM]) noexcept {
+  core::cholesky_solve(l, b, x);
+}
+
+void pw85_spheroid(double a, double c, double const n[PW85_DIM],
+                   double q[PW85_SYM]) noexcept {
+  if (q == nullptr) return;
+  if (n == nullptr) {
+    for (int i = 0; i < PW85_SYM; ++i) q[i] = NAN;
+    return;
+  }
+  core::spheroid(a, c, n, q);
+}
+
+double pw85_f_neg(double lambda, double const *params) noexcept {
+  if (params == nullptr || !std::isfinite(lambda) ||
+      !all_finite(params, PW85_DIM + 2 * PW85_SYM))
+    return NAN;
+  double value = 0.0;
+  if (!core::f(lambda, params, params + PW85_DIM, params + PW85_DIM + PW85_SYM,
+               &value))
+    return NAN;
+  return -value;
+}
+
+void pw85__residual(double lambda, double const r12[PW85_DIM],
+                    double const q1[PW85_SYM], double const q2[PW85_SYM],
+                    double out[3]) noexcept {
+  core::residual(lambda, r12, q1, q2, out);
+}
+
+int pw85_contact_function(double const r12[PW85_DIM], double const q1[PW85_SYM],
+                          double const q2[PW85_SYM], double out[2]) noexcept {
+  if (r12 == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
+    return PW85_EFAULT;
+  if (!all_finite(r12, PW85_DIM) || !all_finite(q1, PW85_SYM) ||
+      !all_finite(q2, PW85_SYM))
+    return PW85_EDOM;
+  if (!core::is_positive_definite(q1) || !core::is_positive_definite(q2))
+    return PW85_ENOTPOSDEF;
+  return core::contact_function(r12, q1, q2, out);
+}
+
+}  // extern "C"
