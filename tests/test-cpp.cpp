@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// pw85.hpp: the C++ API forwards to the C ABI with the same results.
+#include <glib.h>
+
+#include <cmath>
+#include <cstring>
+#include <pw85/pw85.hpp>
+#include <string>
+
+namespace {
+
+double const r12[pw85::dim] = {0.7, -0.7, 1.1};
+double const q1[pw85::sym] = {100., 0., 0., 100., 0., 0.01};
+double const q2[pw85::sym] = {25., 0.5, -0.25, 0.25, 0., 0.75};
+
+void test_constants() {
+  static_assert(pw85::dim == 3 && pw85::sym == 6, "dimensions");
+  static_assert(pw85::lambda_atol == PW85_LAMBDA_ATOL, "lambda_atol");
+  static_assert(pw85::max_iter == PW85_MAX_ITER, "max_iter");
+  static_assert(pw85::nr_iter == PW85_NR_ITER, "nr_iter");
+  g_assert_true(pw85::metadata::name == "pw85");
+  g_assert_true(pw85::metadata::version == PW85_VERSION);
+  g_assert_true(pw85::metadata::license == "BSD-3-Clause");
+  g_assert_true(pw85::metadata::description.find("Perram") !=
+                std::string_view::npos);
+  g_assert_cmpstr(pw85::library_version(), ==, PW85_VERSION);
+  g_assert_cmpstr(pw85::strerror(PW85_EDOM), ==, pw85_strerror(PW85_EDOM));
+}
+
+void test_wrappers() {
+  double const a[pw85::sym] = {4., 2., -2., 10., 5., 21.};
+  double l[pw85::sym], l_c[pw85::sym];
+  pw85::_cholesky_decomp(a, l);
+  pw85__cholesky_decomp(a, l_c);
+  g_assert_cmpmem(l, sizeof l, l_c, sizeof l_c);
+
+  double const b[pw85::dim] = {2., 37., 71.};
+  double x[pw85::dim], x_c[pw85::dim];
+  pw85::_cholesky_solve(l, b, x);
+  pw85__cholesky_solve(l, b, x_c);
+  g_assert_cmpmem(x, sizeof x, x_c, sizeof x_c);
+
+  double const n[pw85::dim] = {0.6, 0.8, 0.};
+  double q[pw85::sym], q_c[pw85::sym];
+  pw85::spheroid(2., 3., n, q);
+  pw85_spheroid(2., 3., n, q_c);
+  g_assert_cmpmem(q, sizeof q, q_c, sizeof q_c);
+
+  double params[15];
+  std::memcpy(params, r12, sizeof r12);
+  std::memcpy(params + 3, q1, sizeof q1);
+  std::memcpy(params + 9, q2, sizeof q2);
+  for (double lambda : {0., 0.25, 0.5, 0.9, 1.})
+    g_assert_cmpfloat(pw85::f_neg(lambda, r12, q1, q2), ==,
+                      pw85_f_neg(lambda, params));
+  g_assert_true(std::isnan(pw85::f_neg(0.5, nullptr, q1, q2)));
+
+  double res[3], res_c[3];
+  pw85::_residual(0.3, r12, q1, q2, res);
+  pw85__residual(0.3, r12, q1, q2, res_c);
+  g_assert_cmpmem(res, sizeof res, res_c, sizeof res_c);
+
+  double out[2], out_c[2];
+  g_assert_cmpint(pw85::contact_function(r12, q1, q2, out), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_contact_function(r12, q1, q2, out_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(out, sizeof out, out_c, sizeof out_c);
+  g_assert_cmpint(pw85::contact_function(r12, q1, nullptr, out), ==,
+                  PW85_EFAULT);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, nullptr);
+  g_test_add_func("/pw85/cpp/constants", test_constants);
+  g_test_add_func("/pw85/cpp/wrappers", test_wrappers);
+  return g_test_run();
+}

@@ -1,0 +1,108 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Loads libpw85 with dlopen, as other languages do, and calls every exported
+ * function through dlsym. argv[1]: the path of the shared library. */
+#define _POSIX_C_SOURCE 200809L
+#include <dlfcn.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define CHECK(cond)                                             \
+  do {                                                          \
+    if (!(cond)) {                                              \
+      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__,    \
+              __LINE__, #cond);                                 \
+      return 1;                                                 \
+    }                                                           \
+  } while (0)
+
+typedef const char *(*strerror_fn)(int);
+typedef const char *(*version_fn)(void);
+typedef void (*decomp_fn)(double const *, double *);
+typedef void (*solve_fn)(double const *, double const *, double *);
+typedef void (*spheroid_fn)(double, double, double const *, double *);
+typedef double (*f_neg_fn)(double, double const *);
+typedef void (*residual_fn)(double, double const *, double const *,
+                            double const *, double *);
+typedef int (*contact_fn)(double const *, double const *, double const *,
+                          double *);
+
+static void *sym(void *lib, const char *name) {
+  void *p = dlsym(lib, name);
+  if (p == NULL) fprintf(stderr, "dlsym(%s): %s\n", name, dlerror());
+  return p;
+}
+
+int main(int argc, char **argv) {
+  if (argc != 2) {
+    fprintf(stderr, "usage: %s LIBRARY\n", argv[0]);
+    return 2;
+  }
+  void *lib = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
+  if (lib == NULL) {
+    fprintf(stderr, "dlopen: %s\n", dlerror());
+    return 1;
+  }
+  /* Conversions from void * to function pointers go through memcpy, the
+   * portable spelling. */
+  strerror_fn strerror_p;
+  version_fn version_p;
+  decomp_fn decomp_p;
+  solve_fn solve_p;
+  spheroid_fn spheroid_p;
+  f_neg_fn f_neg_p;
+  residual_fn residual_p;
+  contact_fn contact_p;
+  void *p;
+#define LOAD(var, name)      \
+  p = sym(lib, name);        \
+  CHECK(p != NULL);          \
+  memcpy(&var, &p, sizeof p);
+  LOAD(strerror_p, "pw85_strerror");
+  LOAD(version_p, "pw85_version");
+  LOAD(decomp_p, "pw85__cholesky_decomp");
+  LOAD(solve_p, "pw85__cholesky_solve");
+  LOAD(spheroid_p, "pw85_spheroid");
+  LOAD(f_neg_p, "pw85_f_neg");
+  LOAD(residual_p, "pw85__residual");
+  LOAD(contact_p, "pw85_contact_function");
+
+  CHECK(strcmp(strerror_p(0), "success") == 0);
+  CHECK(strcmp(version_p(), PW85_EXPECTED_VERSION) == 0);
+
+  double const a[6] = {4., 2., -2., 10., 5., 21.};
+  double l[6], x[3];
+  double const b[3] = {2., 37., 71.};
+  decomp_p(a, l);
+  CHECK(l[0] == 2. && l[1] == 1. && l[2] == -1. && l[3] == 3. && l[4] == 2. &&
+        l[5] == 4.);
+  solve_p(l, b, x);
+  CHECK(x[0] == 1. && x[1] == 2. && x[2] == 3.);
+
+  double q1[6], q2[6];
+  double const n1[3] = {0., 0., 1.}, n2[3] = {1., 0., 0.};
+  spheroid_p(10., 0.1, n1, q1);
+  spheroid_p(0.5, 5., n2, q2);
+  CHECK(q1[0] == 100. && q2[0] == 25.);
+
+  double const r[3] = {0.7, -0.7, 1.1};
+  double params[15];
+  memcpy(params, r, sizeof r);
+  memcpy(params + 3, q1, sizeof q1);
+  memcpy(params + 9, q2, sizeof q2);
+  double const fm = f_neg_p(0.5, params);
+  CHECK(isfinite(fm) && fm < 0.);
+
+  double res[3];
+  residual_p(0.5, r, q1, q2, res);
+  CHECK(res[0] == -fm);
+
+  double out[2];
+  CHECK(contact_p(r, q1, q2, out) == 0);
+  CHECK(fabs(out[0] - 3.3627060406386292) < 1e-12);
+  CHECK(contact_p(r, q1, NULL, out) == 1);
+
+  CHECK(dlclose(lib) == 0);
+  printf("dlopen: every exported function called\n");
+  return 0;
+}

@@ -1,0 +1,282 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* The input contract of pw85_contact_function and pw85_f_neg: every class of
+ * bad or extreme input gets its documented answer, and GSL's error handler
+ * is never reached. */
+#include <float.h>
+#include <pw85.h>
+#include <string.h>
+
+#include "testutil.h"
+
+static double const r_ok[PW85_DIM] = {0.7, -0.7, 1.1};
+static double const q1_ok[PW85_SYM] = {100., 0., 0., 100., 0., 0.01};
+static double const q2_ok[PW85_SYM] = {25., 0., 0., 0.25, 0., 0.25};
+
+/* Sentinels: a failing call must leave out exactly as it was. */
+static double const sentinel[2] = {42., -7.};
+
+static int call(double const *r, double const *q1, double const *q2,
+                double out[2]) {
+  memcpy(out, sentinel, sizeof sentinel);
+  return pw85_contact_function(r, q1, q2, out);
+}
+
+static void assert_untouched(double const out[2]) {
+  g_assert_cmpfloat(out[0], ==, sentinel[0]);
+  g_assert_cmpfloat(out[1], ==, sentinel[1]);
+}
+
+static void assert_valid(int status, double const out[2]) {
+  g_assert_cmpint(status, ==, PW85_SUCCESS);
+  g_assert_true(isfinite(out[0]));
+  g_assert_cmpfloat(out[0], >=, 0.);
+  g_assert_cmpfloat(out[1], >=, 0.);
+  g_assert_cmpfloat(out[1], <=, 1.);
+}
+
+static void test_null(void) {
+  double out[2];
+  g_assert_cmpint(call(NULL, q1_ok, q2_ok, out), ==, PW85_EFAULT);
+  assert_untouched(out);
+  g_assert_cmpint(call(r_ok, NULL, q2_ok, out), ==, PW85_EFAULT);
+  assert_untouched(out);
+  g_assert_cmpint(call(r_ok, q1_ok, NULL, out), ==, PW85_EFAULT);
+  assert_untouched(out);
+  g_assert_cmpint(pw85_contact_function(r_ok, q1_ok, q2_ok, NULL), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(call(NULL, NULL, NULL, out), ==, PW85_EFAULT);
+  assert_untouched(out);
+}
+
+static void test_not_finite(void) {
+  double const bad[] = {NAN, INFINITY, -INFINITY};
+  for (size_t b = 0; b < G_N_ELEMENTS(bad); b++) {
+    for (int i = 0; i < PW85_DIM + 2 * PW85_SYM; i++) {
+      double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
+      memcpy(r, r_ok, sizeof r);
+      memcpy(q1, q1_ok, sizeof q1);
+      memcpy(q2, q2_ok, sizeof q2);
+      if (i < PW85_DIM)
+        r[i] = bad[b];
+      else if (i < PW85_DIM + PW85_SYM)
+        q1[i - PW85_DIM] = bad[b];
+      else
+        q2[i - PW85_DIM - PW85_SYM] = bad[b];
+      g_assert_cmpint(call(r, q1, q2, out), ==, PW85_EDOM);
+      assert_untouched(out);
+    }
+  }
+}
+
+static void test_not_posdef(void) {
+  double const not_pd[][PW85_SYM] = {
+      {1., 0., 0., -1., 0., 1.},     /* indefinite, diagonal */
+      {1., 2., 0., 1., 0., 1.},      /* indefinite, positive diagonal */
+      {-1., 0., 0., -1., 0., -1.},   /* negative definite */
+      {0., 0., 0., 0., 0., 0.},      /* zero */
+      {1., 0., 0., 1., 0., 0.},      /* positive semi-definite, singular */
+      {1., 1., 1., 1., 1., 1.},      /* rank one */
+      {1e300, 0., 0., 1e300, 0., -1e-300}, /* wide range, last pivot < 0 */
+  };
+  for (size_t k = 0; k < G_N_ELEMENTS(not_pd); k++) {
+    double out[2];
+    g_assert_cmpint(call(r_ok, not_pd[k], q2_ok, out), ==, PW85_ENOTPOSDEF);
+    assert_untouched(out);
+    g_assert_cmpint(call(r_ok, q1_ok, not_pd[k], out), ==, PW85_ENOTPOSDEF);
+    assert_untouched(out);
+    /* An invalid quadratic form is an error even with coincident centres. */
+    double const zero[PW85_DIM] = {0., 0., 0.};
+    g_assert_cmpint(call(zero, not_pd[k], q2_ok, out), ==, PW85_ENOTPOSDEF);
+    assert_untouched(out);
+  }
+}
+
+static void test_coincident(void) {
+  double const zeros[][PW85_DIM] = {{0., 0., 0.}, {-0., 0., -0.}};
+  for (size_t k = 0; k < G_N_ELEMENTS(zeros); k++) {
+    double out[2];
+    g_assert_cmpint(call(zeros[k], q1_ok, q2_ok, out), ==, PW85_SUCCESS);
+    g_assert_cmpfloat(out[0], ==, 0.);
+    g_assert_cmpfloat(out[1], ==, 0.5);
+  }
+}
+
+/* μ²(t·r, t²·Q1, t²·Q2) = μ²(r, Q1, Q2). t is not a power of two, so the
+ * scaled inputs are rounded: the results agree to a few ulps (measured:
+ * 2.6e-16). */
+static void test_scale_invariance(void) {
+  double ref[2];
+  g_assert_cmpint(call(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
+  double const scales[] = {1e-150, 1e-100, 1e-10, 1e10, 1e100, 1e150};
+  for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
+    double const t = scales[k];
+    double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
+    for (int i = 0; i < PW85_DIM; i++) r[i] = t * r_ok[i];
+    for (int i = 0; i < PW85_SYM; i++) {
+      q1[i] = (t * t) * q1_ok[i];
+      q2[i] = (t * t) * q2_ok[i];
+    }
+    int const status = call(r, q1, q2, out);
+    assert_valid(status, out);
+    assert_close("mu2, scaled", out[0], ref[0], 1e-14);
+    assert_close("lambda, scaled", out[1], ref[1], 1e-9);
+  }
+}
+
+static void axis_spheroid(double a, double c, int axis, double q[PW85_SYM]) {
+  double n[PW85_DIM] = {0., 0., 0.};
+  n[axis] = 1.;
+  pw85_spheroid(a, c, n, q);
+}
+
+/* Aspect ratios up to 1e8, prolate and oblate, crossed. */
+static void test_extreme_aspect(void) {
+  double const ratios[] = {1e2, 1e4, 1e6, 1e8};
+  double const dirs[][PW85_DIM] = {
+      {1., 0., 0.}, {0., 1., 0.}, {0.6, 0.8, 0.}, {1e-3, 2e-3, 1.}, {1., 1., 1.}};
+  for (size_t k = 0; k < G_N_ELEMENTS(ratios); k++) {
+    double const rho = ratios[k];
+    double needle[PW85_SYM], disc[PW85_SYM], sphere[PW85_SYM];
+    axis_spheroid(1., rho, 0, needle);      /* prolate along x */
+    axis_spheroid(1., 1. / rho, 2, disc);   /* oblate, normal z */
+    axis_spheroid(1., 1., 1, sphere);
+    double const *forms[] = {needle, disc, sphere};
+    for (size_t i = 0; i < 3; i++)
+      for (size_t j = 0; j < 3; j++)
+        for (size_t d = 0; d < G_N_ELEMENTS(dirs); d++)
+          for (int s = -3; s <= 3; s += 2) {
+            double r[PW85_DIM], out[2];
+            double const t = pow(10., s); /* near, tangent-ish, far */
+            for (int c = 0; c < PW85_DIM; c++) r[c] = t * dirs[d][c];
+            assert_valid(call(r, forms[i], forms[j], out), out);
+          }
+  }
+}
+
+/* Centres far closer than the size of the ellipsoids: f(½) = |r|²/4 would
+ * underflow to 0 in plain double arithmetic, and GSL's bracket check would
+ * fail. μ² = |r|²/(a1 + a2)² for spheres. */
+static void test_tiny_distance(void) {
+  double const unit[PW85_SYM] = {1., 0., 0., 1., 0., 1.};
+  /* 1e-170: μ² = 2.5e-341 is below the smallest subnormal: it rounds to 0. */
+  double const r0[PW85_DIM] = {1e-170, 0., 0.};
+  double out[2];
+  assert_valid(call(r0, unit, unit, out), out);
+  g_assert_cmpfloat(out[0], ==, 0.);
+  assert_close("lambda, tiny r", out[1], 0.5, 1e-12);
+  /* 1e-155: μ² = 2.5e-311, a subnormal with 36 significant bits left. */
+  double const r1[PW85_DIM] = {0., 1e-155, 0.};
+  assert_valid(call(r1, unit, unit, out), out);
+  assert_close("mu2, subnormal", out[0], 2.5e-311, 1e-10);
+  /* 1e-140, normal range: full accuracy. */
+  double const r2[PW85_DIM] = {0., 0., 1e-140};
+  assert_valid(call(r2, unit, unit, out), out);
+  assert_close("mu2, 1e-140", out[0], 0.25e-280, 4.5e-16);
+}
+
+static void test_overflow(void) {
+  /* μ² = |r|²/(2a)² = 1e400/4e-200: beyond DBL_MAX. */
+  double const r[PW85_DIM] = {1e200, 0., 0.};
+  double const tiny[PW85_SYM] = {1e-200, 0., 0., 1e-200, 0., 1e-200};
+  double out[2];
+  g_assert_cmpint(call(r, tiny, tiny, out), ==, PW85_ERANGE);
+  g_assert_true(isinf(out[0]) && out[0] > 0.);
+  assert_close("lambda, overflow", out[1], 0.5, 1e-12);
+  /* Just inside the range: |r|² = 1e300, Q = 0.25e-8·I → μ² = 1e308. */
+  double const r2[PW85_DIM] = {1e150, 0., 0.};
+  double const q2[PW85_SYM] = {0.25e-8, 0., 0., 0.25e-8, 0., 0.25e-8};
+  assert_valid(call(r2, q2, q2, out), out);
+  assert_close("mu2 near DBL_MAX", out[0], 1e308, 1e-15);
+}
+
+/* A disc of radius 1e150 and thickness 1e-150 in the plane z = 0 (aspect
+ * ratio 1e300) and a unit sphere centred at (1, 1, 1): the sphere's scaled
+ * copy touches the plane when μ(1 + 1e-150) = 1, so μ² = 1 to double
+ * precision (measured error 2.2e-16). */
+static void test_wide_range(void) {
+  double const disc[PW85_SYM] = {1e300, 0., 0., 1e300, 0., 1e-300};
+  double const unit[PW85_SYM] = {1., 0., 0., 1., 0., 1.};
+  double const r[PW85_DIM] = {1., 1., 1.};
+  double out[2];
+  assert_valid(call(r, disc, unit, out), out);
+  assert_close("mu2, disc and sphere", out[0], 1., 1e-15);
+  /* Diagonals spanning 1e308 to 5e-324 together: no power-of-two scaling
+   * keeps both in range. */
+  double const huge[PW85_SYM] = {1e308, 0., 0., 1e308, 0., 1e308};
+  double const tiny[PW85_SYM] = {5e-324, 0., 0., 5e-324, 0., 5e-324};
+  g_assert_cmpint(call(r, huge, tiny, out), ==, PW85_ERANGE);
+  assert_untouched(out);
+}
+
+static void test_f_neg_contract(void) {
+  double params[15];
+  memcpy(params, r_ok, sizeof r_ok);
+  memcpy(params + 3, q1_ok, sizeof q1_ok);
+  memcpy(params + 9, q2_ok, sizeof q2_ok);
+  g_assert_true(isfinite(pw85_f_neg(0.5, params)));
+  g_assert_true(isnan(pw85_f_neg(0.5, NULL)));
+  g_assert_true(isnan(pw85_f_neg(NAN, params)));
+  g_assert_true(isnan(pw85_f_neg(INFINITY, params)));
+  for (int i = 0; i < 15; i++) {
+    double const saved = params[i];
+    params[i] = NAN;
+    g_assert_true(isnan(pw85_f_neg(0.5, params)));
+    params[i] = -INFINITY;
+    g_assert_true(isnan(pw85_f_neg(0.5, params)));
+    params[i] = saved;
+  }
+  /* Q(λ) not positive definite: q1 indefinite, λ = 0. */
+  params[3] = -1.;
+  g_assert_true(isnan(pw85_f_neg(0., params)));
+}
+
+static void test_strerror(void) {
+  int const codes[] = {PW85_SUCCESS, PW85_EFAULT, PW85_EDOM, PW85_ENOTPOSDEF,
+                       PW85_ERANGE, PW85_ENOMEM};
+  char const *unknown = pw85_strerror(-1);
+  g_assert_nonnull(unknown);
+  g_assert_cmpstr(unknown, ==, pw85_strerror(1000));
+  for (size_t i = 0; i < G_N_ELEMENTS(codes); i++) {
+    g_assert_cmpint(codes[i], ==, (int)i); /* values are pinned */
+    char const *msg = pw85_strerror(codes[i]);
+    g_assert_nonnull(msg);
+    g_assert_cmpstr(msg, !=, unknown);
+    for (size_t j = 0; j < i; j++)
+      g_assert_cmpstr(msg, !=, pw85_strerror(codes[j]));
+  }
+}
+
+static void test_version(void) {
+  g_assert_cmpstr(pw85_version(), ==, PW85_VERSION);
+  char *expected = g_strdup_printf("%d.%d.%d", PW85_VERSION_MAJOR,
+                                   PW85_VERSION_MINOR, PW85_VERSION_PATCH);
+  g_assert_cmpstr(pw85_version(), ==, expected);
+  g_free(expected);
+}
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, NULL);
+  install_counting_gsl_handler();
+  g_test_add_func("/pw85/contact_function/contract/null", test_null);
+  g_test_add_func("/pw85/contact_function/contract/not-finite",
+                  test_not_finite);
+  g_test_add_func("/pw85/contact_function/contract/not-posdef",
+                  test_not_posdef);
+  g_test_add_func("/pw85/contact_function/contract/coincident",
+                  test_coincident);
+  g_test_add_func("/pw85/contact_function/contract/scale-invariance",
+                  test_scale_invariance);
+  g_test_add_func("/pw85/contact_function/contract/extreme-aspect",
+                  test_extreme_aspect);
+  g_test_add_func("/pw85/contact_function/contract/tiny-distance",
+                  test_tiny_distance);
+  g_test_add_func("/pw85/contact_function/contract/overflow", test_overflow);
+  g_test_add_func("/pw85/contact_function/contract/wide-range",
+                  test_wide_range);
+  g_test_add_func("/pw85/f_neg/contract", test_f_neg_contract);
+  g_test_add_func("/pw85/strerror", test_strerror);
+  g_test_add_func("/pw85/version", test_version);
+  g_test_add_func("/pw85/gsl-handler-never-called",
+                  assert_gsl_handler_never_called);
+  return g_test_run();
+}
