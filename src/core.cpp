@@ -116,6 +116,12 @@ constexpr std::size_t minimizer_state_size = 512;
 
 }  // namespace
 
+bool all_finite(double const *x, int n) noexcept {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(x[i])) return false;
+  return true;
+}
+
 bool cholesky_decomp(double const a[sym], double l[sym]) noexcept {
   // Written so that a NaN pivot fails the test as a negative one does.
   if (!(a[0] > 0.0)) return false;
@@ -215,6 +221,17 @@ bool is_positive_definite(double const q[sym]) noexcept {
     scaled[k] = std::ldexp(q[k], -(h[row_of[k]] + h[col_of[k]]));
   double l[sym];
   return cholesky_decomp(scaled, l);
+}
+
+int check_input(double const *r, double const *q1, double const *q2,
+                double const *out) noexcept {
+  if (r == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
+    return PW85_EFAULT;
+  if (!all_finite(r, dim) || !all_finite(q1, sym) || !all_finite(q2, sym))
+    return PW85_EDOM;
+  if (!is_positive_definite(q1) || !is_positive_definite(q2))
+    return PW85_ENOTPOSDEF;
+  return PW85_SUCCESS;
 }
 
 int contact_function(double const r[dim], double const q1[sym],

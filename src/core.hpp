@@ -10,6 +10,9 @@ namespace pw85::detail {
 constexpr int dim = 3;
 constexpr int sym = 6;
 
+// True when the n entries of x are all finite.
+bool all_finite(double const *x, int n) noexcept;
+
 // A = L·Lᵀ. Returns false, with l partly written, when a pivot is not > 0
 // (A not positive definite to the resolution of the factorisation, or NaN).
 bool cholesky_decomp(double const a[sym], double l[sym]) noexcept;
@@ -41,8 +44,15 @@ void residual(double lambda, double const r[dim], double const q1[sym],
 // its rows and columns. Entries must be finite.
 bool is_positive_definite(double const q[sym]) noexcept;
 
-// The contact function for finite, non-NULL input with q1, q2 positive
-// definite (the facade checks). Returns a PW85_* status; out = {μ², λ}.
+// The input contract shared by every contact function of pw85 and
+// pw85_legacy: PW85_EFAULT if a pointer is NULL, PW85_EDOM if an entry is
+// not finite, PW85_ENOTPOSDEF if q1 or q2 is not positive definite,
+// PW85_SUCCESS otherwise.
+int check_input(double const *r, double const *q1, double const *q2,
+                double const *out) noexcept;
+
+// The contact function for input that passed check_input(). Returns a
+// PW85_* status; out = {μ², λ}.
 int contact_function(double const r[dim], double const q1[sym],
                      double const q2[sym], double out[2]) noexcept;
 

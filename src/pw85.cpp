@@ -10,12 +10,6 @@ namespace {
 
 namespace core = pw85::detail;
 
-bool all_finite(double const *x, int n) noexcept {
-  for (int i = 0; i < n; ++i)
-    if (!std::isfinite(x[i])) return false;
-  return true;
-}
-
 }  // namespace
 
 extern "C" {
@@ -66,7 +60,7 @@ void pw85_spheroid(double a, double c, double const n[PW85_DIM],
 
 double pw85_f_neg(double lambda, double const *params) noexcept {
   if (params == nullptr || !std::isfinite(lambda) ||
-      !all_finite(params, PW85_DIM + 2 * PW85_SYM))
+      !core::all_finite(params, PW85_DIM + 2 * PW85_SYM))
     return NAN;
   double value = 0.0;
   if (!core::f(lambda, params, params + PW85_DIM, params + PW85_DIM + PW85_SYM,
@@ -83,13 +77,8 @@ void pw85__residual(double lambda, double const r12[PW85_DIM],
 
 int pw85_contact_function(double const r12[PW85_DIM], double const q1[PW85_SYM],
                           double const q2[PW85_SYM], double out[2]) noexcept {
-  if (r12 == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
-    return PW85_EFAULT;
-  if (!all_finite(r12, PW85_DIM) || !all_finite(q1, PW85_SYM) ||
-      !all_finite(q2, PW85_SYM))
-    return PW85_EDOM;
-  if (!core::is_positive_definite(q1) || !core::is_positive_definite(q2))
-    return PW85_ENOTPOSDEF;
+  int const status = core::check_input(r12, q1, q2, out);
+  if (status != PW85_SUCCESS) return status;
   return core::contact_function(r12, q1, q2, out);
 }
 

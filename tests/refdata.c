@@ -1,0 +1,103 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+#include "refdata.h"
+
+#include <hdf5.h>
+#include <hdf5_hl.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define REF_DATA_ERROR (g_quark_from_static_string("pw85-ref-data"))
+
+const char *ref_data_path(void) { return g_getenv("PW85_REF_DATA"); }
+
+/* Reads dataset `name`, which must have `rank` dimensions; its dimensions
+ * go to dims[]. */
+static gboolean read_dataset(hid_t file, const char *name, int rank,
+                             hsize_t dims[], double **buffer,
+                             GError **error) {
+  int actual_rank = -1;
+  if (H5LTget_dataset_ndims(file, name, &actual_rank) < 0 ||
+      actual_rank != rank) {
+    g_set_error(error, REF_DATA_ERROR, 1, "%s: missing, or rank %d != %d",
+                name, actual_rank, rank);
+    return FALSE;
+  }
+  if (H5LTget_dataset_info(file, name, dims, NULL, NULL) < 0) {
+    g_set_error(error, REF_DATA_ERROR, 1, "%s: cannot read its shape", name);
+    return FALSE;
+  }
+  size_t size = 1;
+  for (int i = 0; i < rank; i++) size *= dims[i];
+  *buffer = g_new(double, size);
+  if (H5LTread_dataset_double(file, name, *buffer) < 0) {
+    g_set_error(error, REF_DATA_ERROR, 1, "%s: cannot read it", name);
+    return FALSE;
+  }
+  return TRUE;
+}
+
+static gboolean expect(gboolean ok, const char *what, GError **error) {
+  if (!ok) g_set_error(error, REF_DATA_ERROR, 2, "unexpected shape: %s", what);
+  return ok;
+}
+
+gboolean ref_data_load(const char *path, RefData *d, GError **error) {
+  memset(d, 0, sizeof *d);
+  if (path == NULL) {
+    g_set_error(error, REF_DATA_ERROR, 3, "PW85_REF_DATA is not set");
+    return FALSE;
+  }
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors come back as GError */
+  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
+    return FALSE;
+  }
+  hsize_t dims[4];
+  gboolean ok =
+      read_dataset(file, "/radii", 1, dims, &d->radii, error) &&
+      (d->num_radii = dims[0], TRUE) &&
+      read_dataset(file, "/directions", 2, dims, &d->directions, error) &&
+      (d->num_directions = dims[0], expect(dims[1] == 3, "directions", error)) &&
+      read_dataset(file, "/spheroids", 2, dims, &d->spheroids, error) &&
+      (d->num_spheroids = dims[0], expect(dims[1] == 6, "spheroids", error)) &&
+      read_dataset(file, "/lambdas", 1, dims, &d->lambdas, error) &&
+      (d->num_lambdas = dims[0], TRUE) &&
+      read_dataset(file, "/distances", 1, dims, &d->distances, error) &&
+      (d->num_distances = dims[0], TRUE) &&
+      read_dataset(file, "/F", 4, dims, &d->F, error) &&
+      expect(dims[0] == d->num_spheroids && dims[1] == d->num_spheroids &&
+                 dims[2] == d->num_directions && dims[3] == d->num_lambdas,
+             "F", error) &&
+      read_dataset(file, "/MU2", 4, dims, &d->MU2, error) &&
+      expect(dims[0] == d->num_spheroids && dims[1] == d->num_spheroids &&
+                 dims[2] == d->num_directions && dims[3] == d->num_distances,
+             "MU2", error) &&
+      read_dataset(file, "/LAMBDA", 4, dims, &d->LAMBDA, error) &&
+      expect(dims[0] == d->num_spheroids && dims[1] == d->num_spheroids &&
+                 dims[2] == d->num_directions && dims[3] == d->num_distances,
+             "LAMBDA", error);
+  H5Fclose(file);
+  if (!ok) ref_data_clear(d);
+  return ok;
+}
+
+void ref_data_clear(RefData *d) {
+  g_free(d->radii);
+  g_free(d->directions);
+  g_free(d->spheroids);
+  g_free(d->lambdas);
+  g_free(d->distances);
+  g_free(d->F);
+  g_free(d->MU2);
+  g_free(d->LAMBDA);
+  memset(d, 0, sizeof *d);
+}
+
+void ref_data_load_or_fail(RefData *d) {
+  GError *error = NULL;
+  if (!ref_data_load(ref_data_path(), d, &error))
+    g_error("reference data: %s", error->message);
+  g_assert_cmpuint(d->num_spheroids, >, 0);
+  g_assert_cmpuint(d->num_directions, >, 0);
+}

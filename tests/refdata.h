@@ -1,0 +1,48 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* The one loader of data/pw85_ref_data.h5 (layout: data/README.md), shared
+ * by every test and tool that replays it. */
+#ifndef PW85_TESTS_REFDATA_H
+#define PW85_TESTS_REFDATA_H
+
+#include <glib.h>
+#include <stddef.h>
+
+typedef struct {
+  size_t num_radii, num_directions, num_spheroids, num_lambdas, num_distances;
+  double *radii;      /* [num_radii] */
+  double *directions; /* [num_directions][3] */
+  double *spheroids;  /* [num_spheroids][6] */
+  double *lambdas;    /* [num_lambdas] */
+  double *distances;  /* [num_distances] */
+  double *F;      /* [num_spheroids][num_spheroids][num_directions][num_lambdas] */
+  double *MU2;    /* [num_spheroids][num_spheroids][num_directions][num_distances] */
+  double *LAMBDA; /* same shape as MU2 */
+} RefData;
+
+/* The path of the reference file: the environment variable PW85_REF_DATA,
+ * which meson sets for the tests. NULL when unset. */
+const char *ref_data_path(void);
+
+/* Reads every dataset; on failure returns FALSE with *error set and data
+ * cleared. A file whose datasets do not have the documented shapes fails. */
+gboolean ref_data_load(const char *path, RefData *data, GError **error);
+
+/* Frees what ref_data_load() allocated. */
+void ref_data_clear(RefData *data);
+
+/* Like ref_data_load(ref_data_path(), ...) but aborts the test on failure. */
+void ref_data_load_or_fail(RefData *data);
+
+/* Index of F[i][j][k][l] and of MU2[i][j][k][m] / LAMBDA[i][j][k][m]. */
+static inline size_t ref_data_f_index(RefData const *d, size_t i, size_t j,
+                                      size_t k, size_t l) {
+  return ((i * d->num_spheroids + j) * d->num_directions + k) *
+             d->num_lambdas + l;
+}
+static inline size_t ref_data_mu2_index(RefData const *d, size_t i, size_t j,
+                                        size_t k, size_t m) {
+  return ((i * d->num_spheroids + j) * d->num_directions + k) *
+             d->num_distances + m;
+}
+
+#endif /* PW85_TESTS_REFDATA_H */
