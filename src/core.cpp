@@ -21,6 +21,13 @@ constexpr int row_of[sym] = {0, 0, 0, 1, 1, 2};
 constexpr int col_of[sym] = {0, 1, 2, 1, 2, 2};
 constexpr int diag_of[dim] = {0, 3, 5};
 
+// The storage index of entry (i, j) of a symmetric matrix.
+constexpr int sym_index(int i, int j) noexcept {
+  int const a = i < j ? i : j;
+  int const b = i < j ? j : i;
+  return a == 0 ? b : (a == 1 ? 2 + b : 5);
+}
+
 // y = A·x for symmetric A.
 void sym_mul(double const a[sym], double const x[dim], double y[dim]) noexcept {
   y[0] = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
@@ -52,6 +59,52 @@ int exponent(double x) noexcept {
   return e;
 }
 
+// Q(λ) = (1−λ)·Q1 + λ·Q2 in double-double: hi + lo is exact to ~2⁻¹⁰⁶
+// relative (1 − λ itself is carried as a double-double).
+void combine_dd(double lambda, double const q1[sym], double const q2[sym],
+                double hi[sym], double lo[sym]) noexcept {
+  dd const mu = two_sum(1.0, -lambda);
+  for (int i = 0; i < sym; ++i) {
+    dd const t = dd_add(dd_mul(mu, q1[i]), two_prod(lambda, q2[i]));
+    hi[i] = t.hi;
+    lo[i] = t.lo;
+  }
+}
+
+// ρ = r − (Qhi + Qlo)·s, accumulated in double-double and rounded.
+void exact_residual(double const hi[sym], double const lo[sym],
+                    double const r[dim], double const s[dim],
+                    double rho[dim]) noexcept {
+  for (int i = 0; i < dim; ++i) {
+    dd acc{r[i], 0.0};
+    for (int j = 0; j < dim; ++j) {
+      int const k = sym_index(i, j);
+      acc = dd_add(acc, dd_neg(two_prod(hi[k], s[j])));
+      acc = dd_add(acc, -lo[k] * s[j]);
+    }
+    rho[i] = dd_round(acc);
+  }
+}
+
+// sᵀ·A·s for symmetric A, every product exact, summed in double-double: no
+// cancellation error however ill-conditioned A is.
+double quad_form_dd(double const a[sym], double const s[dim]) noexcept {
+  dd acc{0.0, 0.0};
+  for (int k = 0; k < sym; ++k) {
+    double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;  // exact
+    acc = dd_add(acc, dd_mul(two_prod(factor * a[k], s[row_of[k]]),
+                             s[col_of[k]]));
+  }
+  return dd_round(acc);
+}
+
+// x·y in double-double.
+dd dot_dd(double const x[dim], double const y[dim]) noexcept {
+  dd acc = two_prod(x[0], y[0]);
+  acc = dd_add(acc, two_prod(x[1], y[1]));
+  return dd_add(acc, two_prod(x[2], y[2]));
+}
+
 // The problem that Brent's method sees: r, Q1, Q2 rescaled to order one.
 struct Problem {
   double r[dim];
@@ -78,6 +131,7 @@ double brent_objective(double lambda, void *params) noexcept {
 struct NewtonTerms {
   double f;
   double omega;
+  double domega;  // ω′ = 1 + ρ + λρ′
   double newton;  // λ − ω/ω′
   double fixed;   // 1/(1 + ρ), the root of ω if ρ were constant
 };
@@ -104,7 +158,8 @@ bool newton_terms(double lambda, Problem const &p, NewtonTerms *t) noexcept {
   t->omega = lambda * rho - (1.0 - lambda);
   // λ − ω/ω′ with ω′ = 1 + ρ + λρ′, rearranged so that it does not cancel
   // when the root is far smaller than λ (ρ ≫ 1: a thin disc).
-  t->newton = (1.0 + lambda * lambda * drho) / (1.0 + rho + lambda * drho);
+  t->domega = 1.0 + rho + lambda * drho;
+  t->newton = (1.0 + lambda * lambda * drho) / t->domega;
   t->fixed = 1.0 / (1.0 + rho);
   return std::isfinite(t->f) && std::isfinite(t->omega);
 }
@@ -113,6 +168,12 @@ bool newton_terms(double lambda, Problem const &p, NewtonTerms *t) noexcept {
 // gsl_min_fminimizer_alloc calls the error handler when malloc fails).
 // Brent's state is 8 doubles in every GSL release.
 constexpr std::size_t minimizer_state_size = 512;
+
+// Relative size of a Newton step on the plain ω below which it is taken as
+// converged: above its rounding noise, cond(Q)·ε, for cond(Q) up to 1e7,
+// and small enough that one step on the compensated ω, whose error is
+// quadratic, then reaches full accuracy.
+constexpr double newton_noise = 1e-9;
 
 }  // namespace
 
@@ -180,6 +241,38 @@ bool f(double lambda, double const r[dim], double const q1[sym],
   return true;
 }
 
+namespace {
+
+// s = Q(λ)⁻¹·r refined once against the exact residual, and that residual
+// ρ = r − Q(λ)·s for the refined s. The refinement gains log10(1/(cond·ε))
+// digits, so that s has a relative error of order (cond·ε)².
+bool refined_solve(double lambda, double const r[dim], double const q1[sym],
+                   double const q2[sym], double s[dim],
+                   double rho[dim]) noexcept {
+  double hi[sym], lo[sym], l[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
+  if (!cholesky_decomp(hi, l)) return false;
+  double ds[dim];
+  cholesky_solve(l, r, s);
+  exact_residual(hi, lo, r, s, rho);
+  cholesky_solve(l, rho, ds);
+  for (int i = 0; i < dim; ++i) s[i] += ds[i];
+  exact_residual(hi, lo, r, s, rho);
+  return true;
+}
+
+}  // namespace
+
+bool f_accurate(double lambda, double const r[dim], double const q1[sym],
+                double const q2[sym], double *value) noexcept {
+  double s[dim], rho[dim];
+  if (!refined_solve(lambda, r, q1, q2, s, rho)) return false;
+  dd const rs = dd_add(dot_dd(r, s), dot(s, rho));  // rᵀQ⁻¹r − eᵀQe
+  dd const w = dd_mul(two_sum(1.0, -lambda), lambda);  // λ(1−λ)
+  *value = dd_round(dd_mul(w, rs));
+  return true;
+}
+
 void residual(double lambda, double const r[dim], double const q1[sym],
               double const q2[sym], double out[3]) noexcept {
   double q[sym];
@@ -199,7 +292,7 @@ void residual(double lambda, double const r[dim], double const q1[sym],
   double const su = dot(s, u);
   double const uv = dot(u, v);
   double const w = lambda * (1.0 - lambda);
-  out[0] = w * rs;                                               // ch. 4 (4)
+  if (!f_accurate(lambda, r, q1, q2, &out[0])) out[0] = w * rs;  // ch. 4 (4)
   out[1] = (2.0 * lambda - 1.0) * rs + w * su;                   // ch. 5 (4)
   out[2] = 2.0 * rs + 2.0 * (1.0 - 2.0 * lambda) * su - 2.0 * w * uv;  // (5)
 }
@@ -277,7 +370,6 @@ int contact_function(double const r[dim], double const q1[sym],
   // otherwise.
   double const f_mid = brent_objective(0.5, &p);
   double lambda = 0.5;
-  double best = -f_mid;
   if (f_mid < 0.0) {
     alignas(std::max_align_t) unsigned char state[minimizer_state_size];
     gsl_min_fminimizer_type const *type = gsl_min_fminimizer_brent;
@@ -295,8 +387,8 @@ int contact_function(double const r[dim], double const q1[sym],
         break;
     }
     lambda = s.x_minimum;
-    best = -s.f_minimum;
   }
+  double const lambda_brent = lambda;
 
   // Newton–Raphson refinement (ch. 5). The root of g = μ2² − μ1² is sought
   // as that of ω = μ2/μ1 − 1 scaled by (1−λ): ω(λ) = λ·ρ(λ) − (1 − λ) with
@@ -305,31 +397,64 @@ int contact_function(double const r[dim], double const q1[sym],
   // nearly so otherwise, where g varies sharply near λ = 0 or 1 and Newton's
   // steps on g overshoot. The steps are safeguarded: ω(0) = −1 < 0 < ω(1),
   // every evaluation narrows [lo, hi], and a step leaving it bisects.
-  // Every f(λ) is a lower bound of μ², so the largest value met is the best
-  // estimate of μ²; λ is the last iterate.
+  // μ² is then f at the last iterate, evaluated with compensated arithmetic
+  // (f_accurate); the plain f that Brent's method compares is off by up to
+  // cond(Q)·ε.
   double lo = 0.0;
   double hi = 1.0;
+  bool converged = false;
+  double domega = 0.0;  // ω′ at the last iterate, once converged
   for (int k = 0; k < PW85_NR_ITER; ++k) {
     NewtonTerms t;
     if (!newton_terms(lambda, p, &t)) break;
-    if (t.f > best) best = t.f;
-    if (t.omega == 0.0) break;
+    domega = t.domega;
+    if (t.omega == 0.0) {
+      converged = true;
+      break;
+    }
     (t.omega < 0.0 ? lo : hi) = lambda;
     // Newton's step; where it leaves [lo, hi] (ρ′ is computed with
     // cancellation when P1 and P2 vary fast), the sphere model's 1/(1 + ρ),
     // exact when ρ is constant; bisection as a last resort.
     double next = t.newton;
-    if (std::fabs(next - lambda) <= 4.0 * DBL_EPSILON * lambda) {
-      // Converged to the resolution of λ (the root may sit on lo or hi).
+    if (std::fabs(next - lambda) <= newton_noise * std::fmin(lambda, 1.0 - lambda)) {
+      // Converged as far as the plain ω can tell: its rounding noise
+      // (cond·ε) would make further steps, and the signs that set [lo, hi],
+      // jitter. The step on the compensated ω below finishes.
       if (next > 0.0 && next < 1.0) lambda = next;
+      converged = true;
       break;
     }
     if (!(next > lo && next < hi)) next = t.fixed;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     lambda = next;
   }
-  double last = 0.0;
-  if (f(lambda, p.r, p.q1, p.q2, &last) && last > best) best = last;
+  // A last Newton step on ω computed from the refined s: the plain ω is off
+  // by up to cond(Q)·ε, and so was λ (by 6e-9 on the reference data).
+  if (converged && domega > 0.0) {
+    double s[dim], rho[dim];
+    if (refined_solve(lambda, p.r, p.q1, p.q2, s, rho)) {
+      double const rho12 =
+          std::sqrt(quad_form_dd(p.q2, s) / quad_form_dd(p.q1, s));
+      double const omega = lambda * rho12 - (1.0 - lambda);
+      // [lo, hi] came from the signs of the plain ω, unreliable at this
+      // scale: the step is only bounded, by Brent's tolerance.
+      double const step = omega / domega;
+      if (std::fabs(step) <= PW85_LAMBDA_ATOL && lambda - step > 0.0 &&
+          lambda - step < 1.0)
+        lambda -= step;
+    }
+  }
+  double best = 0.0;
+  if (!f_accurate(lambda, p.r, p.q1, p.q2, &best)) best = 0.0;
+  // Should Newton's steps have failed to converge, Brent's estimate may be
+  // the better one: every f(λ) is a lower bound of μ², keep the larger.
+  double at_brent = 0.0;
+  if (!converged && f_accurate(lambda_brent, p.r, p.q1, p.q2, &at_brent) &&
+      at_brent > best) {
+    best = at_brent;
+    lambda = lambda_brent;
+  }
 
   double const mu2 = std::ldexp(best, 2 * er - eq);
   out[1] = lambda;

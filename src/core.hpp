@@ -34,6 +34,16 @@ void spheroid(double a, double c, double const n[dim], double q[sym]) noexcept;
 bool f(double lambda, double const r[dim], double const q1[sym],
        double const q2[sym], double *f) noexcept;
 
+// f(λ) as f() does, but accurate to about one ulp for any Q(λ) whose
+// condition number is below ~1e10 (seed ch. 4, eq. (4), with compensated
+// arithmetic): Q(λ) is formed in double-double, s = Q⁻¹·r is refined once,
+// and f = λ(1−λ)·(r·s + s·ρ) with ρ = r − Q·s computed with error-free
+// transformations. Since r·s + s·ρ = rᵀQ⁻¹r − eᵀQe, e = Q⁻¹r − s, the error
+// is second order in that of s. Returns false when Q(λ) is not positive
+// definite.
+bool f_accurate(double lambda, double const r[dim], double const q1[sym],
+                double const q2[sym], double *f) noexcept;
+
 // out = {f(λ), g(λ), g′(λ)} with g = μ2² − μ1² (ch. 5, eqs. (4)–(5)).
 // Precondition: Q(λ) positive definite; otherwise out holds NaN.
 void residual(double lambda, double const r[dim], double const q1[sym],

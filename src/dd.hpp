@@ -49,6 +49,12 @@ inline dd dd_mul(dd a, double b) noexcept {
   return two_sum(p.hi, p.lo);
 }
 
+inline dd dd_add(dd a, double b) noexcept {
+  dd s = two_sum(a.hi, b);
+  s.lo += a.lo;
+  return two_sum(s.hi, s.lo);
+}
+
 inline double dd_round(dd a) noexcept { return a.hi + a.lo; }
 
 }  // namespace pw85::detail

@@ -63,8 +63,8 @@ double pw85_f_neg(double lambda, double const *params) noexcept {
       !core::all_finite(params, PW85_DIM + 2 * PW85_SYM))
     return NAN;
   double value = 0.0;
-  if (!core::f(lambda, params, params + PW85_DIM, params + PW85_DIM + PW85_SYM,
-               &value))
+  if (!core::f_accurate(lambda, params, params + PW85_DIM,
+                        params + PW85_DIM + PW85_SYM, &value))
     return NAN;
   return -value;
 }
