@@ -1,0 +1,184 @@
+#!/usr/bin/python3
+"""Check the committed pw85 reference data against a fresh recomputation.
+
+Usage:  /usr/bin/python3 data/check_ref_data.py [DATA_DIR] [--seed N]
+
+DATA_DIR defaults to the folder of this script.  The small data sets
+(radii, directions, spheroids, lambdas, distances) are recomputed and
+compared exactly; a deterministic random sample of F, MU2/LAMBDA and of the
+general pairs is recomputed with the exact/certified routines of
+gen_ref_data.py (same folder) and compared bit for bit, and a smaller sample
+with the independent mpmath route.  Exit status: 0 if everything matches,
+1 on any mismatch, 77 (meson's "skipped") if numpy/h5py/mpmath are missing.
+"""
+
+import argparse
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True  # keep data/ free of __pycache__
+
+try:
+    import numpy as np
+    import h5py  # noqa: F401
+    import mpmath  # noqa: F401
+except ImportError as exc:  # pragma: no cover
+    print("SKIP: %s (run with /usr/bin/python3)" % exc)
+    sys.exit(77)
+
+import gen_ref_data as gen  # noqa: E402
+
+N_F = 20000
+N_MU = 3000
+N_GENERAL = 2000
+N_F_MP = 500
+N_MU_MP = 100
+N_GENERAL_MP = 50
+
+
+class Checker:
+    def __init__(self):
+        self.failures = 0
+
+    def check(self, ok, what):
+        if not ok:
+            self.failures += 1
+            if self.failures <= 20:
+                print("MISMATCH: " + what)
+            elif self.failures == 21:
+                print("(further mismatches are counted, not printed)")
+        return ok
+
+
+def same(a, b):
+    """Bitwise equality of float64 arrays (also distinguishes 0.0/-0.0)."""
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    b = np.ascontiguousarray(b, dtype=np.float64)
+    return a.shape == b.shape and a.tobytes() == b.tobytes()
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="check pw85 reference data")
+    ap.add_argument("datadir", nargs="?", default=HERE)
+    ap.add_argument("--seed", type=int, default=2019)
+    args = ap.parse_args(argv)
+    t0 = time.time()
+    ck = Checker()
+    rng = np.random.default_rng(args.seed)
+
+    path = os.path.join(args.datadir, gen.REF_FILE)
+    print("checking %s" % path)
+    with h5py.File(path, "r") as f:
+        d = {k: f[k][...] for k in f}
+    expected_shapes = {
+        "radii": (3,), "directions": (12, 3), "spheroids": (108, 6),
+        "lambdas": (11,), "distances": (3,), "F": (108, 108, 12, 11),
+        "MU2": (108, 108, 12, 3), "LAMBDA": (108, 108, 12, 3)}
+    for k, shp in expected_shapes.items():
+        ck.check(k in d and d[k].shape == shp and d[k].dtype == np.float64,
+                 "dataset %s: expected float64 %s" % (k, shp))
+    if ck.failures:
+        return 1
+    radii = gen.make_radii()
+    directions = gen.make_directions()
+    ck.check(same(d["radii"], radii), "radii")
+    ck.check(same(d["directions"], directions), "directions")
+    ck.check(same(d["spheroids"], gen.make_spheroids(radii, directions)),
+             "spheroids")
+    ck.check(same(d["lambdas"], gen.make_lambdas()), "lambdas")
+    ck.check(same(d["distances"], gen.make_distances()), "distances")
+    print("  radii, directions, spheroids, lambdas, distances: recomputed, "
+          "compared exactly")
+
+    fails = gen.invariant_failures(d)
+    for msg in fails:
+        ck.check(False, msg)
+    print("  exact invariants of the full F, MU2, LAMBDA arrays (evenness in "
+          "r, identical spheroids, F(0)=F(1)=0, LAMBDA=1/2 for q1 == q2): "
+          "%d failures" % len(fails))
+
+    sph = [list(map(float, q)) for q in d["spheroids"]]
+    dirs = [list(map(float, v)) for v in d["directions"]]
+    lams = [float(x) for x in d["lambdas"]]
+    dists = [float(x) for x in d["distances"]]
+    F, MU2, LAM = d["F"], d["MU2"], d["LAMBDA"]
+
+    bad = 0
+    for t in range(N_F):
+        i, j, k, l = (int(rng.integers(0, n)) for n in F.shape)
+        v = gen.f_value_F(gen.Pair(sph[i], sph[j]), dirs[k], lams[l])
+        bad += not ck.check(same(v, F[i, j, k, l]),
+                            "F[%d,%d,%d,%d] = %r, recomputed %r"
+                            % (i, j, k, l, F[i, j, k, l], v))
+        if t < N_F_MP:
+            w = gen.f_mp(lams[l], dirs[k], sph[i], sph[j], dps=80)
+            bad += not ck.check(same(w, F[i, j, k, l]),
+                                "F[%d,%d,%d,%d] = %r, mpmath %r"
+                                % (i, j, k, l, F[i, j, k, l], w))
+    print("  F: %d random entries recomputed exactly (%d of them also with "
+          "mpmath at 80 digits): %d mismatches" % (N_F, N_F_MP, bad))
+
+    bad = 0
+    for t in range(N_MU):
+        i, j, k, m = (int(rng.integers(0, n)) for n in MU2.shape)
+        r = gen.r12_vector(dists[m], dirs[k])
+        res = gen.contact(gen.Pair(sph[i], sph[j]), r)
+        bad += not ck.check(
+            same([res.mu2, res.lam], [MU2[i, j, k, m], LAM[i, j, k, m]]),
+            "MU2/LAMBDA[%d,%d,%d,%d] = %r %r, recomputed %r %r"
+            % (i, j, k, m, MU2[i, j, k, m], LAM[i, j, k, m], res.mu2,
+               res.lam))
+        if t < N_MU_MP:
+            mu2, lam, _ = gen.contact_mp(r, sph[i], sph[j], dps=100)
+            bad += not ck.check(
+                same([mu2, lam], [MU2[i, j, k, m], LAM[i, j, k, m]]),
+                "MU2/LAMBDA[%d,%d,%d,%d] = %r %r, mpmath %r %r"
+                % (i, j, k, m, MU2[i, j, k, m], LAM[i, j, k, m], mu2, lam))
+    print("  MU2/LAMBDA: %d random entries recomputed (certified, %d "
+          "fractional bits; %d of them also with mpmath at 100 digits): "
+          "%d mismatches" % (N_MU, gen.P_BITS, N_MU_MP, bad))
+
+    path = os.path.join(args.datadir, gen.GENERAL_FILE)
+    print("checking %s" % path)
+    with h5py.File(path, "r") as f:
+        g = {k: f[k][...] for k in f}
+    n = gen.GENERAL_N
+    before = ck.failures
+    for k, shp in (("r12", (n, 3)), ("q1", (n, 6)), ("q2", (n, 6)),
+                   ("MU2", (n,)), ("LAMBDA", (n,)), ("MU2_MINUS_1", (n,)),
+                   ("delta", (n,))):
+        ck.check(k in g and g[k].shape == shp and g[k].dtype == np.float64,
+                 "general pairs dataset %s: expected float64 %s" % (k, shp))
+    if ck.failures > before:
+        return 1
+    bad = 0
+    for t, c in enumerate(rng.permutation(n)[:N_GENERAL]):
+        c = int(c)
+        q1 = [float(x) for x in g["q1"][c]]
+        q2 = [float(x) for x in g["q2"][c]]
+        r = [float(x) for x in g["r12"][c]]
+        ok = gen.positive_definite_exact(q1) and gen.positive_definite_exact(q2)
+        bad += not ck.check(ok, "general pair %d: q not positive definite" % c)
+        res = gen.contact(gen.Pair(q1, q2), r)
+        stored = [g["MU2"][c], g["LAMBDA"][c], g["MU2_MINUS_1"][c]]
+        bad += not ck.check(same([res.mu2, res.lam, res.mu2m1], stored),
+                            "general pair %d: stored %r, recomputed %r"
+                            % (c, stored, [res.mu2, res.lam, res.mu2m1]))
+        if t < N_GENERAL_MP:
+            mp = gen.contact_mp(r, q1, q2, dps=100)
+            bad += not ck.check(same(list(mp), stored),
+                                "general pair %d: stored %r, mpmath %r"
+                                % (c, stored, list(mp)))
+    print("  general pairs: %d random cases recomputed (%d also with "
+          "mpmath): %d mismatches" % (N_GENERAL, N_GENERAL_MP, bad))
+    print("%s (%.1f s)" % ("FAILED: %d mismatches" % ck.failures
+                           if ck.failures else "all checks passed",
+                           time.time() - t0))
+    return 1 if ck.failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
