@@ -1,0 +1,268 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Replays data/pw85_ref_data.h5 (references correctly rounded from mpmath at
+ * 60+ digits, see data/README.md) through the public API. Each test prints
+ * the worst error it measured and where; tolerances are at most 10× the
+ * measured worst error. */
+#include <float.h>
+#include <pw85.h>
+#include <string.h>
+
+#include "refdata.h"
+#include "testutil.h"
+
+static RefData data;
+
+/* The worst error seen by a test, and where. */
+typedef struct {
+  double err;
+  size_t index;
+  size_t count;
+} Worst;
+
+static void worst_update(Worst *w, double err, size_t index) {
+  w->count++;
+  if (err > w->err || (isnan(err) && !isnan(w->err))) {
+    w->err = err;
+    w->index = index;
+  }
+}
+
+static void worst_report(Worst const *w, const char *what, double tol) {
+  g_test_message("%s: %zu cases, worst error %.3g at record %zu (tolerance "
+                 "%.3g)",
+                 what, w->count, w->err, w->index, tol);
+  g_assert_cmpuint(w->count, >, 0); /* a test that reads no case fails */
+  if (!(w->err <= tol))
+    g_error("%s: worst error %.3g at record %zu exceeds %.3g", what, w->err,
+            w->index, tol);
+}
+
+static double const *direction(size_t k) { return data.directions + 3 * k; }
+static double const *spheroid(size_t i) { return data.spheroids + 6 * i; }
+
+/* Correctly rounded references against double-double evaluation: every
+ * entry to within one ulp. Measured: 1.1e-16 (half an ulp, relative to the
+ * largest entry of Q). */
+#define TOL_SPHEROID 2.3e-16
+
+static void test_spheroids(void) {
+  Worst w = {0};
+  g_assert_cmpuint(data.num_spheroids, ==,
+                   data.num_radii * data.num_radii * data.num_directions);
+  for (size_t ia = 0, i = 0; ia < data.num_radii; ia++)
+    for (size_t ic = 0; ic < data.num_radii; ic++)
+      for (size_t k = 0; k < data.num_directions; k++, i++) {
+        double q[PW85_SYM];
+        pw85_spheroid(data.radii[ia], data.radii[ic], direction(k), q);
+        double const *exp = spheroid(i);
+        double scale = fmax(fabs(exp[0]), fmax(fabs(exp[3]), fabs(exp[5])));
+        for (int c = 0; c < PW85_SYM; c++)
+          worst_update(&w, fabs(q[c] - exp[c]) / scale, i);
+      }
+  worst_report(&w, "pw85_spheroid vs spheroids", TOL_SPHEROID);
+}
+
+static void fill_params(size_t i, size_t j, double const r[PW85_DIM],
+                        double params[15]) {
+  memcpy(params, r, 3 * sizeof(double));
+  memcpy(params + 3, spheroid(i), 6 * sizeof(double));
+  memcpy(params + 9, spheroid(j), 6 * sizeof(double));
+}
+
+/* Compensated evaluation: measured worst error 0 (every one of the
+ * 1,539,648 values correctly rounded); the tolerance is one ulp. */
+#define TOL_F_NEG 2.3e-16
+
+static void test_f_neg(void) {
+  Worst w = {0};
+  for (size_t i = 0; i < data.num_spheroids; i++)
+    for (size_t j = 0; j < data.num_spheroids; j++)
+      for (size_t k = 0; k < data.num_directions; k++) {
+        double params[15];
+        fill_params(i, j, direction(k), params);
+        for (size_t l = 0; l < data.num_lambdas; l++) {
+          size_t const n = ref_data_f_index(&data, i, j, k, l);
+          double const act = -pw85_f_neg(data.lambdas[l], params);
+          worst_update(&w, rel_err(act, data.F[n]), n);
+        }
+      }
+  worst_report(&w, "pw85_f_neg vs F", TOL_F_NEG);
+}
+
+/* x = Q⁻¹·b by the public Cholesky functions. */
+static void solve(double const q[PW85_SYM], double const b[PW85_DIM],
+                  double x[PW85_DIM]) {
+  double l[PW85_SYM];
+  pw85__cholesky_decomp(q, l);
+  pw85__cholesky_solve(l, b, x);
+}
+
+/* μ1² = (1−λ)²·sᵀQ1s and μ2² = λ²·sᵀQ2s, s = Q(λ)⁻¹·r (seed ch. 5,
+ * eqs. (1a)–(1b)): a formula independent of pw85__residual's (ch. 5,
+ * eqs. (3)–(4)), evaluated here in long double by Gaussian elimination so
+ * that the check measures the library, not this test: on x86-64 the 64-bit
+ * significand keeps cond(Q)·ε below 2e-12 on this file (where long double
+ * is double, the seed criterion below would measure up to 4e-9). */
+static void mu_squared(double lambda, double const r[PW85_DIM],
+                       double const q1[PW85_SYM], double const q2[PW85_SYM],
+                       double *mu1, double *mu2) {
+  static int const idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+  long double const lam = lambda, mu = 1.0L - lam;
+  long double a[3][4];
+  for (int i = 0; i < 3; i++) {
+    for (int j = 0; j < 3; j++)
+      a[i][j] = mu * q1[idx[i][j]] + lam * q2[idx[i][j]];
+    a[i][3] = r[i];
+  }
+  for (int c = 0; c < 3; c++) /* Q is positive definite: no pivoting */
+    for (int i = c + 1; i < 3; i++) {
+      long double const m = a[i][c] / a[c][c];
+      for (int j = c; j < 4; j++) a[i][j] -= m * a[c][j];
+    }
+  long double s[3];
+  for (int i = 2; i >= 0; i--) {
+    long double t = a[i][3];
+    for (int j = i + 1; j < 3; j++) t -= a[i][j] * s[j];
+    s[i] = t / a[i][i];
+  }
+  long double p1 = 0.0L, p2 = 0.0L;
+  for (int i = 0; i < 3; i++)
+    for (int j = 0; j < 3; j++) {
+      p1 += s[i] * q1[idx[i][j]] * s[j];
+      p2 += s[i] * q2[idx[i][j]] * s[j];
+    }
+  *mu1 = (double)(mu * mu * p1);
+  *mu2 = (double)(lam * lam * p2);
+}
+
+/* f′ and f″ by the analytic expressions of seed ch. 4.1, eqs. (5)–(9):
+ * s = Q⁻¹r, u = Q12·s, v = Q⁻¹u, f′ = (1−2λ)·r·s − λ(1−λ)·s·u,
+ * f″ = −2·r·s − 2(1−2λ)·s·u + 2λ(1−λ)·u·v. */
+static void f_derivatives(double lambda, double const r[PW85_DIM],
+                          double const q1[PW85_SYM],
+                          double const q2[PW85_SYM], double *df,
+                          double *d2f) {
+  double q[PW85_SYM], q12[PW85_SYM], s[PW85_DIM], u[PW85_DIM], v[PW85_DIM];
+  for (int c = 0; c < PW85_SYM; c++) {
+    q[c] = (1. - lambda) * q1[c] + lambda * q2[c];
+    q12[c] = q2[c] - q1[c];
+  }
+  solve(q, r, s);
+  u[0] = q12[0] * s[0] + q12[1] * s[1] + q12[2] * s[2];
+  u[1] = q12[1] * s[0] + q12[3] * s[1] + q12[4] * s[2];
+  u[2] = q12[2] * s[0] + q12[4] * s[1] + q12[5] * s[2];
+  solve(q, u, v);
+  double const rs = r[0] * s[0] + r[1] * s[1] + r[2] * s[2];
+  double const su = s[0] * u[0] + s[1] * u[1] + s[2] * u[2];
+  double const uv = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  double const w = lambda * (1. - lambda);
+  *df = (1. - 2. * lambda) * rs - w * su;
+  *d2f = -2. * rs - 2. * (1. - 2. * lambda) * su + 2. * w * uv;
+}
+
+/* out[0] against F (pw85__residual reports the compensated f: measured 0,
+ * every value correctly rounded; tolerance one ulp). g = −f′ and g′ = −f″
+ * against seed ch. 4.1 (the same operations in another arrangement:
+ * measured 0; tolerance one ulp of the size of the terms). g against
+ * μ2² − μ1² of eqs. (1a)–(1b), a different formula evaluated in long
+ * double: g itself is a plain double evaluation whose error is
+ * cond(Q(λ))·ε ≈ 2.5e7 × 1.1e-16 in the worst case of this file, so this
+ * check is loose by nature (measured 2.4e-9). g′ against a central difference of g with h = 1e-4, which
+ * balances the O(h²) truncation error against g's rounding error divided
+ * by h (measured 5.3e-6; 1.9e-4 at h = 1e-3, 4.9e-5 at h = 1e-5). */
+#define TOL_RESIDUAL_F 2.3e-16
+#define TOL_RESIDUAL_DF 2.3e-16
+#define TOL_RESIDUAL_D2F 2.3e-16
+#define TOL_RESIDUAL_MU 2.4e-8
+#define TOL_RESIDUAL_DG 5.3e-5
+
+static void test_residual(void) {
+  Worst wf = {0}, wdf = {0}, wd2f = {0}, wmu = {0}, wdg = {0};
+  double const h = 1e-4;
+  for (size_t i = 0; i < data.num_spheroids; i++)
+    for (size_t j = 0; j < data.num_spheroids; j++)
+      for (size_t k = 0; k < data.num_directions; k++)
+        for (size_t l = 1; l + 1 < data.num_lambdas; l++) {
+          size_t const n = ref_data_f_index(&data, i, j, k, l);
+          double const lambda = data.lambdas[l];
+          double const *r = direction(k);
+          double const *q1 = spheroid(i), *q2 = spheroid(j);
+          double out[3], plus[3], minus[3], mu1, mu2, df, d2f;
+          pw85__residual(lambda, r, q1, q2, out);
+          worst_update(&wf, rel_err(out[0], data.F[n]), n);
+          f_derivatives(lambda, r, q1, q2, &df, &d2f);
+          mu_squared(lambda, r, q1, q2, &mu1, &mu2);
+          /* Errors relative to the size of the terms, μ1² + μ2². */
+          double const scale = mu1 + mu2;
+          worst_update(&wdf, fabs(out[1] + df) / scale, n);
+          worst_update(&wd2f, fabs(out[2] + d2f) / fmax(fabs(d2f), scale), n);
+          worst_update(&wmu, fabs(out[1] - (mu2 - mu1)) / scale, n);
+          pw85__residual(lambda + h, r, q1, q2, plus);
+          pw85__residual(lambda - h, r, q1, q2, minus);
+          double const dg = (plus[1] - minus[1]) / (2. * h);
+          worst_update(&wdg, fabs(out[2] - dg) / fmax(fabs(out[2]), scale),
+                       n);
+        }
+  worst_report(&wf, "pw85__residual f vs F", TOL_RESIDUAL_F);
+  worst_report(&wdf, "pw85__residual g vs -f' (ch. 4.1)", TOL_RESIDUAL_DF);
+  worst_report(&wd2f, "pw85__residual g' vs -f'' (ch. 4.1)",
+               TOL_RESIDUAL_D2F);
+  worst_report(&wmu, "pw85__residual g vs mu2^2 - mu1^2", TOL_RESIDUAL_MU);
+  worst_report(&wdg, "pw85__residual g' vs finite difference",
+               TOL_RESIDUAL_DG);
+}
+
+/* μ²: measured 0, every value correctly rounded; tolerance one ulp.
+ * λ: measured 1.1e-15 (a few ulps; λ is a root, so its accuracy is that of
+ * ω near it). The seed's criteria of ch. 6, at 10× the measured worst:
+ * μ1², μ2² within 1.5e-12 of μ² (the seed asks 1e-10) and
+ * |f′| ≤ 2.5e-10·|f″| (the seed asks PW85_LAMBDA_ATOL = 1e-6). */
+#define TOL_MU2 DBL_EPSILON
+#define TOL_LAMBDA 1.1e-14
+#define TOL_SEED_MU 1.5e-11
+#define TOL_SEED_DF 2.5e-9
+
+static void test_contact_function(void) {
+  Worst wmu = {0}, wl = {0}, wseed_mu = {0}, wseed_df = {0};
+  for (size_t i = 0; i < data.num_spheroids; i++)
+    for (size_t j = 0; j < data.num_spheroids; j++)
+      for (size_t k = 0; k < data.num_directions; k++)
+        for (size_t m = 0; m < data.num_distances; m++) {
+          size_t const n = ref_data_mu2_index(&data, i, j, k, m);
+          double r[PW85_DIM], out[2];
+          for (int c = 0; c < PW85_DIM; c++)
+            r[c] = data.distances[m] * direction(k)[c];
+          int const status =
+              pw85_contact_function(r, spheroid(i), spheroid(j), out);
+          if (status != PW85_SUCCESS)
+            g_error("record %zu: status %d (%s)", n, status,
+                    pw85_strerror(status));
+          worst_update(&wmu, rel_err(out[0], data.MU2[n]), n);
+          worst_update(&wl, fabs(out[1] - data.LAMBDA[n]), n);
+          /* The seed's own criteria (ch. 6): μ1² and μ2² agree with μ²;
+           * |f′(λ)| ≤ PW85_LAMBDA_ATOL·|f″(λ)|, with f′ = −g, f″ = −g′. */
+          double mu1, mu2, res[3];
+          mu_squared(out[1], r, spheroid(i), spheroid(j), &mu1, &mu2);
+          worst_update(&wseed_mu,
+                       fmax(rel_err(mu1, out[0]), rel_err(mu2, out[0])), n);
+          pw85__residual(out[1], r, spheroid(i), spheroid(j), res);
+          worst_update(&wseed_df, fabs(res[1]) / fabs(res[2]), n);
+        }
+  worst_report(&wmu, "pw85_contact_function mu^2 vs MU2", TOL_MU2);
+  worst_report(&wl, "pw85_contact_function |lambda - LAMBDA|", TOL_LAMBDA);
+  worst_report(&wseed_mu, "seed ch. 6: mu1^2, mu2^2 vs mu^2", TOL_SEED_MU);
+  worst_report(&wseed_df, "seed ch. 6: |f'| / |f''|", TOL_SEED_DF);
+}
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, NULL);
+  install_failing_gsl_handler();
+  ref_data_load_or_fail(&data);
+  g_test_add_func("/pw85/ref_data/spheroids", test_spheroids);
+  g_test_add_func("/pw85/ref_data/f_neg", test_f_neg);
+  g_test_add_func("/pw85/ref_data/residual", test_residual);
+  g_test_add_func("/pw85/ref_data/contact_function", test_contact_function);
+  int const status = g_test_run();
+  ref_data_clear(&data);
+  return status;
+}
