@@ -54,17 +54,33 @@ void residual(double lambda, double const r[dim], double const q1[sym],
 // its rows and columns. Entries must be finite.
 bool is_positive_definite(double const q[sym]) noexcept;
 
+// PW85_EFAULT if a pointer is NULL, PW85_EDOM if an entry of r (3), q1 or
+// q2 (6 each) is not finite, PW85_SUCCESS otherwise.
+int check_pointers_and_finite(void const *r, void const *q1, void const *q2,
+                              void const *out) noexcept;
+
 // The input contract shared by every contact function of pw85 and
-// pw85_legacy: PW85_EFAULT if a pointer is NULL, PW85_EDOM if an entry is
-// not finite, PW85_ENOTPOSDEF if q1 or q2 is not positive definite,
-// PW85_SUCCESS otherwise.
+// pw85_legacy: check_pointers_and_finite(), then PW85_ENOTPOSDEF if q1 or
+// q2 is not positive definite.
 int check_input(double const *r, double const *q1, double const *q2,
                 double const *out) noexcept;
 
-// The contact function for input that passed check_input(). Returns a
-// PW85_* status; out = {μ², λ}.
+// The contact function (contact.cpp) for input that passed
+// check_pointers_and_finite(): returns PW85_SUCCESS, PW85_ENOTPOSDEF,
+// PW85_ERANGE or PW85_ENOMEM (pw85.h); out = {μ², λ}.
 int contact_function(double const r[dim], double const q1[sym],
                      double const q2[sym], double out[2]) noexcept;
+
+// The certified overlap test (contact.cpp), same contract; *result = −1, 0
+// or +1 as documented for pw85_overlap().
+int overlap(double const r[dim], double const q1[sym], double const q2[sym],
+            int *result) noexcept;
+
+#ifdef PW85_COUNT_EVALUATIONS
+// Benchmark builds only: the number of times Q(λ) was formed (each is one
+// evaluation of f or of its derivatives) on the calling thread.
+unsigned long long evaluation_count() noexcept;
+#endif
 
 }  // namespace pw85::detail
 

@@ -77,9 +77,16 @@ void pw85__residual(double lambda, double const r12[PW85_DIM],
 
 int pw85_contact_function(double const r12[PW85_DIM], double const q1[PW85_SYM],
                           double const q2[PW85_SYM], double out[2]) noexcept {
-  int const status = core::check_input(r12, q1, q2, out);
+  int const status = core::check_pointers_and_finite(r12, q1, q2, out);
   if (status != PW85_SUCCESS) return status;
   return core::contact_function(r12, q1, q2, out);
+}
+
+int pw85_overlap(double const r12[PW85_DIM], double const q1[PW85_SYM],
+                 double const q2[PW85_SYM], int *result) noexcept {
+  int const status = core::check_pointers_and_finite(r12, q1, q2, result);
+  if (status != PW85_SUCCESS) return status;
+  return core::overlap(r12, q1, q2, result);
 }
 
 }  // extern "C"

@@ -198,6 +198,30 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
                                    double const q1[PW85_SYM],
                                    double const q2[PW85_SYM], double out[2]) PW85_NOEXCEPT;
 
+/**
+ * @brief Do two ellipsoids overlap? A certified decision, faster than
+ *        computing μ².
+ *
+ * Decides the sign of μ² − 1 from bounds that hold at every λ,
+ * f(λ) ≤ μ² ≤ max(μ1²(λ), μ2²(λ)), evaluated in double arithmetic with
+ * rounding margins derived from the condition number of Q(λ); only nearly
+ * tangent pairs fall back to the exact μ² of pw85_contact_function(), so
+ * the answer never contradicts it.
+ * @param[in] r12 the centre-to-centre vector c2 − c1.
+ * @param[in] q1 the quadratic form of the first ellipsoid.
+ * @param[in] q2 the quadratic form of the second ellipsoid.
+ * @param[out] result −1 if the ellipsoids overlap (μ² < 1), +1 if they are
+ *             disjoint (μ² > 1), 0 if they are tangent to the resolution of
+ *             double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON (4 ulps of 1).
+ *             Coincident centres overlap.
+ * @return the statuses of pw85_contact_function(), with the same meaning;
+ *         *result is written on PW85_SUCCESS only (also when μ² would
+ *         overflow: such ellipsoids are disjoint, *result = +1).
+ */
+PW85_API int pw85_overlap(double const r12[PW85_DIM],
+                          double const q1[PW85_SYM],
+                          double const q2[PW85_SYM], int *result) PW85_NOEXCEPT;
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif

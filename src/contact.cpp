@@ -1,0 +1,411 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The contact function μ² = max f over [0, 1] (seed ch. 5) and the certified
+// overlap test. Equation numbers refer to the seed documentation.
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <initializer_list>
+
+#include "core.hpp"
+#include "dd.hpp"
+#include "linalg.hpp"
+#include "pw85.h"
+
+namespace pw85::detail {
+
+namespace {
+
+// Working memory of the GSL minimiser, on the stack: no allocation (GSL's
+// gsl_min_fminimizer_alloc calls the error handler when malloc fails).
+// Brent's state is 8 doubles in every GSL release.
+constexpr std::size_t minimizer_state_size = 512;
+
+// Relative size of a Newton step on the plain ω below which it is taken as
+// converged: above its rounding noise, cond(Q)·ε, for cond(Q) up to 1e7,
+// and small enough that one step on the compensated ω then reaches full
+// accuracy (its error is quadratic).
+constexpr double newton_noise = 1e-9;
+
+// Newton steps on ω from the warm start, before Brent's method certifies.
+constexpr int warm_newton_iter = 8;
+
+// The exponent e with |x| = m·2^e, m in [0.5, 1), read from the bits (a
+// libm call per entry would cost more than the rest of the rescaling);
+// frexp for zero and subnormals. x finite.
+int exponent(double x) noexcept {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  int const biased = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased != 0) return biased - 1022;
+  int e = 0;
+  std::frexp(x, &e);
+  return e;
+}
+
+// x·2^k for every entry, exact unless the result leaves the normal range:
+// one multiplication when 2^k is a normal double, ldexp otherwise.
+void scale(double const *x, int n, int k, double *y) noexcept {
+  if (k >= -1022 && k <= 1023) {
+    double const factor = std::ldexp(1.0, k);
+    for (int i = 0; i < n; ++i) y[i] = x[i] * factor;
+  } else {
+    for (int i = 0; i < n; ++i) y[i] = std::ldexp(x[i], k);
+  }
+}
+
+double max_abs(double const *x, int n) noexcept {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
+  return m;
+}
+
+// The problem as solved: r, Q1, Q2 rescaled by powers of two, with the
+// factorisations of Q1 and Q2. μ²(input) = μ²(problem)·2^shift.
+struct Problem {
+  double r[dim];
+  double q1[sym];
+  double q2[sym];
+  Ldl f1;
+  Ldl f2;
+  int shift;
+  bool r_is_zero;
+};
+
+// μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2) with λ unchanged (ch. 3,
+// eq. (6)). Powers of two make the rescaling exact. r is brought to order
+// one; Q1 and Q2 so that their diagonals (which bound every entry of a
+// positive definite matrix) straddle one. Input: finite. Returns
+// PW85_SUCCESS, PW85_ENOTPOSDEF, or PW85_ERANGE when the diagonals span
+// more than the range of a double.
+int prepare(double const r[dim], double const q1[sym], double const q2[sym],
+            Problem *p) noexcept {
+  double const rmax = max_abs(r, dim);
+  p->r_is_zero = rmax == 0.0;
+  int const er = exponent(rmax);
+  int emin = exponent(q1[0]);
+  int emax = emin;
+  for (int i : diag_of) {
+    for (double d : {q1[i], q2[i]}) {
+      int const e = exponent(d);
+      emin = e < emin ? e : emin;
+      emax = e > emax ? e : emax;
+    }
+  }
+  int const eq = emin + (emax - emin) / 2;
+  scale(r, dim, -er, p->r);
+  scale(q1, sym, -eq, p->q1);
+  scale(q2, sym, -eq, p->q2);
+  bool finite = true;
+  for (int i = 0; i < sym; ++i)
+    finite = finite && std::isfinite(p->q1[i]) && std::isfinite(p->q2[i]);
+  p->shift = 2 * er - eq;
+  if (finite && ldl_decomp(p->q1, &p->f1) && ldl_decomp(p->q2, &p->f2))
+    return PW85_SUCCESS;
+  // Not definite, or definite but out of range once rescaled together.
+  if (!is_positive_definite(q1) || !is_positive_definite(q2))
+    return PW85_ENOTPOSDEF;
+  return PW85_ERANGE;
+}
+
+// The sphere model's maximiser, exact for two spheres (Qᵢ = aᵢ²·I gives
+// λ = a1/(a1 + a2)): λ0 = 1/(1 + √(rᵀQ1⁻¹r / rᵀQ2⁻¹r)).
+double warm_start(Problem const &p) noexcept {
+  double const a1 = ldl_quad_inverse(p.f1, p.r);
+  double const a2 = ldl_quad_inverse(p.f2, p.r);
+  double const lambda = 1.0 / (1.0 + std::sqrt(a1 / a2));
+  return (lambda > 0.0 && lambda < 1.0) ? lambda : 0.5;
+}
+
+// −f(λ) for gsl_min, in plain double; finite for every λ, as Brent's method
+// requires (it calls GSL's error handler on a non-finite value): where Q(λ)
+// fails to factorise (only possible through rounding), −f is taken as 0,
+// the value at the ends of [0, 1], which Brent's method never prefers.
+double brent_objective(double lambda, void *params) noexcept {
+  auto const *p = static_cast<Problem const *>(params);
+  double value = 0.0;
+  if (!f(lambda, p->r, p->q1, p->q2, &value) || !std::isfinite(value))
+    return 0.0;
+  return -value;
+}
+
+// At λ, in plain double: f, μ1² = (1−λ)²·P1, μ2² = λ²·P2 (ch. 5,
+// eqs. (1a)–(1b)), Pᵢ = sᵀ·Qᵢ·s, s = Q(λ)⁻¹·r, and Newton's step on
+// ω(λ) = λ·ρ − (1 − λ), ρ = √(P2/P1). ω = (μ2 − μ1)/√P1 has the sign of
+// g = μ2² − μ1² (ch. 5, eq. (4)) but is linear for two spheres and nearly
+// so otherwise, where g varies sharply near λ = 0 or 1. With
+// v = Q⁻¹·(Q2 − Q1)·s, s′ = −v (ch. 4, eq. (5)), so Pᵢ′ = −2·sᵀ·Qᵢ·v and
+// ρ′ = (ρ/2)·(P2′/P2 − P1′/P1). Also an upper bound of cond(Q(λ)),
+// tr(Q)·tr(Q⁻¹), for the rounding margins of the overlap test.
+struct Terms {
+  double f, mu1, mu2;
+  double omega;
+  double domega;  // ω′ = 1 + ρ + λρ′
+  double newton;  // λ − ω/ω′
+  double fixed;   // 1/(1 + ρ): the root of ω if ρ were constant
+  double cond;    // ≥ cond(Q(λ))
+};
+
+bool terms(double lambda, Problem const &p, Terms *t) noexcept {
+  double q[sym];
+  combine(lambda, p.q1, p.q2, q);
+  Ldl fac;
+  if (!ldl_decomp(q, &fac)) return false;
+  double q12[sym];
+  for (int i = 0; i < sym; ++i) q12[i] = p.q2[i] - p.q1[i];
+  double s[dim], u[dim], v[dim], q1s[dim], q2s[dim];
+  ldl_solve(fac, p.r, s);
+  sym_mul(q12, s, u);
+  ldl_solve(fac, u, v);
+  sym_mul(p.q1, s, q1s);
+  sym_mul(p.q2, s, q2s);
+  double const p1 = dot(s, q1s);
+  double const p2 = dot(s, q2s);
+  if (!(p1 > 0.0 && p2 > 0.0)) return false;
+  double const mu = 1.0 - lambda;
+  double const rho = std::sqrt(p2 / p1);
+  double const drho = rho * (dot(q1s, v) / p1 - dot(q2s, v) / p2);
+  t->f = lambda * mu * dot(p.r, s);
+  t->mu1 = mu * mu * p1;
+  t->mu2 = lambda * lambda * p2;
+  t->omega = lambda * rho - mu;
+  t->domega = 1.0 + rho + lambda * drho;
+  // λ − ω/ω′ rearranged so that it does not cancel when the root is far
+  // smaller than λ (ρ ≫ 1: a thin disc).
+  t->newton = (1.0 + lambda * lambda * drho) / t->domega;
+  t->fixed = 1.0 / (1.0 + rho);
+  t->cond = ldl_cond_bound(q, fac);
+  return std::isfinite(t->f) && std::isfinite(t->omega) &&
+         std::isfinite(t->newton) && std::isfinite(t->cond);
+}
+
+// Safeguarded Newton on ω from *lambda, at most n steps: [lo, hi] holds the
+// root (ω(0) = −1 < 0 < ω(1) = ρ(1)) and narrows with every sign seen; a
+// step leaving it takes the sphere model's 1/(1 + ρ), else bisects.
+// Returns true when converged to the resolution of the plain ω; *domega is
+// then ω′ at *lambda.
+bool newton_on_omega(Problem const &p, int n, double *lambda,
+                     double *domega) noexcept {
+  double lo = 0.0;
+  double hi = 1.0;
+  for (int k = 0; k < n; ++k) {
+    Terms t;
+    if (!terms(*lambda, p, &t)) return false;
+    *domega = t.domega;
+    if (t.omega == 0.0) return true;
+    double next = t.newton;
+    if (std::fabs(next - *lambda) <=
+        newton_noise * std::fmin(*lambda, 1.0 - *lambda)) {
+      // Converged as far as the plain ω can tell: its rounding noise would
+      // make further steps, and the signs that set [lo, hi], jitter.
+      if (next > 0.0 && next < 1.0) *lambda = next;
+      return true;
+    }
+    (t.omega < 0.0 ? lo : hi) = *lambda;
+    if (!(next > lo && next < hi)) next = t.fixed;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    *lambda = next;
+  }
+  return false;
+}
+
+// Brent's method on −f (ch. 5), GSL's gsl_min_fminimizer_brent, on a
+// bracket around λ verified to enclose the maximum: [λ − δ, λ + δ] with
+// δ = PW85_LAMBDA_ATOL, widened ×16 while rounding noise in f (up to
+// cond(Q)·ε) defeats the check, up to [0, 1] where f(0) = f(1) = 0.
+// Iterates to PW85_LAMBDA_ATOL or PW85_MAX_ITER. Writes Brent's estimate
+// and final bracket; returns PW85_SUCCESS or PW85_ENOMEM.
+int certify_with_brent(Problem &p, double lambda, double *estimate,
+                       double *lower, double *upper) noexcept {
+  double fm = brent_objective(lambda, &p);
+  double a = 0.0, b = 1.0, fa = 0.0, fb = 0.0;
+  bool enclosed = false;
+  for (double delta = PW85_LAMBDA_ATOL; !enclosed && delta < 0.5;
+       delta *= 16.0) {
+    a = lambda - delta;
+    b = lambda + delta;
+    if (a <= 0.0 || b >= 1.0) break;
+    fa = brent_objective(a, &p);
+    fb = brent_objective(b, &p);
+    enclosed = fm < fa && fm < fb;
+  }
+  if (!enclosed) {
+    a = 0.0;
+    b = 1.0;
+    fa = fb = 0.0;
+    if (!(fm < 0.0)) {  // only if f(λ) rounds to 0: keep λ, uncertified
+      *estimate = lambda;
+      *lower = 0.0;
+      *upper = 1.0;
+      return PW85_SUCCESS;
+    }
+  }
+  alignas(std::max_align_t) unsigned char state[minimizer_state_size];
+  gsl_min_fminimizer_type const *type = gsl_min_fminimizer_brent;
+  if (type->size > sizeof state) return PW85_ENOMEM;
+  gsl_min_fminimizer s{};
+  s.type = type;
+  s.state = state;
+  gsl_function objective{&brent_objective, &p};
+  // The preconditions that GSL checks (a < λ < b, f(λ) below both ends)
+  // hold here, so its error handler is not reached.
+  gsl_min_fminimizer_set_with_values(&s, &objective, lambda, fm, a, fa, b, fb);
+  for (int iter = 0; iter < PW85_MAX_ITER; ++iter) {
+    if (gsl_min_test_interval(s.x_lower, s.x_upper, PW85_LAMBDA_ATOL, 0.0) ==
+        GSL_SUCCESS)
+      break;
+    if (gsl_min_fminimizer_iterate(&s) != GSL_SUCCESS) break;
+  }
+  *estimate = s.x_minimum;
+  *lower = s.x_lower;
+  *upper = s.x_upper;
+  return PW85_SUCCESS;
+}
+
+// The last step, in compensated arithmetic: f, P1 and P2 at λ from the
+// refined solution (linalg.hpp, accurate_terms), one Newton step on the
+// accurate ω, and μ² = f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum,
+// with f′ = −g = −√P1·ω·(μ1 + μ2). The correction is of order (cond·ε)²
+// relative once the plain Newton steps have converged; should it not be
+// negligible, f is evaluated afresh at the new λ.
+PW85_FMA_CLONES
+bool finish(Problem const &p, double domega, double *lambda,
+            double *mu2) noexcept {
+  Accurate a;
+  if (!accurate_terms(*lambda, p.r, p.q1, p.q2, true, &a)) return false;
+  double const l0 = *lambda;
+  double const rho = std::sqrt(a.p2 / a.p1);
+  double const omega = l0 * rho - (1.0 - l0);
+  double const step = omega / domega;
+  *mu2 = a.f;
+  if (!(domega > 0.0) || !(std::fabs(step) <= PW85_LAMBDA_ATOL) ||
+      !(l0 - step > 0.0 && l0 - step < 1.0))
+    return true;
+  *lambda = l0 - step;
+  double const root_p1 = std::sqrt(a.p1);
+  double const sum_mu = (1.0 - l0) * root_p1 + l0 * std::sqrt(a.p2);
+  double const correction = 0.5 * root_p1 * omega * sum_mu * step;
+  if (correction <= 1e-10 * a.f) {
+    *mu2 = a.f + correction;
+  } else {
+    Accurate b;
+    if (accurate_terms(*lambda, p.r, p.q1, p.q2, false, &b) && b.f > a.f)
+      *mu2 = b.f;
+    else
+      *lambda = l0;
+  }
+  return true;
+}
+
+// μ² and λ of a prepared problem with r ≠ 0; out = {μ²(problem), λ}.
+int solve(Problem &p, double out[2]) noexcept {
+  // 1. Warm start, refined by Newton on ω.
+  double lambda = warm_start(p);
+  double domega = 0.0;
+  bool converged = newton_on_omega(p, warm_newton_iter, &lambda, &domega);
+  // 2. Brent's method certifies the maximum on a bracket around λ.
+  double estimate = lambda, lower = 0.0, upper = 1.0;
+  int const status = certify_with_brent(p, lambda, &estimate, &lower, &upper);
+  if (status != PW85_SUCCESS) return status;
+  // 3. Newton to finish: from the warm λ if Brent's bracket (widened by its
+  // tolerance) confirms it, else from Brent's estimate, at most
+  // PW85_NR_ITER plain steps; then one compensated step.
+  if (!converged || lambda < lower - PW85_LAMBDA_ATOL ||
+      lambda > upper + PW85_LAMBDA_ATOL) {
+    lambda = estimate;
+    converged = newton_on_omega(p, PW85_NR_ITER, &lambda, &domega);
+    if (!converged) lambda = estimate;
+  }
+  double mu2 = 0.0;
+  if (!finish(p, converged ? domega : 0.0, &lambda, &mu2)) {
+    // Q(λ) failed to factorise in double-double (rounding only): fall back
+    // to Brent's estimate in plain arithmetic.
+    lambda = estimate;
+    mu2 = -brent_objective(lambda, &p);
+  }
+  out[0] = mu2;
+  out[1] = lambda;
+  return PW85_SUCCESS;
+}
+
+}  // namespace
+
+int contact_function(double const r[dim], double const q1[sym],
+                     double const q2[sym], double out[2]) noexcept {
+  Problem p;
+  int status = prepare(r, q1, q2, &p);
+  if (status != PW85_SUCCESS) return status;
+  if (p.r_is_zero) {  // coincident centres: f ≡ 0, λ is arbitrary
+    out[0] = 0.0;
+    out[1] = 0.5;
+    return PW85_SUCCESS;
+  }
+  double res[2];
+  status = solve(p, res);
+  if (status != PW85_SUCCESS) return status;
+  double const mu2 = std::ldexp(res[0], p.shift);
+  out[1] = res[1];
+  if (std::isinf(mu2)) {
+    out[0] = HUGE_VAL;
+    return PW85_ERANGE;
+  }
+  out[0] = mu2;
+  return PW85_SUCCESS;
+}
+
+int overlap(double const r[dim], double const q1[sym], double const q2[sym],
+            int *result) noexcept {
+  Problem p;
+  int status = prepare(r, q1, q2, &p);
+  if (status != PW85_SUCCESS) return status;
+  if (p.r_is_zero) {  // μ² = 0
+    *result = -1;
+    return PW85_SUCCESS;
+  }
+  // μ² < 1 ⟺ μ²(problem) < 2^−shift (exact; 0 or +∞ out of range, which
+  // decides the comparison correctly since μ²(problem) is finite and > 0).
+  double const one = std::ldexp(1.0, -p.shift);
+  // Bounds valid at every λ (ch. 5, eqs. (1a)–(1b)): f(λ) ≤ μ² because μ²
+  // is the maximum of f; μ² ≤ max(μ1², μ2²) because the point x0(λ) lies in
+  // both ellipsoids scaled by max(μ1, μ2), which therefore meet. In plain
+  // double each is off by at most a few cond(Q(λ))·ε (f), or that times
+  // √cond(Qᵢ) (μᵢ², a quadratic form in s), relative: the margins take 32
+  // times the bounds tr·tr(⁻¹) of these condition numbers.
+  double const cond1 = ldl_cond_bound(p.q1, p.f1);
+  double const cond2 = ldl_cond_bound(p.q2, p.f2);
+  double const cond_q = std::sqrt(std::fmax(cond1, cond2));
+  double lambda = warm_start(p);
+  for (int k = 0; k < 2; ++k) {
+    Terms t;
+    if (!terms(lambda, p, &t)) break;
+    double const m_f = 32.0 * DBL_EPSILON * t.cond;
+    double const m_mu = 32.0 * DBL_EPSILON * t.cond * (1.0 + cond_q);
+    if (m_f < 0.5 && t.f * (1.0 - m_f) > one) {
+      *result = 1;
+      return PW85_SUCCESS;
+    }
+    if (m_mu < 0.5 && std::fmax(t.mu1, t.mu2) * (1.0 + m_mu) < one) {
+      *result = -1;
+      return PW85_SUCCESS;
+    }
+    double next = t.newton;
+    if (!(next > 0.0 && next < 1.0)) next = t.fixed;
+    if (!(next > 0.0 && next < 1.0)) break;
+    lambda = next;
+  }
+  // Nearly tangent, or too ill-conditioned for the plain bounds: the exact
+  // contact function decides.
+  double res[2];
+  status = solve(p, res);
+  if (status != PW85_SUCCESS) return status;
+  double const mu2 = std::ldexp(res[0], p.shift);
+  double const tangency = 4.0 * DBL_EPSILON;
+  *result = std::fabs(mu2 - 1.0) <= tangency ? 0 : (mu2 < 1.0 ? -1 : 1);
+  return PW85_SUCCESS;
+}
+
+}  // namespace pw85::detail

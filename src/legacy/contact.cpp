@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The two historical contact functions of seed ch. 7.3: Newton–Raphson on
+// f′ of implementation #1, and bisection on the numerator of f′ of
+// implementation #2.
+#include <cmath>
+#include <initializer_list>
+
+#include "legacy.hpp"
+#include "pw85_legacy.h"
+
+namespace pw85::legacy::detail {
+
+namespace {
+
+namespace core = pw85::detail;
+
+constexpr int diag_of[dim] = {0, 3, 5};
+
+// The exponent e with x = m·2^e, m in [0.5, 1); 0 for x = 0.
+int exponent(double x) noexcept {
+  int e = 0;
+  std::frexp(x, &e);
+  return e;
+}
+
+// r, Q1, Q2 rescaled exactly by powers of two: r to order one, Q1 and Q2
+// so that their diagonals straddle one. μ²(2^-er·r, 2^-eq·Q1, 2^-eq·Q2) =
+// 2^(eq − 2·er)·μ²(r, Q1, Q2), λ unchanged (seed ch. 3, eq. (6)).
+struct Scaled {
+  double r[dim];
+  double q1[sym];
+  double q2[sym];
+  int er;
+  int eq;
+};
+
+// Precondition: r ≠ 0, input checked. Returns PW85_ERANGE when the diagonals
+// of Q1 and Q2 together span more than the range of a double (the rescaled
+// forms are then no longer positive definite).
+int rescale(double const r[dim], double const q1[sym], double const q2[sym],
+            Scaled *p) noexcept {
+  double rmax = 0.0;
+  for (int i = 0; i < dim; ++i) rmax = std::fmax(rmax, std::fabs(r[i]));
+  p->er = exponent(rmax);
+  int emin = exponent(q1[0]);
+  int emax = emin;
+  for (int i : diag_of) {
+    for (double const *q : {q1, q2}) {
+      int const e = exponent(q[i]);
+      emin = e < emin ? e : emin;
+      emax = e > emax ? e : emax;
+    }
+  }
+  p->eq = emin + (emax - emin) / 2;
+  for (int i = 0; i < dim; ++i) p->r[i] = std::ldexp(r[i], -p->er);
+  for (int i = 0; i < sym; ++i) {
+    p->q1[i] = std::ldexp(q1[i], -p->eq);
+    p->q2[i] = std::ldexp(q2[i], -p->eq);
+  }
+  if (!core::is_positive_definite(p->q1) || !core::is_positive_definite(p->q2))
+    return PW85_ERANGE;
+  return PW85_SUCCESS;
+}
+
+// out = {μ², λ} from the rescaled problem's f; PW85_ERANGE when μ²
+// overflows (out[0] = +∞), as pw85_contact_function does.
+int finish(Scaled const &p, double f, double lambda, int status,
+           double out[2]) noexcept {
+  double const mu2 = std::ldexp(f, 2 * p.er - p.eq);
+  out[1] = lambda;
+  if (std::isinf(mu2)) {
+    out[0] = HUGE_VAL;
+    return PW85_ERANGE;
+  }
+  out[0] = mu2;
+  return status;
+}
+
+// Horner's scheme for p[0] + p[1]·x + ... + p[n−1]·x^(n−1).
+template <int n>
+double horner(double const (&p)[n], double x) noexcept {
+  double v = p[n - 1];
+  for (int i = n - 2; i >= 0; --i) v = v * x + p[i];
+  return v;
+}
+
+}  // namespace
+
+int contact_function1(double const r[dim], double const q1[sym],
+                      double const q2[sym], double out[2]) noexcept {
+  if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) {  // coincident centres
+    out[0] = 0.0;
+    out[1] = 0.5;
+    return PW85_SUCCESS;
+  }
+  Scaled p;
+  if (int const status = rescale(r, q1, q2, &p); status != PW85_SUCCESS)
+    return status;
+
+  // Plain Newton–Raphson on f′(λ) = 0 from λ = ½: λ ← λ − f′(λ)/f″(λ), f′
+  // and f″ from seed ch. 4, eqs. (6) and (9), with no safeguard. Seed ch. 5
+  // explains why it is not robust: f varies sharply near λ = 0 or 1 when the
+  // ellipsoids differ in size or shape, and the steps overshoot, out of
+  // [0, 1] (already for two spheres of radii 1 and 3). An iterate outside
+  // [0, 1] is kept (f is a rational function defined wherever Q(λ) is
+  // positive definite) and may come back. The method fails when Q(λ) is not
+  // positive definite at an iterate, when f″(λ) = 0, when nr_max_iter steps
+  // do not converge, or when it converges to a root of f′ outside [0, 1]
+  // (inside, f′ has a single root, the maximiser). Each f(λ) with λ in
+  // [0, 1] is a lower bound of μ² (μ² = max f): on failure the best one met
+  // is returned, with PW85_ENOCONV; λ = ½ is always among them.
+  double lambda = 0.5;
+  double best_f = 0.0;
+  double best_lambda = 0.5;
+  for (int iter = 0; iter < nr_max_iter; ++iter) {
+    double f = 0.0;
+    double d[3];
+    if (!f1(lambda, p.r, p.q1, p.q2, &f, d)) break;
+    bool const inside = lambda >= 0.0 && lambda <= 1.0;
+    if (inside && (f > best_f || iter == 0)) {
+      best_f = f;
+      best_lambda = lambda;
+    }
+    double const step = d[1] / d[2];
+    if (!std::isfinite(step)) break;  // f″ = 0, or overflow
+    lambda -= step;
+    if (std::fabs(step) <= nr_step_tol) {
+      // Converged: μ² = f(λ) at the last iterate (seed ch. 4, eq. (4)).
+      if (!(lambda >= 0.0 && lambda <= 1.0)) break;
+      if (!f1(lambda, p.r, p.q1, p.q2, &f, nullptr)) break;
+      return finish(p, f, lambda, PW85_SUCCESS, out);
+    }
+  }
+  return finish(p, best_f, best_lambda, PW85_ENOCONV, out);
+}
+
+int contact_function2(double const r[dim], double const q1[sym],
+                      double const q2[sym], double out[2]) noexcept {
+  if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) {  // coincident centres
+    out[0] = 0.0;
+    out[1] = 0.5;
+    return PW85_SUCCESS;
+  }
+  Scaled p;
+  if (int const status = rescale(r, q1, q2, &p); status != PW85_SUCCESS)
+    return status;
+
+  double q3[sym];
+  double q4[sym];
+  for (int i = 0; i < sym; ++i) {
+    q3[i] = 2.0 * p.q1[i] - p.q2[i];    // Q(−1)
+    q4[i] = 0.5 * (p.q1[i] + p.q2[i]);  // Q(½)
+  }
+  double a[dim];
+  double b[dim + 1];
+  rT_adjQ_r_as_poly(p.r, p.q1, p.q2, q3, a);  // seed ch. 4, eqs. (12a)–(12c)
+  detQ_as_poly(p.q1, p.q2, q3, q4, b);        // seed ch. 4, eqs. (12d)–(12g)
+
+  // f′ = c/b², c of degree 6 (seed ch. 4, eqs. (13)–(14)).
+  double const c[7] = {
+      a[0] * b[0],                                                 // (15a)
+      2.0 * (a[1] - a[0]) * b[0],                                  // (15b)
+      -a[0] * (b[1] + b[2]) + 3.0 * b[0] * (a[2] - a[1]) + a[1] * b[1],  // (15c)
+      2.0 * (b[1] * (a[2] - a[1]) - a[0] * b[3]) - 4.0 * a[2] * b[0],  // (15d)
+      (a[0] - a[1]) * b[3] + (a[2] - a[1]) * b[2] - 3.0 * a[2] * b[1],  // (15e)
+      -2.0 * a[2] * b[2],                                          // (15f)
+      -a[2] * b[3],                                                // (15g)
+  };
+  if (!core::all_finite(c, 7)) return PW85_ERANGE;
+
+  // Bisection on c over [0, 1]: c(0) = a0·b0 > 0 > c(1) = −a(1)·b(1) in
+  // exact arithmetic, and c has one root there (seed ch. 4.2). The bracket
+  // halves until it is one ulp wide; the signs are those of the rounded c.
+  double lo = 0.0;
+  double hi = 1.0;
+  for (int iter = 0; iter < bisection_max_iter; ++iter) {
+    double const mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    double const c_mid = horner(c, mid);
+    if (c_mid > 0.0) {
+      lo = mid;
+    } else if (c_mid < 0.0) {
+      hi = mid;
+    } else {
+      lo = hi = mid;
+    }
+  }
+  double const lambda = 0.5 * (lo + hi);
+  // μ² = f(λ) = λ(1−λ)·a(λ)/b(λ), seed ch. 4, eq. (10).
+  double const a_lambda = horner(a, lambda);
+  double const b_lambda = horner(b, lambda);
+  double const mu2 = lambda * (1.0 - lambda) * a_lambda / b_lambda;
+  // The root lies strictly inside (0, 1), where a > 0 (adj Q(λ) is
+  // positive definite) and b > 0. When the rounded coefficients have no
+  // sign change of c inside (0, 1), bisection ends on 0 or 1, where
+  // f = 0 (and b(1) may have rounded to 0 or below: seed ch. 4.3): the
+  // method failed, and the only lower bound of μ² it knows is 0.
+  if (!(lambda > 0.0 && lambda < 1.0 && a_lambda > 0.0 && b_lambda > 0.0 &&
+        std::isfinite(mu2)))
+    return finish(p, 0.0, lambda, PW85_ENOCONV, out);
+  return finish(p, mu2, lambda, PW85_SUCCESS, out);
+}
+
+}  // namespace pw85::legacy::detail

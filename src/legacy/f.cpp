@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The two implementations of f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4).
+#include "legacy.hpp"
+
+namespace pw85::legacy::detail {
+
+namespace {
+
+namespace core = pw85::detail;
+
+double dot(double const x[dim], double const y[dim]) noexcept {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+// y = A·x for symmetric A.
+void sym_mul(double const a[sym], double const x[dim], double y[dim]) noexcept {
+  y[0] = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
+  y[1] = a[1] * x[0] + a[3] * x[1] + a[4] * x[2];
+  y[2] = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
+}
+
+// Q(λ) = (1−λ)·Q1 + λ·Q2 (seed ch. 4, eq. (2)).
+void combine(double lambda, double const q1[sym], double const q2[sym],
+             double q[sym]) noexcept {
+  double const mu = 1.0 - lambda;
+  for (int i = 0; i < sym; ++i) q[i] = mu * q1[i] + lambda * q2[i];
+}
+
+}  // namespace
+
+bool q_positive_definite(double lambda, double const q1[sym],
+                         double const q2[sym]) noexcept {
+  double q[sym];
+  double l[sym];
+  combine(lambda, q1, q2, q);
+  return core::cholesky_decomp(q, l);
+}
+
+bool f1(double lambda, double const r[dim], double const q1[sym],
+        double const q2[sym], double *f, double out[3]) noexcept {
+  double q[sym];
+  double l[sym];
+  combine(lambda, q1, q2, q);
+  if (!core::cholesky_decomp(q, l)) return false;  // seed ch. 4, eq. (3)
+  // rᵀ·s = rᵀ·Q⁻¹·r = |L⁻¹·r|², a sum of squares (no cancellation).
+  double y[dim];
+  core::forward_solve(l, r, y);
+  double const rs = dot(y, y);
+  double const w = lambda * (1.0 - lambda);
+  *f = w * rs;  // seed ch. 4, eq. (4)
+  if (out == nullptr) return true;
+
+  double q12[sym];
+  for (int i = 0; i < sym; ++i) q12[i] = q2[i] - q1[i];
+  double s[dim], u[dim], z[dim];
+  core::cholesky_solve(l, r, s);  // s = Q⁻¹·r
+  sym_mul(q12, s, u);             // u = Q12·s, seed ch. 4, eq. (5)
+  core::forward_solve(l, u, z);   // uᵀ·v = uᵀ·Q⁻¹·u = |L⁻¹·u|²
+  double const su = dot(s, u);
+  double const uv = dot(z, z);
+  out[0] = *f;
+  out[1] = (1.0 - 2.0 * lambda) * rs - w * su;  // seed ch. 4, eq. (6)
+  out[2] = -2.0 * rs - 2.0 * (1.0 - 2.0 * lambda) * su +
+           2.0 * w * uv;  // seed ch. 4, eq. (9)
+  return true;
+}
+
+double f2(double lambda, double const r[dim], double const q1[sym],
+          double const q2[sym]) noexcept {
+  double q3[sym];
+  double q4[sym];
+  for (int i = 0; i < sym; ++i) {
+    q3[i] = 2.0 * q1[i] - q2[i];    // Q(−1)
+    q4[i] = 0.5 * (q1[i] + q2[i]);  // Q(½)
+  }
+  double a[dim];
+  double b[dim + 1];
+  rT_adjQ_r_as_poly(r, q1, q2, q3, a);  // seed ch. 4, eqs. (12a)–(12c)
+  detQ_as_poly(q1, q2, q3, q4, b);      // seed ch. 4, eqs. (12d)–(12g)
+  double const a_lambda = (a[2] * lambda + a[1]) * lambda + a[0];  // (11a)
+  double const b_lambda =
+      ((b[3] * lambda + b[2]) * lambda + b[1]) * lambda + b[0];  // (11b)
+  return lambda * (1.0 - lambda) * a_lambda / b_lambda;  // seed ch. 4, (10)
+}
+
+}  // namespace pw85::legacy::detail

@@ -1,0 +1,330 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Python wrapper of the legacy API of pw85 (library libpw85_legacy).
+
+Earlier implementations of the function f and of the contact function,
+discarded for accuracy or robustness and kept for reference and for the
+comparisons of the documentation (seed, chapters 4 and 8.2). New code
+should call `pypw85.f` and `pypw85.contact_function`.
+
+Vectors, symmetric matrices, array-likes, preallocated outputs, exceptions
+and thread safety are as in `pypw85` (see its documentation).
+
+libpw85_legacy is found like libpw85, from the first place that works: the
+environment variable ``PW85_LEGACY_LIBRARY``, the path recorded by
+``meson install``, the dynamic loader's search for ``libpw85_legacy.so.2``.
+Importing this module raises `ImportError`, listing the places tried, when
+none works (for example when pw85 was configured with ``-Dlegacy=false``).
+"""
+
+import ctypes
+
+import numpy as np
+
+from . import (
+    DIM, EDOM, ENOTPOSDEF, SUCCESS, SYM, Error, _check_finite, _declare,
+    _load_library, _output, _paths, _real, _unaliased, _vector,
+)
+
+__all__ = [
+    "ENOCONV", "contact_function1", "contact_function2", "f1", "f2",
+]
+
+#: Status of `contact_function1` when Newton's method does not converge
+#: (PW85_ENOCONV of pw85_legacy.h).
+ENOCONV = 6
+
+_DOUBLE_P = ctypes.c_void_p
+
+_SYMBOLS = {
+    # name: (restype, argtypes), as declared in pw85_legacy.h.
+    "pw85_legacy__det_sym": (ctypes.c_double, [_DOUBLE_P]),
+    "pw85_legacy__xT_adjA_x": (ctypes.c_double, [_DOUBLE_P, _DOUBLE_P]),
+    "pw85_legacy__detQ_as_poly": (None, [_DOUBLE_P] * 5),
+    "pw85_legacy__rT_adjQ_r_as_poly": (None, [_DOUBLE_P] * 5),
+    "pw85_legacy_f1": (ctypes.c_double, [ctypes.c_double] + [_DOUBLE_P] * 4),
+    "pw85_legacy_f2": (ctypes.c_double, [ctypes.c_double] + [_DOUBLE_P] * 4),
+    "pw85_legacy_contact_function1": (ctypes.c_int, [_DOUBLE_P] * 4),
+    "pw85_legacy_contact_function2": (ctypes.c_int, [_DOUBLE_P] * 4),
+}
+
+_lib, _library_path = _load_library(
+    "pw85_legacy", "PW85_LEGACY_LIBRARY",
+    getattr(_paths, "LIBPW85_LEGACY", None), _SYMBOLS)
+_declare(_lib, _SYMBOLS)
+
+_c_det_sym = _lib.pw85_legacy__det_sym
+_c_xT_adjA_x = _lib.pw85_legacy__xT_adjA_x
+_c_detQ_as_poly = _lib.pw85_legacy__detQ_as_poly
+_c_rT_adjQ_r_as_poly = _lib.pw85_legacy__rT_adjQ_r_as_poly
+_c_f1 = _lib.pw85_legacy_f1
+_c_f2 = _lib.pw85_legacy_f2
+_c_contact_function1 = _lib.pw85_legacy_contact_function1
+_c_contact_function2 = _lib.pw85_legacy_contact_function2
+
+
+def _det_sym(a):
+    """Return the determinant of a symmetric 3×3 matrix A.
+
+    Internal (exposed for testing); may change without notice.
+
+    Parameters
+    ----------
+    a : array_like, shape (6,)
+        The symmetric matrix A (upper triangle, row by row).
+
+    Returns
+    -------
+    float
+        det(A), by cofactor expansion (the cube of a's unit).
+
+    Raises
+    ------
+    ValueError, TypeError
+        If a has the wrong shape or type.
+    Error
+        `pypw85.EDOM` if an entry of a is not finite.
+    """
+    a = _vector("a", a, SYM)
+    _check_finite("_det_sym", a=a)
+    return _c_det_sym(a.ctypes.data)
+
+
+def _xT_adjA_x(x, a):
+    """Return the product xᵀ·adj(A)·x.
+
+    adj(A) is the adjugate of A, the transpose of its cofactor matrix
+    (A·adj(A) = det(A)·I). Internal (exposed for testing); may change
+    without notice.
+
+    Parameters
+    ----------
+    x : array_like, shape (3,)
+        The column vector x.
+    a : array_like, shape (6,)
+        The symmetric matrix A (upper triangle, row by row).
+
+    Returns
+    -------
+    float
+        xᵀ·adj(A)·x.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `pypw85.EDOM` if an input is not finite.
+    """
+    x = _vector("x", x, DIM)
+    a = _vector("a", a, SYM)
+    _check_finite("_xT_adjA_x", x=x, a=a)
+    return _c_xT_adjA_x(x.ctypes.data, a.ctypes.data)
+
+
+def _detQ_as_poly(q1, q2, q3=None, q4=None, b=None):
+    """Compute the coefficients of λ ↦ det[(1−λ)·Q1 + λ·Q2].
+
+    det[(1−λ)·Q1 + λ·Q2] = b0 + b1·λ + b2·λ² + b3·λ³ (seed, chapter 4.2,
+    eqs. (12d)-(12g)). Internal (exposed for testing); may change without
+    notice.
+
+    Parameters
+    ----------
+    q1, q2 : array_like, shape (6,)
+        The symmetric matrices Q1 and Q2 (upper triangle, row by row).
+    q3 : array_like, shape (6,), optional
+        2·Q1 − Q2 (``q3[i] = 2*q1[i] - q2[i]``), computed if None. Not
+        checked: a q3 that is not 2·Q1 − Q2 gives wrong coefficients.
+    q4 : array_like, shape (6,), optional
+        (Q1 + Q2)/2 (``q4[i] = 0.5*(q1[i] + q2[i])``), computed if None.
+        Not checked either.
+    b : numpy.ndarray, shape (4,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    b : numpy.ndarray, shape (4,)
+        The coefficients in increasing order: ``b[i] = bi``.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `pypw85.EDOM` if an input is not finite (b untouched).
+    """
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    q3 = 2.0 * q1 - q2 if q3 is None else _vector("q3", q3, SYM)
+    q4 = 0.5 * (q1 + q2) if q4 is None else _vector("q4", q4, SYM)
+    b = _output("b", b, DIM + 1)
+    q1, q2, q3, q4 = _unaliased(b, q1, q2, q3, q4)
+    _check_finite("_detQ_as_poly", q1=q1, q2=q2, q3=q3, q4=q4)
+    _c_detQ_as_poly(q1.ctypes.data, q2.ctypes.data, q3.ctypes.data,
+                    q4.ctypes.data, b.ctypes.data)
+    return b
+
+
+def _rT_adjQ_r_as_poly(r, q1, q2, q3=None, a=None):
+    """Compute the coefficients of λ ↦ rᵀ·adj[(1−λ)·Q1 + λ·Q2]·r.
+
+    rᵀ·adj[(1−λ)·Q1 + λ·Q2]·r = a0 + a1·λ + a2·λ² (seed, chapter 4.2,
+    eqs. (12a)-(12c)). Internal (exposed for testing); may change without
+    notice.
+
+    Parameters
+    ----------
+    r : array_like, shape (3,)
+        The vector r.
+    q1, q2 : array_like, shape (6,)
+        The symmetric matrices Q1 and Q2 (upper triangle, row by row).
+    q3 : array_like, shape (6,), optional
+        2·Q1 − Q2 (``q3[i] = 2*q1[i] - q2[i]``), computed if None. Not
+        checked: a q3 that is not 2·Q1 − Q2 gives wrong coefficients.
+    a : numpy.ndarray, shape (3,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    a : numpy.ndarray, shape (3,)
+        The coefficients in increasing order: ``a[i] = ai``.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `pypw85.EDOM` if an input is not finite (a untouched).
+    """
+    r = _vector("r", r, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    q3 = 2.0 * q1 - q2 if q3 is None else _vector("q3", q3, SYM)
+    a = _output("a", a, DIM)
+    r, q1, q2, q3 = _unaliased(a, r, q1, q2, q3)
+    _check_finite("_rT_adjQ_r_as_poly", r=r, q1=q1, q2=q2, q3=q3)
+    _c_rT_adjQ_r_as_poly(r.ctypes.data, q1.ctypes.data, q2.ctypes.data,
+                         q3.ctypes.data, a.ctypes.data)
+    return a
+
+
+def _f(where, c_function, size, lambda_, r12, q1, q2, out):
+    """Call pw85_legacy_f1 or _f2 (out: None or `size` doubles)."""
+    lambda_ = _real("lambda_", lambda_)
+    r12 = _vector("r12", r12, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    if out is None:
+        out_p = None
+    else:
+        out = _output("out", out, size)
+        r12, q1, q2 = _unaliased(out, r12, q1, q2)
+        out_p = out.ctypes.data
+    value = c_function(lambda_, r12.ctypes.data, q1.ctypes.data,
+                       q2.ctypes.data, out_p)
+    if value != value:
+        _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
+        raise Error(ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
+                    "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
+    return value
+
+
+def f1(lambda_, r12, q1, q2, out=None):
+    """Return f(λ) = λ(1−λ)·r12ᵀ·Q⁻¹·r12, Q = (1−λ)·Q1 + λ·Q2, and f′, f″.
+
+    Implementation #1 (seed, chapter 4.1): a Cholesky factorisation of Q,
+    plain double arithmetic (|r12|² and the entries of Q1, Q2 between about
+    1e-300 and 1e300).
+
+    Parameters
+    ----------
+    lambda_ : float
+        λ, normally in [0, 1].
+    r12 : array_like, shape (3,)
+        The centre-to-centre vector c2 − c1.
+    q1, q2 : array_like, shape (6,)
+        The quadratic forms of the two ellipsoids, symmetric positive
+        definite (upper triangle, row by row), in the square of r12's unit.
+    out : numpy.ndarray, shape (3,), float64, optional
+        If given, modified in place: ``out[0] = f(λ)``, ``out[1] = f′(λ)``,
+        ``out[2] = f″(λ)`` (NaN on error).
+
+    Returns
+    -------
+    float
+        f(λ), dimensionless.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `pypw85.EDOM` if an input is not finite; `pypw85.ENOTPOSDEF` if Q
+        is not positive definite.
+    """
+    return _f("f1", _c_f1, 3, lambda_, r12, q1, q2, out)
+
+
+def f2(lambda_, r12, q1, q2, out=None):
+    """Alternative implementation of `f1`: f(λ) as a rational fraction.
+
+    Implementation #2 (seed, chapter 4.2): f(λ) = λ(1−λ)·a(λ)/b(λ), with
+    a(λ) = r12ᵀ·adj[Q]·r12 and b(λ) = det Q. Less accurate than `f1`. See
+    `f1` for lambda_, r12, q1, q2 and the exceptions.
+
+    Parameters
+    ----------
+    out : numpy.ndarray, shape (1,), float64, optional
+        If given, modified in place: ``out[0] = f(λ)`` (NaN on error).
+
+    Returns
+    -------
+    float
+        f(λ), dimensionless.
+    """
+    return _f("f2", _c_f2, 1, lambda_, r12, q1, q2, out)
+
+
+def _contact(where, c_function, r12, q1, q2, out):
+    r12 = _vector("r12", r12, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    out = _output("out", out, 2)
+    r12, q1, q2 = _unaliased(out, r12, q1, q2)
+    status = c_function(r12.ctypes.data, q1.ctypes.data, q2.ctypes.data,
+                        out.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, where,
+                    "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
+    return out
+
+
+def contact_function1(r12, q1, q2, out=None):
+    """Return μ² and λ by Newton-Raphson iterations on f′(λ) = 0.
+
+    Starts from λ = ½ with the f′ and f″ of `f1`. Not robust: prefer
+    `pypw85.contact_function`. Arguments, result and exceptions as
+    `pypw85.contact_function`, plus one more failure.
+
+    Raises
+    ------
+    Error
+        As `pypw85.contact_function`, and `ENOCONV` when Newton's method
+        fails (a step leaves [0, 1], f″(λ) ≥ 0, or no convergence after 50
+        steps): out then holds the largest f(λ) met, a lower bound of μ²,
+        and its λ.
+    """
+    return _contact("contact_function1", _c_contact_function1, r12, q1, q2,
+                    out)
+
+
+def contact_function2(r12, q1, q2, out=None):
+    """Return μ² and λ by bisection on the numerator of f′ (a polynomial).
+
+    f′(λ) = c(λ)/b(λ)², c of degree 6 (seed, chapter 4.2, eqs. (13)-(15));
+    μ² = f(λ) as a rational fraction. Always terminates, but inaccurate for
+    very flat or slender ellipsoids: prefer `pypw85.contact_function`.
+    Arguments, result and exceptions as `pypw85.contact_function`.
+    """
+    return _contact("contact_function2", _c_contact_function2, r12, q1, q2,
+                    out)
