@@ -266,38 +266,55 @@ int certify_with_brent(Problem &p, double lambda, double *estimate,
   return PW85_SUCCESS;
 }
 
-// The last step, in compensated arithmetic: f, P1 and P2 at λ from the
-// refined solution (linalg.hpp, accurate_terms), one Newton step on the
-// accurate ω, and μ² = f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum,
-// with f′ = −g = −√P1·ω·(μ1 + μ2). The correction is of order (cond·ε)²
-// relative once the plain Newton steps have converged; should it not be
-// negligible, f is evaluated afresh at the new λ.
+// The last steps, in compensated arithmetic: f, P1 and P2 at λ from the
+// refined solution (linalg.hpp, accurate_terms), and Newton steps on the
+// accurate ω (slope: the plain ω′ first, then secants), at most
+// accurate_iter of them, until the step is below the resolution of the
+// plain ω. μ² is then f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum,
+// with f′ = −g = −√P1·ω·(μ1 + μ2): a correction of order (cond·ε)²
+// relative. Every accurate f is a lower bound of μ² (to rounding): the
+// largest is kept.
+constexpr int accurate_iter = 3;
+
 PW85_FMA_CLONES
 bool finish(Problem const &p, double domega, double *lambda,
             double *mu2) noexcept {
-  Accurate a;
-  if (!accurate_terms(*lambda, p.r, p.q1, p.q2, true, &a)) return false;
-  double const l0 = *lambda;
-  double const rho = std::sqrt(a.p2 / a.p1);
-  double const omega = l0 * rho - (1.0 - l0);
-  double const step = omega / domega;
-  *mu2 = a.f;
-  if (!(domega > 0.0) || !(std::fabs(step) <= PW85_LAMBDA_ATOL) ||
-      !(l0 - step > 0.0 && l0 - step < 1.0))
-    return true;
-  *lambda = l0 - step;
-  double const root_p1 = std::sqrt(a.p1);
-  double const sum_mu = (1.0 - l0) * root_p1 + l0 * std::sqrt(a.p2);
-  double const correction = 0.5 * root_p1 * omega * sum_mu * step;
-  if (correction <= 1e-10 * a.f) {
-    *mu2 = a.f + correction;
-  } else {
-    Accurate b;
-    if (accurate_terms(*lambda, p.r, p.q1, p.q2, false, &b) && b.f > a.f)
-      *mu2 = b.f;
-    else
-      *lambda = l0;
+  double best = 0.0, best_lambda = *lambda;
+  double prev_lambda = 0.0, prev_omega = 0.0;
+  bool found = false;
+  for (int k = 0; k < accurate_iter; ++k) {
+    double const l0 = *lambda;
+    Accurate a;
+    if (!accurate_terms(l0, p.r, p.q1, p.q2, true, &a)) break;
+    if (!found || a.f > best) best = a.f, best_lambda = l0;
+    found = true;
+    double const rho = std::sqrt(a.p2 / a.p1);
+    double const omega = l0 * rho - (1.0 - l0);
+    if (k > 0 && l0 != prev_lambda) {
+      double const secant = (omega - prev_omega) / (l0 - prev_lambda);
+      if (secant > 0.0) domega = secant;
+    }
+    if (!(domega > 0.0)) break;
+    double const step = omega / domega;
+    double const next = l0 - step;
+    if (!(next > 0.0 && next < 1.0)) break;
+    if (std::fabs(step) <= newton_noise * std::fmin(l0, 1.0 - l0)) {
+      double const root_p1 = std::sqrt(a.p1);
+      double const sum_mu = (1.0 - l0) * root_p1 + l0 * std::sqrt(a.p2);
+      double const correction = 0.5 * root_p1 * omega * sum_mu * step;
+      if (correction >= 0.0 && correction <= 1e-10 * a.f) {
+        *lambda = next;
+        *mu2 = std::fmax(a.f + correction, best);
+        return true;
+      }
+    }
+    prev_lambda = l0;
+    prev_omega = omega;
+    *lambda = next;
   }
+  if (!found) return false;
+  *lambda = best_lambda;
+  *mu2 = best;
   return true;
 }
 
@@ -321,7 +338,7 @@ int solve(Problem &p, double out[2]) noexcept {
     if (!converged) lambda = estimate;
   }
   double mu2 = 0.0;
-  if (!finish(p, converged ? domega : 0.0, &lambda, &mu2)) {
+  if (!finish(p, domega, &lambda, &mu2)) {
     // Q(λ) failed to factorise in double-double (rounding only): fall back
     // to Brent's estimate in plain arithmetic.
     lambda = estimate;

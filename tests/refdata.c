@@ -101,3 +101,54 @@ void ref_data_load_or_fail(RefData *d) {
   g_assert_cmpuint(d->num_spheroids, >, 0);
   g_assert_cmpuint(d->num_directions, >, 0);
 }
+
+const char *general_pairs_path(void) { return g_getenv("PW85_GENERAL_PAIRS"); }
+
+gboolean general_pairs_load(const char *path, GeneralPairs *g,
+                            GError **error) {
+  memset(g, 0, sizeof *g);
+  if (path == NULL) {
+    g_set_error(error, REF_DATA_ERROR, 3, "PW85_GENERAL_PAIRS is not set");
+    return FALSE;
+  }
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
+    return FALSE;
+  }
+  hsize_t dims[2];
+  gboolean ok =
+      read_dataset(file, "/MU2", 1, dims, &g->MU2, error) &&
+      (g->count = dims[0], TRUE) &&
+      read_dataset(file, "/LAMBDA", 1, dims, &g->LAMBDA, error) &&
+      expect(dims[0] == g->count, "LAMBDA", error) &&
+      read_dataset(file, "/MU2_MINUS_1", 1, dims, &g->MU2_MINUS_1, error) &&
+      expect(dims[0] == g->count, "MU2_MINUS_1", error) &&
+      read_dataset(file, "/r12", 2, dims, &g->r12, error) &&
+      expect(dims[0] == g->count && dims[1] == 3, "r12", error) &&
+      read_dataset(file, "/q1", 2, dims, &g->q1, error) &&
+      expect(dims[0] == g->count && dims[1] == 6, "q1", error) &&
+      read_dataset(file, "/q2", 2, dims, &g->q2, error) &&
+      expect(dims[0] == g->count && dims[1] == 6, "q2", error);
+  H5Fclose(file);
+  if (!ok) general_pairs_clear(g);
+  return ok;
+}
+
+void general_pairs_clear(GeneralPairs *g) {
+  g_free(g->r12);
+  g_free(g->q1);
+  g_free(g->q2);
+  g_free(g->MU2);
+  g_free(g->LAMBDA);
+  g_free(g->MU2_MINUS_1);
+  memset(g, 0, sizeof *g);
+}
+
+void general_pairs_load_or_fail(GeneralPairs *g) {
+  GError *error = NULL;
+  if (!general_pairs_load(general_pairs_path(), g, &error))
+    g_error("general pairs: %s", error->message);
+  g_assert_cmpuint(g->count, >, 0);
+}

@@ -33,6 +33,23 @@ void ref_data_clear(RefData *data);
 /* Like ref_data_load(ref_data_path(), ...) but aborts the test on failure. */
 void ref_data_load_or_fail(RefData *data);
 
+/* The general pairs of data/pw85_general_pairs.h5 (data/README.md):
+ * case n is r12[n][3], q1[n][6], q2[n][6] with references MU2[n], LAMBDA[n]
+ * and MU2_MINUS_1[n] (μ² − 1, correctly rounded). */
+typedef struct {
+  size_t count;
+  double *r12, *q1, *q2, *MU2, *LAMBDA, *MU2_MINUS_1;
+} GeneralPairs;
+
+/* The path of the general pairs: the environment variable
+ * PW85_GENERAL_PAIRS, which meson sets. NULL when unset. */
+const char *general_pairs_path(void);
+
+gboolean general_pairs_load(const char *path, GeneralPairs *pairs,
+                            GError **error);
+void general_pairs_clear(GeneralPairs *pairs);
+void general_pairs_load_or_fail(GeneralPairs *pairs);
+
 /* Index of F[i][j][k][l] and of MU2[i][j][k][m] / LAMBDA[i][j][k][m]. */
 static inline size_t ref_data_f_index(RefData const *d, size_t i, size_t j,
                                       size_t k, size_t l) {

@@ -123,6 +123,81 @@ static void test_scale_invariance(void) {
   }
 }
 
+/* Scaling by exact powers of two changes nothing at all: the library
+ * rescales by powers of two itself. */
+static void test_scale_power_of_two(void) {
+  double ref[2];
+  int ref_overlap = 0;
+  g_assert_cmpint(call(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_overlap(r_ok, q1_ok, q2_ok, &ref_overlap), ==,
+                  PW85_SUCCESS);
+  int const exps[] = {-500, -250, -1, 1, 250, 500};
+  for (size_t k = 0; k < G_N_ELEMENTS(exps); k++) {
+    double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
+    for (int i = 0; i < PW85_DIM; i++) r[i] = ldexp(r_ok[i], exps[k]);
+    for (int i = 0; i < PW85_SYM; i++) {
+      q1[i] = ldexp(q1_ok[i], 2 * exps[k]);
+      q2[i] = ldexp(q2_ok[i], 2 * exps[k]);
+    }
+    g_assert_cmpint(call(r, q1, q2, out), ==, PW85_SUCCESS);
+    g_assert_cmpfloat(out[0], ==, ref[0]);
+    g_assert_cmpfloat(out[1], ==, ref[1]);
+    int result = 42;
+    g_assert_cmpint(pw85_overlap(r, q1, q2, &result), ==, PW85_SUCCESS);
+    g_assert_cmpint(result, ==, ref_overlap);
+  }
+}
+
+/* pw85_overlap takes the contract of pw85_contact_function. */
+static void test_overlap_contract(void) {
+  int result = 42;
+  g_assert_cmpint(pw85_overlap(NULL, q1_ok, q2_ok, &result), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_overlap(r_ok, NULL, q2_ok, &result), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_overlap(r_ok, q1_ok, NULL, &result), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_overlap(r_ok, q1_ok, q2_ok, NULL), ==, PW85_EFAULT);
+  double bad[PW85_SYM] = {100., 0., 0., 100., 0., NAN};
+  g_assert_cmpint(pw85_overlap(r_ok, bad, q2_ok, &result), ==, PW85_EDOM);
+  double const indefinite[PW85_SYM] = {1., 2., 0., 1., 0., 1.};
+  g_assert_cmpint(pw85_overlap(r_ok, q1_ok, indefinite, &result), ==,
+                  PW85_ENOTPOSDEF);
+  g_assert_cmpint(result, ==, 42); /* untouched on error */
+  double const zero[PW85_DIM] = {0., 0., 0.};
+  g_assert_cmpint(pw85_overlap(zero, q1_ok, q2_ok, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, -1);
+  /* The tutorial's pair is disjoint (μ² = 3.36). */
+  g_assert_cmpint(pw85_overlap(r_ok, q1_ok, q2_ok, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 1);
+  /* Two unit spheres: μ² = |r|²/4. Exactly tangent at |r| = 2; overlapping
+   * and disjoint by one ulp of |r| either side. */
+  double const unit[PW85_SYM] = {1., 0., 0., 1., 0., 1.};
+  double const tangent[PW85_DIM] = {2., 0., 0.};
+  double const inside[PW85_DIM] = {nextafter(2., 0.), 0., 0.};
+  double const outside[PW85_DIM] = {0., 0., nextafter(2., 3.)};
+  g_assert_cmpint(pw85_overlap(tangent, unit, unit, &result), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 0);
+  /* |μ² − 1| ≈ 2.2e-16 and 4.4e-16: within 4 ulps, still "tangent". */
+  g_assert_cmpint(pw85_overlap(inside, unit, unit, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 0);
+  g_assert_cmpint(pw85_overlap(outside, unit, unit, &result), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 0);
+  /* Beyond 4 ulps: 1 ± 1e-14 in μ² (45 ulps). */
+  double const near_in[PW85_DIM] = {2. * sqrt(1. - 1e-14), 0., 0.};
+  double const near_out[PW85_DIM] = {2. * sqrt(1. + 1e-14), 0., 0.};
+  g_assert_cmpint(pw85_overlap(near_in, unit, unit, &result), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(result, ==, -1);
+  g_assert_cmpint(pw85_overlap(near_out, unit, unit, &result), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 1);
+  /* μ² beyond DBL_MAX: disjoint. */
+  double const far[PW85_DIM] = {1e200, 0., 0.};
+  double const tiny[PW85_SYM] = {1e-200, 0., 0., 1e-200, 0., 1e-200};
+  g_assert_cmpint(pw85_overlap(far, tiny, tiny, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 1);
+}
+
 static void axis_spheroid(double a, double c, int axis, double q[PW85_SYM]) {
   double n[PW85_DIM] = {0., 0., 0.};
   n[axis] = 1.;
@@ -285,6 +360,9 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/contact_function/contract/overflow", test_overflow);
   g_test_add_func("/pw85/contact_function/contract/wide-range",
                   test_wide_range);
+  g_test_add_func("/pw85/contact_function/contract/scale-power-of-two",
+                  test_scale_power_of_two);
+  g_test_add_func("/pw85/overlap/contract", test_overlap_contract);
   g_test_add_func("/pw85/f_neg/contract", test_f_neg_contract);
   g_test_add_func("/pw85/strerror", test_strerror);
   g_test_add_func("/pw85/gsl-handler/detects", test_gsl_handler_detects);

@@ -254,6 +254,35 @@ static void test_contact_function(void) {
   worst_report(&wseed_df, "seed ch. 6: |f'| / |f''|", TOL_SEED_DF);
 }
 
+/* pw85_overlap against MU2 on every record: it never contradicts μ², and
+ * reports tangency (0) only within 4 ulps of 1. */
+static void test_overlap(void) {
+  size_t count = 0, overlapping = 0;
+  for (size_t i = 0; i < data.num_spheroids; i++)
+    for (size_t j = 0; j < data.num_spheroids; j++)
+      for (size_t k = 0; k < data.num_directions; k++)
+        for (size_t m = 0; m < data.num_distances; m++, count++) {
+          size_t const n = ref_data_mu2_index(&data, i, j, k, m);
+          double r[PW85_DIM];
+          for (int c = 0; c < PW85_DIM; c++)
+            r[c] = data.distances[m] * direction(k)[c];
+          int result = 42;
+          g_assert_cmpint(pw85_overlap(r, spheroid(i), spheroid(j), &result),
+                          ==, PW85_SUCCESS);
+          double const mu2 = data.MU2[n];
+          int const expected =
+              fabs(mu2 - 1.) <= 4. * DBL_EPSILON ? 0 : (mu2 < 1. ? -1 : 1);
+          if (result != expected)
+            g_error("record %zu: pw85_overlap gives %d, MU2 = %.17g", n,
+                    result, mu2);
+          overlapping += result < 0;
+        }
+  g_test_message("pw85_overlap: %zu records, %zu overlapping, none "
+                 "contradicting MU2",
+                 count, overlapping);
+  g_assert_cmpuint(count, >, 0);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -262,6 +291,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/ref_data/f_neg", test_f_neg);
   g_test_add_func("/pw85/ref_data/residual", test_residual);
   g_test_add_func("/pw85/ref_data/contact_function", test_contact_function);
+  g_test_add_func("/pw85/ref_data/overlap", test_overlap);
   int const status = g_test_run();
   ref_data_clear(&data);
   return status;

@@ -244,13 +244,11 @@ void run(char const *title, std::vector<Case> const &cases, int passes,
     }
     return pw85_f_neg(0.5, params);
   });
-#ifdef PW85_BENCH_OVERLAP
   double const t_ov = time_ns(cases, passes, reps, [](Case const &c) {
     int result = 0;
     pw85_overlap(c.r, c.q1, c.q2, &result);
     return double(result);
   });
-#endif
 
   // Accuracy and evaluation counts (untimed).
   double err_seed = 0., err_cf = 0.;
@@ -275,9 +273,7 @@ void run(char const *title, std::vector<Case> const &cases, int passes,
               t_seed, "1.00", ev_seed, err_seed);
   std::printf("  %-28s %9.1f %9.2f %12.2f %14.3g\n", "pw85_contact_function",
               t_cf, t_seed / t_cf, ev_cf, err_cf);
-#ifdef PW85_BENCH_OVERLAP
   std::printf("  %-28s %9.1f %9.2f\n", "pw85_overlap", t_ov, t_seed / t_ov);
-#endif
   std::printf("  %-28s %9.1f %9.2f\n", "pw85_f_neg (one f)", t_f,
               t_seed / t_f);
 }
