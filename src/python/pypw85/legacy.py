@@ -18,10 +18,8 @@ none works (for example when pw85 was configured with ``-Dlegacy=false``).
 
 import ctypes
 
-import numpy as np
-
 from . import (
-    DIM, EDOM, ENOTPOSDEF, SUCCESS, SYM, Error, _check_finite, _declare,
+    DIM, ENOTPOSDEF, SUCCESS, SYM, Error, _check_finite, _declare,
     _load_library, _output, _paths, _real, _unaliased, _vector,
 )
 
