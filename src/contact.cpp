@@ -215,7 +215,7 @@ bool newton_on_omega(Problem const &p, int n, double *lambda,
 
 // Brent's method on −f (ch. 5), GSL's gsl_min_fminimizer_brent, on a
 // bracket around λ verified to enclose the maximum: [λ − δ, λ + δ] with
-// δ = PW85_LAMBDA_ATOL, widened ×16 while rounding noise in f (up to
+// δ = 0.49·PW85_LAMBDA_ATOL, widened ×16 while rounding noise in f (up to
 // cond(Q)·ε) defeats the check, up to [0, 1] where f(0) = f(1) = 0.
 // Iterates to PW85_LAMBDA_ATOL or PW85_MAX_ITER. Writes Brent's estimate
 // and final bracket; returns PW85_SUCCESS or PW85_ENOMEM.
@@ -224,7 +224,9 @@ int certify_with_brent(Problem &p, double lambda, double *estimate,
   double fm = brent_objective(lambda, &p);
   double a = 0.0, b = 1.0, fa = 0.0, fb = 0.0;
   bool enclosed = false;
-  for (double delta = PW85_LAMBDA_ATOL; !enclosed && delta < 0.5;
+  // Half-width 0.49·PW85_LAMBDA_ATOL first: when that bracket is verified,
+  // it already meets Brent's stopping test and no iteration is needed.
+  for (double delta = 0.49 * PW85_LAMBDA_ATOL; !enclosed && delta < 0.5;
        delta *= 16.0) {
     a = lambda - delta;
     b = lambda + delta;
@@ -269,12 +271,16 @@ int certify_with_brent(Problem &p, double lambda, double *estimate,
 // The last steps, in compensated arithmetic: f, P1 and P2 at λ from the
 // refined solution (linalg.hpp, accurate_terms), and Newton steps on the
 // accurate ω (slope: the plain ω′ first, then secants), at most
-// accurate_iter of them, until the step is below the resolution of the
-// plain ω. μ² is then f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum,
+// accurate_iter of them, until the step is below accurate_accept. μ² is then f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum,
 // with f′ = −g = −√P1·ω·(μ1 + μ2): a correction of order (cond·ε)²
 // relative. Every accurate f is a lower bound of μ² (to rounding): the
 // largest is kept.
 constexpr int accurate_iter = 3;
+
+// A compensated Newton step of relative size h leaves λ off by O(h²) and the
+// quadratic model's μ² off by O(h³) relative: at h ≤ 1e-7 both are below
+// the rounding of a double, so the step is taken and the iteration stops.
+constexpr double accurate_accept = 1e-7;
 
 PW85_FMA_CLONES
 bool finish(Problem const &p, double domega, double *lambda,
@@ -298,7 +304,7 @@ bool finish(Problem const &p, double domega, double *lambda,
     double const step = omega / domega;
     double const next = l0 - step;
     if (!(next > 0.0 && next < 1.0)) break;
-    if (std::fabs(step) <= newton_noise * std::fmin(l0, 1.0 - l0)) {
+    if (std::fabs(step) <= accurate_accept * std::fmin(l0, 1.0 - l0)) {
       double const root_p1 = std::sqrt(a.p1);
       double const sum_mu = (1.0 - l0) * root_p1 + l0 * std::sqrt(a.p2);
       double const correction = 0.5 * root_p1 * omega * sum_mu * step;

@@ -66,6 +66,12 @@ void test_wrappers() {
   g_assert_cmpmem(out, sizeof out, out_c, sizeof out_c);
   g_assert_cmpint(pw85::contact_function(r12, q1, nullptr, out), ==,
                   PW85_EFAULT);
+
+  int result = 0, result_c = 0;
+  g_assert_cmpint(pw85::overlap(r12, q1, q2, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_overlap(r12, q1, q2, &result_c), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, result_c);
+  g_assert_cmpint(result, ==, out[0] < 1. ? -1 : 1);
 }
 
 }  // namespace

@@ -101,6 +101,13 @@ inline int contact_function(double const *r12, double const *q1,
   return pw85_contact_function(r12, q1, q2, out);
 }
 
+/** Certified overlap test (pw85_overlap()): *result = −1 overlap, +1
+ *  disjoint, 0 tangent within 4 ulps; returns a PW85_* status. */
+inline int overlap(double const *r12, double const *q1, double const *q2,
+                   int *result) noexcept {
+  return pw85_overlap(r12, q1, q2, result);
+}
+
 }  // namespace pw85
 
 #endif  // PW85_HPP
