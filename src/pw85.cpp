@@ -28,6 +28,8 @@ const char *pw85_strerror(int status) noexcept {
       return "the contact function exceeds the range of a double";
     case PW85_ENOMEM:
       return "the minimiser needs more working memory than reserved";
+    case PW85_ENOCONV:
+      return "the method did not converge";
     default:
       return "unknown pw85 status";
   }

@@ -75,6 +75,8 @@ extern "C" {
                                 range of a double */
 #define PW85_ENOMEM 5      /**< the minimiser needs more working memory than
                                 pw85 reserves (not expected with any GSL) */
+#define PW85_ENOCONV 6     /**< the method did not converge (legacy contact
+                                functions; out holds a lower bound of μ²) */
 /** @} */
 
 /**

@@ -101,7 +101,8 @@ int contact_function1(double const r[dim], double const q1[sym],
   // and f″ from seed ch. 4, eqs. (6) and (9), with no safeguard. Seed ch. 5
   // explains why it is not robust: f varies sharply near λ = 0 or 1 when the
   // ellipsoids differ in size or shape, and the steps overshoot, out of
-  // [0, 1] (already for two spheres of radii 1 and 3). An iterate outside
+  // [0, 1] (already for two spheres of radii 1 and 3, from where it comes
+  // back; with radii 1 and 3.25 it does not). An iterate outside
   // [0, 1] is kept (f is a rational function defined wherever Q(λ) is
   // positive definite) and may come back. The method fails when Q(λ) is not
   // positive definite at an iterate, when f″(λ) = 0, when nr_max_iter steps
@@ -156,15 +157,16 @@ int contact_function2(double const r[dim], double const q1[sym],
   rT_adjQ_r_as_poly(p.r, p.q1, p.q2, q3, a);  // seed ch. 4, eqs. (12a)–(12c)
   detQ_as_poly(p.q1, p.q2, q3, q4, b);        // seed ch. 4, eqs. (12d)–(12g)
 
-  // f′ = c/b², c of degree 6 (seed ch. 4, eqs. (13)–(14)).
+  // f′ = c/b², c of degree 6 (seed ch. 4, eqs. (13)–(14)); c[k] from
+  // seed ch. 4, eq. (15a) for k = 0 to eq. (15g) for k = 6.
   double const c[7] = {
-      a[0] * b[0],                                                 // (15a)
-      2.0 * (a[1] - a[0]) * b[0],                                  // (15b)
-      -a[0] * (b[1] + b[2]) + 3.0 * b[0] * (a[2] - a[1]) + a[1] * b[1],  // (15c)
-      2.0 * (b[1] * (a[2] - a[1]) - a[0] * b[3]) - 4.0 * a[2] * b[0],  // (15d)
-      (a[0] - a[1]) * b[3] + (a[2] - a[1]) * b[2] - 3.0 * a[2] * b[1],  // (15e)
-      -2.0 * a[2] * b[2],                                          // (15f)
-      -a[2] * b[3],                                                // (15g)
+      a[0] * b[0],
+      2.0 * (a[1] - a[0]) * b[0],
+      -a[0] * (b[1] + b[2]) + 3.0 * b[0] * (a[2] - a[1]) + a[1] * b[1],
+      2.0 * (b[1] * (a[2] - a[1]) - a[0] * b[3]) - 4.0 * a[2] * b[0],
+      (a[0] - a[1]) * b[3] + (a[2] - a[1]) * b[2] - 3.0 * a[2] * b[1],
+      -2.0 * a[2] * b[2],
+      -a[2] * b[3],
   };
   if (!core::all_finite(c, 7)) return PW85_ERANGE;
 

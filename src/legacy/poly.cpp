@@ -33,10 +33,10 @@ void detQ_as_poly(double const q1[sym], double const q2[sym],
   double const b_1 = det_sym(q2);
   double const b_m1 = det_sym(q3);
   double const b_half = det_sym(q4);
-  b[0] = b_0;                                                   // eq. (12d)
+  b[0] = b_0;                                                      // eq. (12d)
   b[1] = 8.0 * b_half / 3.0 - 2.0 * b_0 - 0.5 * b_1 - b_m1 / 6.0;  // (12e)
-  b[2] = 0.5 * (b_1 + b_m1) - b_0;                              // eq. (12f)
-  b[3] = -8.0 * b_half / 3.0 + 2.0 * b_0 + b_1 - b_m1 / 3.0;    // eq. (12g)
+  b[2] = 0.5 * (b_1 + b_m1) - b_0;                                 // eq. (12f)
+  b[3] = -8.0 * b_half / 3.0 + 2.0 * b_0 + b_1 - b_m1 / 3.0;       // eq. (12g)
 }
 
 void rT_adjQ_r_as_poly(double const r[dim], double const q1[sym],
@@ -45,8 +45,8 @@ void rT_adjQ_r_as_poly(double const r[dim], double const q1[sym],
   double const a_0 = xT_adjA_x(r, q1);
   double const a_1 = xT_adjA_x(r, q2);
   double const a_m1 = xT_adjA_x(r, q3);
-  a[0] = a_0;                      // seed ch. 4, eq. (12a)
-  a[1] = 0.5 * (a_1 - a_m1);       // seed ch. 4, eq. (12b)
+  a[0] = a_0;                       // seed ch. 4, eq. (12a)
+  a[1] = 0.5 * (a_1 - a_m1);        // seed ch. 4, eq. (12b)
   a[2] = 0.5 * (a_1 + a_m1) - a_0;  // seed ch. 4, eq. (12c)
 }
 

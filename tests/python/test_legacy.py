@@ -32,8 +32,8 @@ def q_of(lambda_, q1, q2):
 
 
 def test_enoconv_matches_header():
-    text = (SOURCE_ROOT / "include" / "pw85" / "pw85_legacy.h").read_text()
-    assert legacy.ENOCONV == int(
+    text = (SOURCE_ROOT / "include" / "pw85" / "pw85.h").read_text()
+    assert legacy.ENOCONV == pypw85.ENOCONV == int(
         re.search(r"#define PW85_ENOCONV (\d+)", text).group(1))
     message = str(pypw85.Error(legacy.ENOCONV))
     assert "converge" in message and "PW85_ENOCONV" in message

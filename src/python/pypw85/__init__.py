@@ -82,7 +82,7 @@ except ImportError:  # Not installed by meson (e.g. run from the sources).
 
 __all__ = [
     "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER",
-    "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM",
+    "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM", "ENOCONV",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
 ]
 
@@ -115,6 +115,8 @@ ERANGE = 4
 #: The minimiser needs more working memory than pw85 reserves (not
 #: expected).
 ENOMEM = 5
+#: An iterative method did not converge (the legacy contact functions).
+ENOCONV = 6
 
 _STATUS_NAMES = {
     SUCCESS: "PW85_SUCCESS",
@@ -123,11 +125,11 @@ _STATUS_NAMES = {
     ENOTPOSDEF: "PW85_ENOTPOSDEF",
     ERANGE: "PW85_ERANGE",
     ENOMEM: "PW85_ENOMEM",
-    6: "PW85_ENOCONV",
+    ENOCONV: "PW85_ENOCONV",
 }
 
-# Messages for the codes that pw85_strerror() of this libpw85 may not name
-# yet (PW85_ENOCONV is provisional, defined by pw85_legacy.h).
+# Messages for codes that the pw85_strerror() of an older libpw85.so.2 may
+# not name (PW85_ENOCONV appeared in 2.1.0).
 _FALLBACK_MESSAGES = {6: "an iterative method did not converge"}
 
 # The ABI this module is written for: the soname's major version

@@ -28,7 +28,7 @@ __all__ = [
 ]
 
 #: Status of `contact_function1` when Newton's method does not converge
-#: (PW85_ENOCONV of pw85_legacy.h).
+#: (PW85_ENOCONV of pw85.h).
 ENOCONV = 6
 
 _DOUBLE_P = ctypes.c_void_p
