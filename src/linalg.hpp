@@ -190,16 +190,21 @@ PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
 }
 
 // The compensated evaluation at λ (seed ch. 4, eq. (4), and ch. 5,
-// eqs. (1a)–(1b)): s = Q(λ)⁻¹·r refined once against the exact residual
-// ρ = r − Q(λ)·s, so that s has a relative error of order (cond·ε)²; then
-// f = λ(1−λ)·(r·s + s·ρ), whose error is second order in that of s since
-// r·s + s·ρ = rᵀQ⁻¹r − eᵀQe with e = Q⁻¹r − s; and Pᵢ = sᵀ·Qᵢ·s with exact
-// products. Returns false when Q(λ) does not factorise.
+// eqs. (1a)–(1b)). With s = Q(λ)⁻¹·r in plain double, e = Q⁻¹r − s its
+// error (relative size cond·ε) and the residual ρ = r − Q(λ)·s computed
+// with error-free transformations (Q(λ) kept as hi + lo):
+// r·s + s·ρ = rᵀQ⁻¹r − eᵀQe, so f = λ(1−λ)·(r·s + s·ρ) has an error of
+// order (cond·ε)², below an ulp while cond(Q) ≤ refine_cond. Beyond it, s is
+// refined once (s += Q⁻¹ρ) and ρ recomputed, squaring the error again.
+// Pᵢ = sᵀ·Qᵢ·s, first order in e, use the refined s, with exact products.
+// Returns false when Q(λ) does not factorise.
 struct Accurate {
   double f;
   double p1;
   double p2;
 };
+
+constexpr double refine_cond = 1e6;
 
 PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
                                 double const q1[sym], double const q2[sym],
@@ -211,15 +216,21 @@ PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
   double s[dim], rho[dim], ds[dim];
   ldl_solve(fac, r, s);
   exact_residual(hi, lo, r, s, rho);
-  ldl_solve(fac, rho, ds);
-  for (int i = 0; i < dim; ++i) s[i] += ds[i];
-  exact_residual(hi, lo, r, s, rho);
+  bool const refine = ldl_cond_bound(hi, fac) > refine_cond;
+  if (refine || with_p) {
+    ldl_solve(fac, rho, ds);
+    for (int i = 0; i < dim; ++i) ds[i] += s[i];  // the refined s
+  }
+  if (refine) {
+    for (int i = 0; i < dim; ++i) s[i] = ds[i];
+    exact_residual(hi, lo, r, s, rho);
+  }
   dd const rs = dd_add(dot_dd(r, s), dot(s, rho));     // rᵀQ⁻¹r − eᵀQe
   dd const w = dd_mul(two_sum(1.0, -lambda), lambda);  // λ(1−λ)
   out->f = dd_round(dd_mul(w, rs));
   if (with_p) {
-    out->p1 = quad_form_dd(q1, s);
-    out->p2 = quad_form_dd(q2, s);
+    out->p1 = quad_form_dd(q1, ds);
+    out->p2 = quad_form_dd(q2, ds);
   }
   return true;
 }
