@@ -14,7 +14,7 @@ step() { echo "== $*"; }
 
 step "configure, build and install into $prefix"
 "$meson" setup "$tmp/build" "$src" --prefix="$prefix" --libdir=lib \
-  --buildtype=release -Dtests=disabled -Dtutorial=false >"$tmp/setup.log" 2>&1 ||
+  --buildtype=release -Dtests=disabled -Dtutorial=false -Ddocs=disabled >"$tmp/setup.log" 2>&1 ||
   { cat "$tmp/setup.log"; exit 1; }
 "$meson" compile -C "$tmp/build" >"$tmp/compile.log" 2>&1 ||
   { cat "$tmp/compile.log"; exit 1; }

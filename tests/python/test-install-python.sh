@@ -20,7 +20,7 @@ step "configure, build and install into $prefix"
 # python.install_env=prefix: the package goes under the prefix, not into
 # the system's or a virtualenv's site-packages.
 "$meson" setup "$tmp/build" "$src" --prefix="$prefix" --libdir=lib \
-  --buildtype=release -Dtests=disabled -Dtutorial=false -Dpython=enabled \
+  --buildtype=release -Dtests=disabled -Dtutorial=false -Ddocs=disabled -Dpython=enabled \
   -Dpython.install_env=prefix >"$tmp/setup.log" 2>&1 ||
   { cat "$tmp/setup.log"; exit 1; }
 "$meson" compile -C "$tmp/build" >"$tmp/compile.log" 2>&1 ||
