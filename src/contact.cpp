@@ -116,11 +116,14 @@ int prepare(double const r[dim], double const q1[sym], double const q2[sym],
 
 // The sphere model's maximiser, exact for two spheres (Qᵢ = aᵢ²·I gives
 // λ = a1/(a1 + a2)): λ0 = 1/(1 + √(rᵀQ1⁻¹r / rᵀQ2⁻¹r)).
-double warm_start(Problem const &p) noexcept {
-  double const a1 = ldl_quad_inverse(p.f1, p.r);
-  double const a2 = ldl_quad_inverse(p.f2, p.r);
+// aᵢ = rᵀQᵢ⁻¹r.
+double warm_start(double a1, double a2) noexcept {
   double const lambda = 1.0 / (1.0 + std::sqrt(a1 / a2));
   return (lambda > 0.0 && lambda < 1.0) ? lambda : 0.5;
+}
+
+double warm_start(Problem const &p) noexcept {
+  return warm_start(ldl_quad_inverse(p.f1, p.r), ldl_quad_inverse(p.f2, p.r));
 }
 
 // −f(λ) for gsl_min, in plain double; finite for every λ, as Brent's method
@@ -435,8 +438,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
     *result = 1;
     return PW85_SUCCESS;
   }
-  double lambda = 1.0 / (1.0 + std::sqrt(a1 / a2));  // warm_start()
-  if (!(lambda > 0.0 && lambda < 1.0)) lambda = 0.5;
+  double lambda = warm_start(a1, a2);
   // At λ0, then (rarely needed) one Newton step on ω further.
   for (int k = 0; k < 2; ++k) {
     Terms t;

@@ -36,11 +36,11 @@ bool f(double lambda, double const r[dim], double const q1[sym],
 
 // f(λ) as f() does, but accurate to about one ulp for any Q(λ) whose
 // condition number is below ~1e10 (seed ch. 4, eq. (4), with compensated
-// arithmetic): Q(λ) is formed in double-double, s = Q⁻¹·r is refined once,
+// arithmetic; linalg.hpp, accurate_terms): Q(λ) is formed in double-double
 // and f = λ(1−λ)·(r·s + s·ρ) with ρ = r − Q·s computed with error-free
-// transformations. Since r·s + s·ρ = rᵀQ⁻¹r − eᵀQe, e = Q⁻¹r − s, the error
-// is second order in that of s. Returns false when Q(λ) is not positive
-// definite.
+// transformations, s refined once when cond(Q) > 1e6. Since
+// r·s + s·ρ = rᵀQ⁻¹r − eᵀQe, e = Q⁻¹r − s, the error is second order in
+// that of s. Returns false when Q(λ) is not positive definite.
 bool f_accurate(double lambda, double const r[dim], double const q1[sym],
                 double const q2[sym], double *f) noexcept;
 
