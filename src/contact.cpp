@@ -34,79 +34,20 @@ constexpr double newton_accept = 1e-5;
 // Newton steps on ω from the warm start, before Brent's method certifies.
 constexpr int warm_newton_iter = 8;
 
-// The exponent e with |x| = m·2^e, m in [0.5, 1), read from the bits (a
-// libm call per entry would cost more than the rest of the rescaling);
-// frexp for zero and subnormals. x finite.
-int exponent(double x) noexcept {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  int const biased = static_cast<int>((bits >> 52) & 0x7ff);
-  if (biased != 0) return biased - 1022;
-  int e = 0;
-  std::frexp(x, &e);
-  return e;
-}
-
-// x·2^k for every entry, exact unless the result leaves the normal range:
-// one multiplication when 2^k is a normal double, ldexp otherwise.
-void scale(double const *x, int n, int k, double *y) noexcept {
-  if (k >= -1022 && k <= 1023) {
-    std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
-    double factor;  // 2^k, built from its bits
-    std::memcpy(&factor, &bits, sizeof factor);
-    for (int i = 0; i < n; ++i) y[i] = x[i] * factor;
-  } else {
-    for (int i = 0; i < n; ++i) y[i] = std::ldexp(x[i], k);
-  }
-}
-
-double max_abs(double const *x, int n) noexcept {
-  double m = 0.0;
-  for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
-  return m;
-}
-
-// The problem as solved: r, Q1, Q2 rescaled by powers of two, with the
-// factorisations of Q1 and Q2. μ²(input) = μ²(problem)·2^shift.
-struct Problem {
-  double r[dim];
-  double q1[sym];
-  double q2[sym];
+// The problem as solved: the rescaled input, with the factorisations of
+// Q1 and Q2.
+struct Problem : Scaled {
   Ldl f1;
   Ldl f2;
-  int shift;
-  bool r_is_zero;
 };
 
-// μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2) with λ unchanged (ch. 3,
-// eq. (6)). Powers of two make the rescaling exact. r is brought to order
-// one; Q1 and Q2 so that their diagonals (which bound every entry of a
-// positive definite matrix) straddle one. Input: finite. Returns
-// PW85_SUCCESS, PW85_ENOTPOSDEF, or PW85_ERANGE when the diagonals span
-// more than the range of a double.
+// rescale(), then the factorisations of Q1 and Q2, which decide their
+// definiteness. Input: finite. Returns PW85_SUCCESS, PW85_ENOTPOSDEF, or
+// PW85_ERANGE when the diagonals span more than the range of a double.
 int prepare(double const r[dim], double const q1[sym], double const q2[sym],
             Problem *p) noexcept {
-  double const rmax = max_abs(r, dim);
-  p->r_is_zero = rmax == 0.0;
-  int const er = exponent(rmax);
-  int emin = exponent(q1[0]);
-  int emax = emin;
-  for (int i : diag_of) {
-    for (double d : {q1[i], q2[i]}) {
-      int const e = exponent(d);
-      emin = e < emin ? e : emin;
-      emax = e > emax ? e : emax;
-    }
-  }
-  int const eq = emin + (emax - emin) / 2;
-  scale(r, dim, -er, p->r);
-  scale(q1, sym, -eq, p->q1);
-  scale(q2, sym, -eq, p->q2);
-  bool finite = true;
-  for (int i = 0; i < sym; ++i)
-    finite = finite && std::isfinite(p->q1[i]) && std::isfinite(p->q2[i]);
-  p->shift = 2 * er - eq;
-  if (finite && ldl_decomp(p->q1, &p->f1) && ldl_decomp(p->q2, &p->f2))
+  if (rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
+      ldl_decomp(p->q2, &p->f2))
     return PW85_SUCCESS;
   // Not definite, or definite but out of range once rescaled together.
   if (!is_positive_definite(q1) || !is_positive_definite(q2))
@@ -286,10 +227,10 @@ int certify_with_brent(Problem &p, double lambda, double *estimate,
 // The last steps, in compensated arithmetic: f, P1 and P2 at λ from the
 // refined solution (linalg.hpp, accurate_terms), and Newton steps on the
 // accurate ω (slope: the plain ω′ first, then secants), at most
-// accurate_iter of them, until the step is below accurate_accept. μ² is then f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum,
-// with f′ = −g = −√P1·ω·(μ1 + μ2): a correction of order (cond·ε)²
-// relative. Every accurate f is a lower bound of μ² (to rounding): the
-// largest is kept.
+// accurate_iter of them, until the step is below accurate_accept. μ² is then
+// f(λ) + ½·f′(λ)·Δλ, the quadratic model's maximum, with f′ = −g = −√P1·ω·(μ1 +
+// μ2): a correction of order (cond·ε)² relative. Every accurate f is a lower
+// bound of μ² (to rounding): the largest is kept.
 constexpr int accurate_iter = 3;
 
 // A compensated Newton step of relative size h leaves λ off by O(h²) and the
@@ -395,8 +336,6 @@ int contact_function(double const r[dim], double const q1[sym],
   return PW85_SUCCESS;
 }
 
-constexpr double one_value = 1.0;
-
 int overlap(double const r[dim], double const q1[sym], double const q2[sym],
             int *result) noexcept {
   Problem p;
@@ -408,8 +347,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   }
   // μ² < 1 ⟺ μ²(problem) < 2^−shift (exact; 0 or +∞ out of range, which
   // decides the comparison correctly since μ²(problem) is finite and > 0).
-  double one = 0.0;  // 2^−shift
-  scale(&one_value, 1, -p.shift, &one);
+  double const one = std::ldexp(1.0, -p.shift);
   // Bounds valid at every λ (ch. 5, eqs. (1a)–(1b)): f(λ) ≤ μ² because μ²
   // is the maximum of f; μ² ≤ max(μ1², μ2²) because the point x0(λ) lies in
   // both ellipsoids scaled by max(μ1, μ2), which therefore meet. In plain

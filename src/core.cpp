@@ -4,6 +4,9 @@
 #include "core.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <initializer_list>
 
 #include "dd.hpp"
 #include "linalg.hpp"
@@ -18,14 +21,63 @@ unsigned long long evaluation_count() noexcept { return evaluations; }
 
 namespace {
 
-// The exponent e with x = m·2^e, m in [0.5, 1); 0 for x = 0.
+// The exponent e with |x| = m·2^e, m in [0.5, 1), read from the bits (a
+// libm call per entry would cost more than the rest of the rescaling);
+// frexp for zero and subnormals. x finite.
 int exponent(double x) noexcept {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  int const biased = static_cast<int>((bits >> 52) & 0x7ff);
+  if (biased != 0) return biased - 1022;
   int e = 0;
   std::frexp(x, &e);
   return e;
 }
 
+// x·2^k for every entry, exact unless the result leaves the normal range:
+// one multiplication when 2^k is a normal double, ldexp otherwise.
+void scale(double const *x, int n, int k, double *y) noexcept {
+  if (k >= -1022 && k <= 1023) {
+    std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
+    double factor;  // 2^k, built from its bits
+    std::memcpy(&factor, &bits, sizeof factor);
+    for (int i = 0; i < n; ++i) y[i] = x[i] * factor;
+  } else {
+    for (int i = 0; i < n; ++i) y[i] = std::ldexp(x[i], k);
+  }
+}
+
+double max_abs(double const *x, int n) noexcept {
+  double m = 0.0;
+  for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
+  return m;
+}
+
 }  // namespace
+
+bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
+             Scaled *s) noexcept {
+  double const rmax = max_abs(r, dim);
+  s->r_is_zero = rmax == 0.0;
+  int const er = exponent(rmax);
+  int emin = exponent(q1[0]);
+  int emax = emin;
+  for (int i : diag_of) {
+    for (double d : {q1[i], q2[i]}) {
+      int const e = exponent(d);
+      emin = e < emin ? e : emin;
+      emax = e > emax ? e : emax;
+    }
+  }
+  int const eq = emin + (emax - emin) / 2;
+  scale(r, dim, -er, s->r);
+  scale(q1, sym, -eq, s->q1);
+  scale(q2, sym, -eq, s->q2);
+  s->shift = 2 * er - eq;
+  for (int i = 0; i < sym; ++i)
+    if (!std::isfinite(s->q1[i]) || !std::isfinite(s->q2[i])) return false;
+  return true;
+}
 
 bool all_finite(double const *x, int n) noexcept {
   for (int i = 0; i < n; ++i)

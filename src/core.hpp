@@ -54,6 +54,24 @@ void residual(double lambda, double const r[dim], double const q1[sym],
 // its rows and columns. Entries must be finite.
 bool is_positive_definite(double const q[sym]) noexcept;
 
+// r, Q1, Q2 rescaled exactly by powers of two (seed ch. 3, eq. (6):
+// μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2), λ unchanged): r to order
+// one, Q1 and Q2 so that their diagonals (which bound every entry of a
+// positive definite matrix) straddle one. μ²(input) = μ²(scaled)·2^shift.
+struct Scaled {
+  double r[dim];
+  double q1[sym];
+  double q2[sym];
+  int shift;
+  bool r_is_zero;
+};
+
+// Fills *s from finite input. Returns false when an entry of the rescaled
+// forms is not finite: the diagonals of Q1 and Q2 span more than the range
+// of a double.
+bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
+             Scaled *s) noexcept;
+
 // PW85_EFAULT if a pointer is NULL, PW85_EDOM if an entry of r (3), q1 or
 // q2 (6 each) is not finite, PW85_SUCCESS otherwise.
 int check_pointers_and_finite(void const *r, void const *q1, void const *q2,

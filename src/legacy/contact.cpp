@@ -14,50 +14,15 @@ namespace {
 
 namespace core = pw85::detail;
 
-constexpr int diag_of[dim] = {0, 3, 5};
+using core::Scaled;
 
-// The exponent e with x = m·2^e, m in [0.5, 1); 0 for x = 0.
-int exponent(double x) noexcept {
-  int e = 0;
-  std::frexp(x, &e);
-  return e;
-}
-
-// r, Q1, Q2 rescaled exactly by powers of two: r to order one, Q1 and Q2
-// so that their diagonals straddle one. μ²(2^-er·r, 2^-eq·Q1, 2^-eq·Q2) =
-// 2^(eq − 2·er)·μ²(r, Q1, Q2), λ unchanged (seed ch. 3, eq. (6)).
-struct Scaled {
-  double r[dim];
-  double q1[sym];
-  double q2[sym];
-  int er;
-  int eq;
-};
-
-// Precondition: r ≠ 0, input checked. Returns PW85_ERANGE when the diagonals
-// of Q1 and Q2 together span more than the range of a double (the rescaled
-// forms are then no longer positive definite).
-int rescale(double const r[dim], double const q1[sym], double const q2[sym],
-            Scaled *p) noexcept {
-  double rmax = 0.0;
-  for (int i = 0; i < dim; ++i) rmax = std::fmax(rmax, std::fabs(r[i]));
-  p->er = exponent(rmax);
-  int emin = exponent(q1[0]);
-  int emax = emin;
-  for (int i : diag_of) {
-    for (double const *q : {q1, q2}) {
-      int const e = exponent(q[i]);
-      emin = e < emin ? e : emin;
-      emax = e > emax ? e : emax;
-    }
-  }
-  p->eq = emin + (emax - emin) / 2;
-  for (int i = 0; i < dim; ++i) p->r[i] = std::ldexp(r[i], -p->er);
-  for (int i = 0; i < sym; ++i) {
-    p->q1[i] = std::ldexp(q1[i], -p->eq);
-    p->q2[i] = std::ldexp(q2[i], -p->eq);
-  }
-  if (!core::is_positive_definite(p->q1) || !core::is_positive_definite(p->q2))
+// core::rescale(), for input that passed core::check_input(): PW85_ERANGE
+// when the diagonals of Q1 and Q2 together span more than the range of a
+// double (the rescaled forms are then no longer positive definite).
+int rescale_checked(double const r[dim], double const q1[sym],
+                    double const q2[sym], Scaled *p) noexcept {
+  if (!core::rescale(r, q1, q2, p) || !core::is_positive_definite(p->q1) ||
+      !core::is_positive_definite(p->q2))
     return PW85_ERANGE;
   return PW85_SUCCESS;
 }
@@ -66,7 +31,7 @@ int rescale(double const r[dim], double const q1[sym], double const q2[sym],
 // overflows (out[0] = +∞), as pw85_contact_function does.
 int finish(Scaled const &p, double f, double lambda, int status,
            double out[2]) noexcept {
-  double const mu2 = std::ldexp(f, 2 * p.er - p.eq);
+  double const mu2 = std::ldexp(f, p.shift);
   out[1] = lambda;
   if (std::isinf(mu2)) {
     out[0] = HUGE_VAL;
@@ -94,7 +59,7 @@ int contact_function1(double const r[dim], double const q1[sym],
     return PW85_SUCCESS;
   }
   Scaled p;
-  if (int const status = rescale(r, q1, q2, &p); status != PW85_SUCCESS)
+  if (int const status = rescale_checked(r, q1, q2, &p); status != PW85_SUCCESS)
     return status;
 
   // Plain Newton–Raphson on f′(λ) = 0 from λ = ½: λ ← λ − f′(λ)/f″(λ), f′
@@ -143,7 +108,7 @@ int contact_function2(double const r[dim], double const q1[sym],
     return PW85_SUCCESS;
   }
   Scaled p;
-  if (int const status = rescale(r, q1, q2, &p); status != PW85_SUCCESS)
+  if (int const status = rescale_checked(r, q1, q2, &p); status != PW85_SUCCESS)
     return status;
 
   double q3[sym];
