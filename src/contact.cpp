@@ -4,6 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstddef>
@@ -153,7 +154,7 @@ bool newton_on_omega(Problem const &p, int n, double *lambda,
     if (t.omega == 0.0) return true;
     double next = t.newton;
     if (std::fabs(next - *lambda) <=
-        newton_accept * std::fmin(*lambda, 1.0 - *lambda)) {
+        newton_accept * std::min(*lambda, 1.0 - *lambda)) {
       // Newton's convergence is quadratic: after a step this small, λ is
       // within ~1e-10 relative, about the rounding noise of the plain ω,
       // whose further steps (and the signs that set [lo, hi]) would only
@@ -260,13 +261,13 @@ bool finish(Problem const &p, double domega, double *lambda,
     double const step = omega / domega;
     double const next = l0 - step;
     if (!(next > 0.0 && next < 1.0)) break;
-    if (std::fabs(step) <= accurate_accept * std::fmin(l0, 1.0 - l0)) {
+    if (std::fabs(step) <= accurate_accept * std::min(l0, 1.0 - l0)) {
       double const root_p1 = std::sqrt(a.p1);
       double const sum_mu = (1.0 - l0) * root_p1 + l0 * std::sqrt(a.p2);
       double const correction = 0.5 * root_p1 * omega * sum_mu * step;
       if (correction >= 0.0 && correction <= 1e-10 * a.f) {
         *lambda = next;
-        *mu2 = std::fmax(a.f + correction, best);
+        *mu2 = std::max(a.f + correction, best);
         return true;
       }
     }
@@ -356,7 +357,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   // times the bounds tr·tr(⁻¹) of these condition numbers.
   double const cond1 = ldl_cond_bound(p.q1, p.f1);
   double const cond2 = ldl_cond_bound(p.q2, p.f2);
-  double const cond_q = std::sqrt(std::fmax(cond1, cond2));
+  double const cond_q = std::sqrt(std::max(cond1, cond2));
   // Bounds that need no λ. At λ = 0 and 1 the point x0 is a centre, so
   // μ² ≤ min(rᵀQ1⁻¹r, rᵀQ2⁻¹r) (computed from the factors of Q1, Q2: error
   // a few cond(Qᵢ)·ε). Each ellipsoid lies in the sphere of radius
@@ -365,8 +366,8 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   // roundings: margin 16ε).
   double const a1 = ldl_quad_inverse(p.f1, p.r);
   double const a2 = ldl_quad_inverse(p.f2, p.r);
-  double const m_a = 32.0 * DBL_EPSILON * std::fmax(cond1, cond2);
-  if (m_a < 0.5 && std::fmin(a1, a2) * (1.0 + m_a) < one) {
+  double const m_a = 32.0 * DBL_EPSILON * std::max(cond1, cond2);
+  if (m_a < 0.5 && std::min(a1, a2) * (1.0 + m_a) < one) {
     *result = -1;
     return PW85_SUCCESS;
   }
@@ -387,7 +388,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
       *result = 1;
       return PW85_SUCCESS;
     }
-    if (m_mu < 0.5 && std::fmax(t.mu1, t.mu2) * (1.0 + m_mu) < one) {
+    if (m_mu < 0.5 && std::max(t.mu1, t.mu2) * (1.0 + m_mu) < one) {
       *result = -1;
       return PW85_SUCCESS;
     }

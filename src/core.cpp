@@ -3,6 +3,7 @@
 // derivatives, input validation. The search for μ² is in contact.cpp.
 #include "core.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -49,7 +50,7 @@ void scale(double const *x, int n, int k, double *y) noexcept {
 
 double max_abs(double const *x, int n) noexcept {
   double m = 0.0;
-  for (int i = 0; i < n; ++i) m = std::fmax(m, std::fabs(x[i]));
+  for (int i = 0; i < n; ++i) m = std::max(m, std::fabs(x[i]));
   return m;
 }
 
