@@ -56,12 +56,28 @@ int prepare(double const r[dim], double const q1[sym], double const q2[sym],
   return PW85_ERANGE;
 }
 
+// A lower bound of μ² valid for every input: each ellipsoid lies in the
+// sphere of radius √λmax(Qᵢ) ≤ √tr(Qᵢ) about its centre, and those spheres
+// meet only once scaled by |r|/(√tr Q1 + √tr Q2). Computed with a few
+// roundings, whatever the conditioning of Q1 and Q2: the factor 1 − 16ε
+// keeps it a lower bound.
+double sphere_lower_bound(Problem const &p) noexcept {
+  double const radii = std::sqrt(p.q1[0] + p.q1[3] + p.q1[5]) +
+                       std::sqrt(p.q2[0] + p.q2[3] + p.q2[5]);
+  return dot(p.r, p.r) / (radii * radii) * (1.0 - 16.0 * DBL_EPSILON);
+}
+
 // The sphere model's maximiser, exact for two spheres (Qᵢ = aᵢ²·I gives
 // λ = a1/(a1 + a2)): λ0 = 1/(1 + √(rᵀQ1⁻¹r / rᵀQ2⁻¹r)).
+// The largest double below 1: where a step rounds onto λ = 1 (the root
+// lies within an ulp of it), λ goes here instead, where f ≠ 0.
+constexpr double below_one = 1.0 - 0x1p-53;
+
 // aᵢ = rᵀQᵢ⁻¹r.
 double warm_start(double a1, double a2) noexcept {
   double const lambda = 1.0 / (1.0 + std::sqrt(a1 / a2));
-  return (lambda > 0.0 && lambda < 1.0) ? lambda : 0.5;
+  if (lambda >= 1.0) return below_one;
+  return lambda > 0.0 ? lambda : 0.5;
 }
 
 double warm_start(Problem const &p) noexcept {
@@ -164,7 +180,13 @@ bool newton_on_omega(Problem const &p, int n, double *lambda,
     }
     (t.omega < 0.0 ? lo : hi) = *lambda;
     if (!(next > lo && next < hi)) next = t.fixed;
+    if (next >= 1.0 && hi == 1.0) next = below_one;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    // No double strictly between lo and hi (the root lies within an ulp of
+    // an end of [0, 1], say): λ, which is one of them and inside (0, 1), is
+    // as close to the root as doubles allow. (The midpoint would round onto
+    // an end, where λ(1−λ) = 0.)
+    if (!(next > lo && next < hi)) return true;
     *lambda = next;
   }
   return false;
@@ -327,7 +349,10 @@ int contact_function(double const r[dim], double const q1[sym],
   double res[2];
   status = solve(p, res);
   if (status != PW85_SUCCESS) return status;
-  double const mu2 = std::ldexp(res[0], p.shift);
+  // Beyond the documented domain (cond(Qᵢ) far above 1/ε) the computed f
+  // can be meaningless; μ² never falls below this rigorous bound.
+  double const floor = sphere_lower_bound(p);
+  double const mu2 = std::ldexp(res[0] > floor ? res[0] : floor, p.shift);
   out[1] = res[1];
   if (std::isinf(mu2)) {
     out[0] = HUGE_VAL;
@@ -360,10 +385,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   double const cond_q = std::sqrt(std::max(cond1, cond2));
   // Bounds that need no λ. At λ = 0 and 1 the point x0 is a centre, so
   // μ² ≤ min(rᵀQ1⁻¹r, rᵀQ2⁻¹r) (computed from the factors of Q1, Q2: error
-  // a few cond(Qᵢ)·ε). Each ellipsoid lies in the sphere of radius
-  // √λmax(Qᵢ) ≤ √tr(Qᵢ) about its centre, and those spheres meet only once
-  // scaled by |r|/(√tr Q1 + √tr Q2): μ² ≥ |r|²/(√tr Q1 + √tr Q2)² (a few
-  // roundings: margin 16ε).
+  // a few cond(Qᵢ)·ε); and sphere_lower_bound().
   double const a1 = ldl_quad_inverse(p.f1, p.r);
   double const a2 = ldl_quad_inverse(p.f2, p.r);
   double const m_a = 32.0 * DBL_EPSILON * std::max(cond1, cond2);
@@ -371,9 +393,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
     *result = -1;
     return PW85_SUCCESS;
   }
-  double const radii = std::sqrt(p.q1[0] + p.q1[3] + p.q1[5]) +
-                       std::sqrt(p.q2[0] + p.q2[3] + p.q2[5]);
-  if (dot(p.r, p.r) / (radii * radii) * (1.0 - 16.0 * DBL_EPSILON) > one) {
+  if (sphere_lower_bound(p) > one) {
     *result = 1;
     return PW85_SUCCESS;
   }

@@ -198,6 +198,155 @@ static void test_overlap_contract(void) {
   g_assert_cmpint(result, ==, 1);
 }
 
+/* A random double: sign, mantissa in [1, 2), exponent in [−emax, emax];
+ * sometimes zero, a subnormal, or (with `special`) NaN or ±∞. */
+static double random_double(GRand *rng, int emax, gboolean special) {
+  switch (g_rand_int_range(rng, 0, 40)) {
+    case 0:
+      return 0.;
+    case 1:
+      return g_rand_boolean(rng) ? 4.9e-324 : -1e-310;
+    case 2:
+      if (special) return g_rand_boolean(rng) ? NAN : -INFINITY;
+      break;
+    default:
+      break;
+  }
+  double const m = 1. + g_rand_double(rng);
+  double const x = ldexp(m, g_rand_int_range(rng, -emax, emax + 1));
+  return g_rand_boolean(rng) ? x : -x;
+}
+
+/* A random quadratic form: mostly L·Lᵀ with random entries (positive
+ * definite unless rounding says otherwise), sometimes any symmetric matrix,
+ * sometimes an axis-aligned one with wildly different semi-axes. */
+static void random_form(GRand *rng, int emax, gboolean special,
+                        double q[PW85_SYM]) {
+  int const kind = g_rand_int_range(rng, 0, 10);
+  if (kind < 6) {
+    double l[PW85_SYM];
+    for (int i = 0; i < PW85_SYM; i++) l[i] = random_double(rng, emax, FALSE);
+    q[0] = l[0] * l[0];
+    q[1] = l[0] * l[1];
+    q[2] = l[0] * l[2];
+    q[3] = l[1] * l[1] + l[3] * l[3];
+    q[4] = l[1] * l[2] + l[3] * l[4];
+    q[5] = l[2] * l[2] + l[4] * l[4] + l[5] * l[5];
+  } else if (kind < 8) {
+    for (int i = 0; i < PW85_SYM; i++) q[i] = random_double(rng, emax, special);
+  } else {
+    for (int i = 0; i < PW85_SYM; i++) q[i] = 0.;
+    q[0] = fabs(random_double(rng, emax, FALSE));
+    q[3] = fabs(random_double(rng, emax, FALSE));
+    q[5] = fabs(random_double(rng, emax, FALSE));
+  }
+}
+
+/* Any input gets a documented answer: 200,000 seeded random inputs over the
+ * whole range of doubles, most far outside the domain where μ² is accurate
+ * (condition numbers to 1e300). On PW85_SUCCESS μ² is finite, ≥ +0 (0 only
+ * by underflow: never −0, never negative) and λ in [0, 1]; on PW85_ERANGE either out is
+ * untouched or μ² = +∞ with a valid λ; on any other status out is
+ * untouched; pw85_overlap returns the same status (or PW85_SUCCESS, +1,
+ * where μ² overflows). GSL's error handler must not be reached (the one
+ * installed fails the test). */
+static void test_random_input(void) {
+  GRand *rng = g_rand_new_with_seed(20261121);
+  int counts[8] = {0};
+  for (int n = 0; n < 200000; n++) {
+    int const emax = g_rand_boolean(rng) ? 8 : (g_rand_boolean(rng) ? 150 : 600);
+    gboolean const special = g_rand_int_range(rng, 0, 20) == 0;
+    double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
+    for (int i = 0; i < PW85_DIM; i++) r[i] = random_double(rng, emax, special);
+    if (r[0] == 0. && r[1] == 0. && r[2] == 0.) r[0] = 1.;
+    random_form(rng, emax, special, q1);
+    random_form(rng, emax, special, q2);
+    int const status = call(r, q1, q2, out);
+    g_assert_cmpint(status, >=, 0);
+    g_assert_cmpint(status, <=, PW85_ERANGE);
+    counts[status]++;
+    int result = 42;
+    int const ostatus = pw85_overlap(r, q1, q2, &result);
+    if (status == PW85_SUCCESS) {
+      assert_valid(status, out);
+      g_assert_false(signbit(out[0]));
+      g_assert_cmpint(ostatus, ==, PW85_SUCCESS);
+      g_assert_true(result == -1 || result == 0 || result == 1);
+    } else if (status == PW85_ERANGE && isinf(out[0])) {
+      g_assert_cmpfloat(out[1], >=, 0.);
+      g_assert_cmpfloat(out[1], <=, 1.);
+      g_assert_cmpint(ostatus, ==, PW85_SUCCESS);
+      g_assert_cmpint(result, ==, 1);
+    } else {
+      assert_untouched(out);
+      g_assert_cmpint(ostatus, ==, status);
+      g_assert_cmpint(result, ==, 42);
+    }
+  }
+  g_test_message("statuses: %d success, %d EDOM, %d ENOTPOSDEF, %d ERANGE",
+                 counts[PW85_SUCCESS], counts[PW85_EDOM],
+                 counts[PW85_ENOTPOSDEF], counts[PW85_ERANGE]);
+  /* Every class was exercised. */
+  g_assert_cmpint(counts[PW85_SUCCESS], >, 1000);
+  g_assert_cmpint(counts[PW85_EDOM], >, 1000);
+  g_assert_cmpint(counts[PW85_ENOTPOSDEF], >, 1000);
+  g_assert_cmpint(counts[PW85_ERANGE], >, 0);
+  g_rand_free(rng);
+}
+
+/* Q = R·diag(a²)·Rᵀ for a random rotation R (unit quaternion) and
+ * semi-axes of aspect ratio up to 1e8 about a random scale 2^±150. */
+static void random_ellipsoid(GRand *rng, double q[PW85_SYM]) {
+  double w = g_rand_double_range(rng, -1., 1.), x = g_rand_double_range(rng, -1., 1.);
+  double y = g_rand_double_range(rng, -1., 1.), z = g_rand_double_range(rng, -1., 1.);
+  double const norm = sqrt(w * w + x * x + y * y + z * z);
+  w /= norm, x /= norm, y /= norm, z /= norm;
+  double const rot[3][3] = {
+      {1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y)},
+      {2. * (x * y + w * z), 1. - 2. * (x * x + z * z), 2. * (y * z - w * x)},
+      {2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y)}};
+  double const scale = ldexp(1., g_rand_int_range(rng, -150, 151));
+  double a2[3];
+  for (int i = 0; i < 3; i++) {
+    double const a = scale * pow(10., g_rand_double_range(rng, -4., 4.));
+    a2[i] = a * a;
+  }
+  int k = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = i; j < 3; j++, k++)
+      q[k] = rot[i][0] * a2[0] * rot[j][0] + rot[i][1] * a2[1] * rot[j][1] +
+             rot[i][2] * a2[2] * rot[j][2];
+}
+
+/* Inside the documented domain pw85_overlap never contradicts μ²: 100,000
+ * seeded random pairs of aspect ratios up to 1e8, at distances that put μ²
+ * around 1 (from 1e-2 to 1e2). */
+static void test_random_overlap(void) {
+  GRand *rng = g_rand_new_with_seed(1985);
+  int checked = 0;
+  for (int n = 0; n < 100000; n++) {
+    double q1[PW85_SYM], q2[PW85_SYM], r[PW85_DIM], out[2];
+    random_ellipsoid(rng, q1);
+    random_ellipsoid(rng, q2);
+    double const size = sqrt(q1[0] + q1[3] + q1[5]) + sqrt(q2[0] + q2[3] + q2[5]);
+    double const t = size * pow(10., g_rand_double_range(rng, -1., 0.3));
+    for (int i = 0; i < PW85_DIM; i++) r[i] = t * g_rand_double_range(rng, -1., 1.);
+    int const status = call(r, q1, q2, out);
+    if (status == PW85_ENOTPOSDEF) continue; /* rounding made Q indefinite */
+    assert_valid(status, out);
+    int result = 42;
+    g_assert_cmpint(pw85_overlap(r, q1, q2, &result), ==, PW85_SUCCESS);
+    if (out[0] < 1. - 4. * DBL_EPSILON && result != -1)
+      g_error("case %d: mu^2 = %.17g but pw85_overlap gives %d", n, out[0], result);
+    if (out[0] > 1. + 4. * DBL_EPSILON && result != 1)
+      g_error("case %d: mu^2 = %.17g but pw85_overlap gives %d", n, out[0], result);
+    checked++;
+  }
+  g_test_message("%d random pairs checked", checked);
+  g_assert_cmpint(checked, >, 90000);
+  g_rand_free(rng);
+}
+
 static void axis_spheroid(double a, double c, int axis, double q[PW85_SYM]) {
   double n[PW85_DIM] = {0., 0., 0.};
   n[axis] = 1.;
@@ -247,6 +396,22 @@ static void test_tiny_distance(void) {
   double const r2[PW85_DIM] = {0., 0., 1e-140};
   assert_valid(call(r2, unit, unit, out), out);
   assert_close("mu2, 1e-140", out[0], 0.25e-280, 4.5e-16);
+}
+
+/* Spheres of radii 1e9 and 1e-9 at distance 1e9: the maximiser
+ * λ = a1/(a1 + a2) = 1 − 1e-18 lies within an ulp of 1, where f(1) = 0;
+ * μ² = 1e18/(1e9 + 1e-9)² = 1 − 2e-18 rounds to 1. */
+static void test_maximiser_at_an_end(void) {
+  double const big[PW85_SYM] = {1e18, 0., 0., 1e18, 0., 1e18};
+  double const small[PW85_SYM] = {1e-18, 0., 0., 1e-18, 0., 1e-18};
+  double const r[PW85_DIM] = {0., 1e9, 0.};
+  double out[2];
+  assert_valid(call(r, big, small, out), out);
+  assert_close("mu2, maximiser near 1", out[0], 1., DBL_EPSILON);
+  g_assert_cmpfloat(out[1], >=, 1. - DBL_EPSILON);
+  assert_valid(call(r, small, big, out), out); /* and near 0 */
+  assert_close("mu2, maximiser near 0", out[0], 1., DBL_EPSILON);
+  g_assert_cmpfloat(out[1], <=, 1e-17);
 }
 
 static void test_overflow(void) {
@@ -358,11 +523,16 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/contact_function/contract/tiny-distance",
                   test_tiny_distance);
   g_test_add_func("/pw85/contact_function/contract/overflow", test_overflow);
+  g_test_add_func("/pw85/contact_function/contract/maximiser-at-an-end",
+                  test_maximiser_at_an_end);
   g_test_add_func("/pw85/contact_function/contract/wide-range",
                   test_wide_range);
   g_test_add_func("/pw85/contact_function/contract/scale-power-of-two",
                   test_scale_power_of_two);
   g_test_add_func("/pw85/overlap/contract", test_overlap_contract);
+  g_test_add_func("/pw85/contact_function/contract/random-input",
+                  test_random_input);
+  g_test_add_func("/pw85/overlap/random-pairs", test_random_overlap);
   g_test_add_func("/pw85/f_neg/contract", test_f_neg_contract);
   g_test_add_func("/pw85/strerror", test_strerror);
   g_test_add_func("/pw85/gsl-handler/detects", test_gsl_handler_detects);

@@ -181,7 +181,10 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  * rescaled internally by powers of two, so any finite input is accepted.
  * μ² is evaluated with compensated arithmetic and is correctly rounded on
  * the reference dataset and on general pairs of aspect ratios to 1e4; λ is
- * accurate to ~1e-13 or better there. Brent's method (GSL) certifies the
+ * accurate to ~1e-13 or better there. Accuracy holds while the condition
+ * numbers of Q1 and Q2 stay below ~1e16 (aspect ratios to 1e8); beyond,
+ * the answer is still finite, ≥ |r12|²/(√tr Q1 + √tr Q2)² > 0, with the
+ * statuses below, but may be inaccurate. Brent's method (GSL) certifies the
  * maximum to PW85_LAMBDA_ATOL; Newton steps refine λ (see the docs).
  *
  * @param[in] r12 the centre-to-centre vector c2 − c1 (any finite vector;
@@ -221,7 +224,9 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  * @param[out] result −1 if the ellipsoids overlap (μ² < 1), +1 if they are
  *             disjoint (μ² > 1), 0 if they are tangent to the resolution of
  *             double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON (4 ulps of 1).
- *             Coincident centres overlap.
+ *             Coincident centres overlap. Certified while the condition
+ *             numbers of Q1 and Q2 stay below ~1e16 (aspect ratios to
+ *             1e8), like the accuracy of pw85_contact_function().
  * @return the statuses of pw85_contact_function(), with the same meaning;
  *         *result is written on PW85_SUCCESS only (also when μ² would
  *         overflow: such ellipsoids are disjoint, *result = +1).
