@@ -373,7 +373,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   }
   // μ² < 1 ⟺ μ²(problem) < 2^−shift (exact; 0 or +∞ out of range, which
   // decides the comparison correctly since μ²(problem) is finite and > 0).
-  double const one = std::ldexp(1.0, -p.shift);
+  double const one = pow2(-p.shift);
   // Bounds valid at every λ (ch. 5, eqs. (1a)–(1b)): f(λ) ≤ μ² because μ²
   // is the maximum of f; μ² ≤ max(μ1², μ2²) because the point x0(λ) lies in
   // both ellipsoids scaled by max(μ1, μ2), which therefore meet. In plain

@@ -35,18 +35,7 @@ int exponent(double x) noexcept {
   return e;
 }
 
-// x·2^k for every entry, exact unless the result leaves the normal range:
-// one multiplication when 2^k is a normal double, ldexp otherwise.
-void scale(double const *x, int n, int k, double *y) noexcept {
-  if (k >= -1022 && k <= 1023) {
-    std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
-    double factor;  // 2^k, built from its bits
-    std::memcpy(&factor, &bits, sizeof factor);
-    for (int i = 0; i < n; ++i) y[i] = x[i] * factor;
-  } else {
-    for (int i = 0; i < n; ++i) y[i] = std::ldexp(x[i], k);
-  }
-}
+
 
 double max_abs(double const *x, int n) noexcept {
   double m = 0.0;
@@ -55,6 +44,23 @@ double max_abs(double const *x, int n) noexcept {
 }
 
 }  // namespace
+
+double pow2(int k) noexcept {
+  if (k < -1022 || k > 1023) return std::ldexp(1.0, k);
+  std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+void scale(double const *x, int n, int k, double *y) noexcept {
+  if (k >= -1022 && k <= 1023) {
+    double const factor = pow2(k);
+    for (int i = 0; i < n; ++i) y[i] = x[i] * factor;
+  } else {
+    for (int i = 0; i < n; ++i) y[i] = std::ldexp(x[i], k);
+  }
+}
 
 bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
              Scaled *s) noexcept {
@@ -75,15 +81,19 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
   scale(q1, sym, -eq, s->q1);
   scale(q2, sym, -eq, s->q2);
   s->shift = 2 * er - eq;
-  for (int i = 0; i < sym; ++i)
-    if (!std::isfinite(s->q1[i]) || !std::isfinite(s->q2[i])) return false;
-  return true;
+  // A diagonal entry overflows only if the diagonals span more than the
+  // range of doubles (emax − eq > 1024); an off-diagonal entry cannot
+  // overflow without exceeding √(Qᵢᵢ·Qⱼⱼ), which leaves the form
+  // indefinite: its factorisation then fails on a non-finite pivot.
+  return emax - eq <= 1024;
 }
 
 bool all_finite(double const *x, int n) noexcept {
-  for (int i = 0; i < n; ++i)
-    if (!std::isfinite(x[i])) return false;
-  return true;
+  // x − x is 0 for finite x and NaN for NaN and ±∞: one test, no branch
+  // per entry.
+  double acc = 0.0;
+  for (int i = 0; i < n; ++i) acc += x[i] - x[i];
+  return acc == 0.0;
 }
 
 bool cholesky_decomp(double const a[sym], double l[sym]) noexcept {

@@ -54,6 +54,13 @@ void residual(double lambda, double const r[dim], double const q1[sym],
 // its rows and columns. Entries must be finite.
 bool is_positive_definite(double const q[sym]) noexcept;
 
+// 2^k, built from its bits when it is a normal double (a libm call would
+// cost more than the rest of the rescaling); ldexp otherwise.
+double pow2(int k) noexcept;
+
+// y = x·2^k for n entries: exact unless a result leaves the normal range.
+void scale(double const *x, int n, int k, double *y) noexcept;
+
 // r, Q1, Q2 rescaled exactly by powers of two (seed ch. 3, eq. (6):
 // μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2), λ unchanged): r to order
 // one, Q1 and Q2 so that their diagonals (which bound every entry of a
