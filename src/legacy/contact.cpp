@@ -41,6 +41,14 @@ int finish(Scaled const &p, double f, double lambda, int status,
   return status;
 }
 
+// Coincident centres: f ≡ 0, μ² = 0 and λ is arbitrary (½), as
+// pw85_contact_function answers.
+int coincident(double out[2]) noexcept {
+  out[0] = 0.0;
+  out[1] = 0.5;
+  return PW85_SUCCESS;
+}
+
 // Horner's scheme for p[0] + p[1]·x + ... + p[n−1]·x^(n−1).
 template <int n>
 double horner(double const (&p)[n], double x) noexcept {
@@ -53,14 +61,10 @@ double horner(double const (&p)[n], double x) noexcept {
 
 int contact_function1(double const r[dim], double const q1[sym],
                       double const q2[sym], double out[2]) noexcept {
-  if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) {  // coincident centres
-    out[0] = 0.0;
-    out[1] = 0.5;
-    return PW85_SUCCESS;
-  }
   Scaled p;
   if (int const status = rescale_checked(r, q1, q2, &p); status != PW85_SUCCESS)
     return status;
+  if (p.r_is_zero) return coincident(out);
 
   // Plain Newton–Raphson on f′(λ) = 0 from λ = ½: λ ← λ − f′(λ)/f″(λ), f′
   // and f″ from seed ch. 4, eqs. (6) and (9), with no safeguard. Seed ch. 5
@@ -102,14 +106,10 @@ int contact_function1(double const r[dim], double const q1[sym],
 
 int contact_function2(double const r[dim], double const q1[sym],
                       double const q2[sym], double out[2]) noexcept {
-  if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) {  // coincident centres
-    out[0] = 0.0;
-    out[1] = 0.5;
-    return PW85_SUCCESS;
-  }
   Scaled p;
   if (int const status = rescale_checked(r, q1, q2, &p); status != PW85_SUCCESS)
     return status;
+  if (p.r_is_zero) return coincident(out);
 
   double q3[sym];
   double q4[sym];
