@@ -6,24 +6,22 @@
 #include <pw85.h>
 #include <string.h>
 
+#include "contract.h"
 #include "testutil.h"
 
-static double const r_ok[PW85_DIM] = {0.7, -0.7, 1.1};
-static double const q1_ok[PW85_SYM] = {100., 0., 0., 100., 0., 0.01};
-static double const q2_ok[PW85_SYM] = {25., 0., 0., 0.25, 0., 0.25};
-
-/* Sentinels: a failing call must leave out exactly as it was. */
-static double const sentinel[2] = {42., -7.};
+/* The valid input and the helpers of tests/contract.h, for
+ * pw85_contact_function. */
+#define r_ok contract_r
+#define q1_ok contract_q1
+#define q2_ok contract_q2
 
 static int call(double const *r, double const *q1, double const *q2,
                 double out[2]) {
-  memcpy(out, sentinel, sizeof sentinel);
-  return pw85_contact_function(r, q1, q2, out);
+  return contract_call(pw85_contact_function, r, q1, q2, out);
 }
 
 static void assert_untouched(double const out[2]) {
-  g_assert_cmpfloat(out[0], ==, sentinel[0]);
-  g_assert_cmpfloat(out[1], ==, sentinel[1]);
+  contract_assert_untouched(out);
 }
 
 static void assert_valid(int status, double const out[2]) {
@@ -34,71 +32,18 @@ static void assert_valid(int status, double const out[2]) {
   g_assert_cmpfloat(out[1], <=, 1.);
 }
 
-static void test_null(void) {
-  double out[2];
-  g_assert_cmpint(call(NULL, q1_ok, q2_ok, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-  g_assert_cmpint(call(r_ok, NULL, q2_ok, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-  g_assert_cmpint(call(r_ok, q1_ok, NULL, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-  g_assert_cmpint(pw85_contact_function(r_ok, q1_ok, q2_ok, NULL), ==,
-                  PW85_EFAULT);
-  g_assert_cmpint(call(NULL, NULL, NULL, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-}
+static void test_null(void) { contract_check_null(pw85_contact_function); }
 
 static void test_not_finite(void) {
-  double const bad[] = {NAN, INFINITY, -INFINITY};
-  for (size_t b = 0; b < G_N_ELEMENTS(bad); b++) {
-    for (int i = 0; i < PW85_DIM + 2 * PW85_SYM; i++) {
-      double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
-      memcpy(r, r_ok, sizeof r);
-      memcpy(q1, q1_ok, sizeof q1);
-      memcpy(q2, q2_ok, sizeof q2);
-      if (i < PW85_DIM)
-        r[i] = bad[b];
-      else if (i < PW85_DIM + PW85_SYM)
-        q1[i - PW85_DIM] = bad[b];
-      else
-        q2[i - PW85_DIM - PW85_SYM] = bad[b];
-      g_assert_cmpint(call(r, q1, q2, out), ==, PW85_EDOM);
-      assert_untouched(out);
-    }
-  }
+  contract_check_not_finite(pw85_contact_function);
 }
 
 static void test_not_posdef(void) {
-  double const not_pd[][PW85_SYM] = {
-      {1., 0., 0., -1., 0., 1.},     /* indefinite, diagonal */
-      {1., 2., 0., 1., 0., 1.},      /* indefinite, positive diagonal */
-      {-1., 0., 0., -1., 0., -1.},   /* negative definite */
-      {0., 0., 0., 0., 0., 0.},      /* zero */
-      {1., 0., 0., 1., 0., 0.},      /* positive semi-definite, singular */
-      {1., 1., 1., 1., 1., 1.},      /* rank one */
-      {1e300, 0., 0., 1e300, 0., -1e-300}, /* wide range, last pivot < 0 */
-  };
-  for (size_t k = 0; k < G_N_ELEMENTS(not_pd); k++) {
-    double out[2];
-    g_assert_cmpint(call(r_ok, not_pd[k], q2_ok, out), ==, PW85_ENOTPOSDEF);
-    assert_untouched(out);
-    g_assert_cmpint(call(r_ok, q1_ok, not_pd[k], out), ==, PW85_ENOTPOSDEF);
-    assert_untouched(out);
-    /* An invalid quadratic form is an error even with coincident centres. */
-    double const zero[PW85_DIM] = {0., 0., 0.};
-    g_assert_cmpint(call(zero, not_pd[k], q2_ok, out), ==, PW85_ENOTPOSDEF);
-    assert_untouched(out);
-  }
+  contract_check_not_posdef(pw85_contact_function);
 }
 
 static void test_coincident(void) {
-  double const zeros[][PW85_DIM] = {{0., 0., 0.}, {-0., 0., -0.}};
-  for (size_t k = 0; k < G_N_ELEMENTS(zeros); k++) {
-    double out[2];
-    g_assert_cmpint(call(zeros[k], q1_ok, q2_ok, out), ==, PW85_SUCCESS);
-    g_assert_cmpfloat(out[0], ==, 0.);
-    g_assert_cmpfloat(out[1], ==, 0.5);
-  }
+  contract_check_coincident(pw85_contact_function);
 }
 
 /* μ²(t·r, t²·Q1, t²·Q2) = μ²(r, Q1, Q2). t is not a power of two, so the

@@ -6,15 +6,14 @@
 #include <pw85_legacy.h>
 #include <string.h>
 
+#include "contract.h"
 #include "legacy-testutil.h"
 
-typedef int (*ContactFunc)(double const *, double const *, double const *,
-                           double *);
 
 /* A contact function and its measured accuracy on two tests below. */
 typedef struct {
   const char *name;
-  ContactFunc func;
+  ContactFn func;
   double tol_spheres_mu2, tol_spheres_lambda, tol_scale;
 } Impl;
 
@@ -26,93 +25,34 @@ static Impl const impl1 = {"contact_function1", pw85_legacy_contact_function1,
 static Impl const impl2 = {"contact_function2", pw85_legacy_contact_function2,
                            7e-11, 8e-8, 5e-15};
 
-static double const r_ok[PW85_DIM] = {0.7, -0.7, 1.1};
-static double const q1_ok[PW85_SYM] = {100., 0., 0., 100., 0., 0.01};
-static double const q2_ok[PW85_SYM] = {25., 0., 0., 0.25, 0., 0.25};
-
-/* Sentinels: a failing call must leave out exactly as it was. */
-static double const sentinel[2] = {42., -7.};
+#define r_ok contract_r
+#define q1_ok contract_q1
+#define q2_ok contract_q2
 
 static int call(Impl const *impl, double const *r, double const *q1,
                 double const *q2, double out[2]) {
-  memcpy(out, sentinel, sizeof sentinel);
-  return impl->func(r, q1, q2, out);
+  return contract_call(impl->func, r, q1, q2, out);
 }
 
 static void assert_untouched(double const out[2]) {
-  g_assert_cmpmem(out, 2 * sizeof(double), sentinel, sizeof sentinel);
+  contract_assert_untouched(out);
 }
 
+/* The contract shared with pw85_contact_function (tests/contract.h). */
 static void test_null(gconstpointer p) {
-  Impl const *impl = p;
-  double out[2];
-  g_assert_cmpint(call(impl, NULL, q1_ok, q2_ok, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-  g_assert_cmpint(call(impl, r_ok, NULL, q2_ok, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-  g_assert_cmpint(call(impl, r_ok, q1_ok, NULL, out), ==, PW85_EFAULT);
-  assert_untouched(out);
-  g_assert_cmpint(impl->func(r_ok, q1_ok, q2_ok, NULL), ==, PW85_EFAULT);
-  g_assert_cmpint(call(impl, NULL, NULL, NULL, out), ==, PW85_EFAULT);
-  assert_untouched(out);
+  contract_check_null(((Impl const *)p)->func);
 }
 
 static void test_not_finite(gconstpointer p) {
-  Impl const *impl = p;
-  double const bad[] = {NAN, INFINITY, -INFINITY};
-  for (size_t b = 0; b < G_N_ELEMENTS(bad); b++)
-    for (int i = 0; i < PW85_DIM + 2 * PW85_SYM; i++) {
-      double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
-      memcpy(r, r_ok, sizeof r);
-      memcpy(q1, q1_ok, sizeof q1);
-      memcpy(q2, q2_ok, sizeof q2);
-      if (i < PW85_DIM)
-        r[i] = bad[b];
-      else if (i < PW85_DIM + PW85_SYM)
-        q1[i - PW85_DIM] = bad[b];
-      else
-        q2[i - PW85_DIM - PW85_SYM] = bad[b];
-      g_assert_cmpint(call(impl, r, q1, q2, out), ==, PW85_EDOM);
-      assert_untouched(out);
-    }
+  contract_check_not_finite(((Impl const *)p)->func);
 }
 
 static void test_not_posdef(gconstpointer p) {
-  Impl const *impl = p;
-  double const not_pd[][PW85_SYM] = {
-      {1., 0., 0., -1., 0., 1.},           /* indefinite, diagonal */
-      {1., 2., 0., 1., 0., 1.},            /* indefinite, positive diagonal */
-      {-1., 0., 0., -1., 0., -1.},         /* negative definite */
-      {0., 0., 0., 0., 0., 0.},            /* zero */
-      {1., 0., 0., 1., 0., 0.},            /* semi-definite, singular */
-      {1., 1., 1., 1., 1., 1.},            /* rank one */
-      {1e300, 0., 0., 1e300, 0., -1e-300}, /* wide range, last pivot < 0 */
-  };
-  double const zero[PW85_DIM] = {0., 0., 0.};
-  for (size_t k = 0; k < G_N_ELEMENTS(not_pd); k++) {
-    double out[2];
-    g_assert_cmpint(call(impl, r_ok, not_pd[k], q2_ok, out), ==,
-                    PW85_ENOTPOSDEF);
-    assert_untouched(out);
-    g_assert_cmpint(call(impl, r_ok, q1_ok, not_pd[k], out), ==,
-                    PW85_ENOTPOSDEF);
-    assert_untouched(out);
-    /* An invalid quadratic form is an error even with coincident centres. */
-    g_assert_cmpint(call(impl, zero, not_pd[k], q2_ok, out), ==,
-                    PW85_ENOTPOSDEF);
-    assert_untouched(out);
-  }
+  contract_check_not_posdef(((Impl const *)p)->func);
 }
 
 static void test_coincident(gconstpointer p) {
-  Impl const *impl = p;
-  double const zeros[][PW85_DIM] = {{0., 0., 0.}, {-0., 0., -0.}};
-  for (size_t k = 0; k < G_N_ELEMENTS(zeros); k++) {
-    double out[2];
-    g_assert_cmpint(call(impl, zeros[k], q1_ok, q2_ok, out), ==, PW85_SUCCESS);
-    g_assert_cmpfloat(out[0], ==, 0.);
-    g_assert_cmpfloat(out[1], ==, 0.5);
-  }
+  contract_check_coincident(((Impl const *)p)->func);
 }
 
 /* Two spheres of radii a1, a2: μ² = |r|²/(a1 + a2)², λ = a1/(a1 + a2).
