@@ -204,13 +204,11 @@ bool is_positive_definite(double const q[sym]) noexcept {
   return cholesky_decomp(scaled, l);
 }
 
-int check_pointers_and_finite(void const *r, void const *q1, void const *q2,
-                              void const *out) noexcept {
+int check_pointers_and_finite(double const *r, double const *q1,
+                              double const *q2, void const *out) noexcept {
   if (r == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
     return PW85_EFAULT;
-  if (!all_finite(static_cast<double const *>(r), dim) ||
-      !all_finite(static_cast<double const *>(q1), sym) ||
-      !all_finite(static_cast<double const *>(q2), sym))
+  if (!all_finite(r, dim) || !all_finite(q1, sym) || !all_finite(q2, sym))
     return PW85_EDOM;
   return PW85_SUCCESS;
 }

@@ -73,16 +73,19 @@ struct Scaled {
   bool r_is_zero;
 };
 
-// Fills *s from finite input. Returns false when an entry of the rescaled
-// forms is not finite: the diagonals of Q1 and Q2 span more than the range
-// of a double.
+// Fills *s from finite input. Returns false when the diagonals of Q1 and
+// Q2 span more than the range of a double, so that a rescaled diagonal
+// entry overflows (decided from the exponents; an off-diagonal entry that
+// overflows leaves the form indefinite, which its factorisation rejects).
 bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
              Scaled *s) noexcept;
 
 // PW85_EFAULT if a pointer is NULL, PW85_EDOM if an entry of r (3), q1 or
 // q2 (6 each) is not finite, PW85_SUCCESS otherwise.
-int check_pointers_and_finite(void const *r, void const *q1, void const *q2,
-                              void const *out) noexcept;
+// out is only tested against NULL (a double[2] or, for the overlap test, an
+// int).
+int check_pointers_and_finite(double const *r, double const *q1,
+                              double const *q2, void const *out) noexcept;
 
 // The input contract shared by every contact function of pw85 and
 // pw85_legacy: check_pointers_and_finite(), then PW85_ENOTPOSDEF if q1 or
