@@ -107,4 +107,18 @@ static inline void contract_check_coincident(ContactFn fn) {
   }
 }
 
+/* The same pair with every length scaled by t: r → t·r, Q → t²·Q, under
+ * which μ² and λ are invariant. */
+static inline void contract_scaled(double t, double const r0[PW85_DIM],
+                                   double const q1_0[PW85_SYM],
+                                   double const q2_0[PW85_SYM],
+                                   double r[PW85_DIM], double q1[PW85_SYM],
+                                   double q2[PW85_SYM]) {
+  for (int i = 0; i < PW85_DIM; i++) r[i] = t * r0[i];
+  for (int i = 0; i < PW85_SYM; i++) {
+    q1[i] = (t * t) * q1_0[i];
+    q2[i] = (t * t) * q2_0[i];
+  }
+}
+
 #endif /* PW85_TESTS_CONTRACT_H */

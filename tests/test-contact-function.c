@@ -51,13 +51,19 @@ static void fill_params(double const r[PW85_DIM], double const q1[PW85_SYM],
   }
 }
 
+/* Q1, Q2 of the case, and params as pw85_f_neg takes them (if not NULL). */
+static void sphere_problem(Spheres const *s, double q1[PW85_SYM],
+                           double q2[PW85_SYM], double *params) {
+  sphere_q(s->a1, q1);
+  sphere_q(s->a2, q2);
+  if (params != NULL) fill_params(s->r, q1, q2, params);
+}
+
 static void test_f_spheres(void) {
   for (size_t k = 0; k < G_N_ELEMENTS(spheres); k++) {
     Spheres const *s = &spheres[k];
     double q1[PW85_SYM], q2[PW85_SYM], params[15];
-    sphere_q(s->a1, q1);
-    sphere_q(s->a2, q2);
-    fill_params(s->r, q1, q2, params);
+    sphere_problem(s, q1, q2, params);
     for (int l = 0; l <= 10; l++) {
       double const lambda = l / 10.;
       /* Both sides round a handful of operations (measured: 4.4e-16). */
@@ -71,9 +77,7 @@ static void test_residual_spheres(void) {
   for (size_t k = 0; k < G_N_ELEMENTS(spheres); k++) {
     Spheres const *s = &spheres[k];
     double q1[PW85_SYM], q2[PW85_SYM], params[15];
-    sphere_q(s->a1, q1);
-    sphere_q(s->a2, q2);
-    fill_params(s->r, q1, q2, params);
+    sphere_problem(s, q1, q2, params);
     for (int l = 1; l <= 9; l++) {
       double const lambda = l / 10.;
       double out[3];
@@ -100,8 +104,7 @@ static void test_contact_spheres(void) {
   for (size_t k = 0; k < G_N_ELEMENTS(spheres); k++) {
     Spheres const *s = &spheres[k];
     double q1[PW85_SYM], q2[PW85_SYM], out[2];
-    sphere_q(s->a1, q1);
-    sphere_q(s->a2, q2);
+    sphere_problem(s, q1, q2, NULL);
     g_assert_cmpint(pw85_contact_function(s->r, q1, q2, out), ==,
                     PW85_SUCCESS);
     double const sum = s->a1 + s->a2;

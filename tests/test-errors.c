@@ -56,11 +56,7 @@ static void test_scale_invariance(void) {
   for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
     double const t = scales[k];
     double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
-    for (int i = 0; i < PW85_DIM; i++) r[i] = t * r_ok[i];
-    for (int i = 0; i < PW85_SYM; i++) {
-      q1[i] = (t * t) * q1_ok[i];
-      q2[i] = (t * t) * q2_ok[i];
-    }
+    contract_scaled(t, r_ok, q1_ok, q2_ok, r, q1, q2);
     int const status = call(r, q1, q2, out);
     assert_valid(status, out);
     assert_close("mu2, scaled", out[0], ref[0], 1e-14);

@@ -117,11 +117,7 @@ static void test_scale_invariance(gconstpointer p) {
   for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
     double const t = scales[k];
     double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
-    for (int i = 0; i < PW85_DIM; i++) r[i] = t * r0[i];
-    for (int i = 0; i < PW85_SYM; i++) {
-      q1[i] = (t * t) * q1_0[i];
-      q2[i] = (t * t) * q2_0[i];
-    }
+    contract_scaled(t, r0, q1_0, q2_0, r, q1, q2);
     g_assert_cmpint(call(impl, r, q1, q2, out), ==, PW85_SUCCESS);
     worst_check(&w, k, out[0], ref[0], legacy_rel_err(out[0], ref[0]));
   }
