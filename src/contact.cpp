@@ -80,8 +80,32 @@ double warm_start(double a1, double a2) noexcept {
   return lambda > 0.0 ? lambda : 0.5;
 }
 
-double warm_start(Problem const &p) noexcept {
-  return warm_start(ldl_quad_inverse(p.f1, p.r), ldl_quad_inverse(p.f2, p.r));
+// Where the search starts, and where it goes when a Newton step on ω
+// (below) leaves the bracket of the root: Newton's step from an end of
+// [0, 1]. At λ = 0, ω = −1 and ω′ = 1 + ρ(0) (the λρ′ term vanishes), so the
+// step lands on 1/(1 + ρ(0)); at λ = 1 the step on ω/ρ = λ − (1−λ)/ρ,
+// whose value is 1 and slope 1 + 1/ρ(1), lands on 1/(1 + ρ(1)). Both are
+// exact when ρ is constant (two spheres), and close to the root when it is
+// near that end: a thin disc against a wide body, where ω has a plateau
+// that defeats Newton's steps from the middle. The values at the ends come
+// from the factors of Q1 and Q2: s = Q1⁻¹r at λ = 0 and Q2⁻¹r at λ = 1.
+// Non-finite values (ρ overflowing, say) are rejected where they are used.
+struct Start {
+  double lambda;  // λ0
+  double from_0;  // 1/(1 + ρ(0)), ρ(0)² = (sᵀQ2s)/(rᵀQ1⁻¹r), s = Q1⁻¹r
+  double from_1;  // 1/(1 + ρ(1)), ρ(1)² = (rᵀQ2⁻¹r)/(sᵀQ1s), s = Q2⁻¹r
+};
+
+Start warm_start(Problem const &p) noexcept {
+  double s0[dim], s1[dim], t[dim];
+  double const a1 = ldl_solve_quad(p.f1, p.r, s0);
+  double const a2 = ldl_solve_quad(p.f2, p.r, s1);
+  sym_mul(p.q2, s0, t);
+  double const p2_at_0 = dot(s0, t);
+  sym_mul(p.q1, s1, t);
+  double const p1_at_1 = dot(s1, t);
+  return {warm_start(a1, a2), 1.0 / (1.0 + std::sqrt(p2_at_0 / a1)),
+          1.0 / (1.0 + std::sqrt(a2 / p1_at_1))};
 }
 
 // −f(λ) for gsl_min, in plain double; finite for every λ, as Brent's method
@@ -105,7 +129,8 @@ double brent_objective(double lambda, void *params) noexcept {
 // ρ′ = (ρ/2)·(P2′/P2 − P1′/P1). Also an upper bound of cond(Q(λ)),
 // tr(Q)·tr(Q⁻¹), for the rounding margins of the overlap test.
 struct Terms {
-  double f, mu1, mu2;
+  double f;       // as brent_objective() computes it, bit for bit
+  double mu1, mu2;
   double omega;
   double domega;  // ω′ = 1 + ρ + λρ′
   double newton;  // λ − ω/ω′
@@ -113,7 +138,8 @@ struct Terms {
   double cond;    // ≥ cond(Q(λ))
 };
 
-// What terms() computes: each phase asks only for what it uses.
+// What terms() computes beyond f, ω and the fixed point: each phase asks
+// only for what it uses.
 enum : unsigned { want_newton = 1u, want_bounds = 2u };
 
 bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
@@ -122,7 +148,7 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   Ldl fac;
   if (!ldl_decomp(q, &fac)) return false;
   double s[dim], q1s[dim], q2s[dim];
-  ldl_solve(fac, p.r, s);
+  double const quad = ldl_solve_quad(fac, p.r, s);
   sym_mul(p.q1, s, q1s);
   sym_mul(p.q2, s, q2s);
   double const p1 = dot(s, q1s);
@@ -130,9 +156,10 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   if (!(p1 > 0.0 && p2 > 0.0)) return false;
   double const mu = 1.0 - lambda;
   double const rho = std::sqrt(p2 / p1);
+  t->f = lambda * mu * quad;  // the expression of f() in core.cpp
   t->omega = lambda * rho - mu;
   t->fixed = 1.0 / (1.0 + rho);
-  bool ok = std::isfinite(t->omega);
+  bool ok = std::isfinite(t->omega) && std::isfinite(t->f);
   if (want & want_newton) {
     double u[dim], v[dim];
     for (int i = 0; i < dim; ++i) u[i] = q2s[i] - q1s[i];  // (Q2 − Q1)·s
@@ -145,40 +172,56 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
     ok = ok && std::isfinite(t->newton);
   }
   if (want & want_bounds) {
-    t->f = lambda * mu * dot(p.r, s);
     t->mu1 = mu * mu * p1;
     t->mu2 = lambda * lambda * p2;
     t->cond = ldl_cond_bound(q, fac);
-    ok = ok && std::isfinite(t->f) && std::isfinite(t->cond);
+    ok = ok && std::isfinite(t->cond);
   }
   return ok;
 }
 
-// Safeguarded Newton on ω from *lambda, at most n steps: [lo, hi] holds the
-// root (ω(0) = −1 < 0 < ω(1) = ρ(1)) and narrows with every sign seen; a
-// step leaving it takes the sphere model's 1/(1 + ρ), else bisects.
-// Returns true when converged to the resolution of the plain ω; *domega is
-// then ω′ at *lambda.
-bool newton_on_omega(Problem const &p, int n, double *lambda,
-                     double *domega) noexcept {
+// The outcome of newton_on_omega().
+struct Search {
+  double lambda;    // the estimate of the root: the last iterate
+  double center;    // the last λ at which ω was evaluated
+  double f_center;  // f there, as brent_objective() computes it
+  double domega;    // ω′ there
+  bool converged;   // to the resolution of the plain ω
+};
+
+// Safeguarded Newton on ω from λ, at most n steps: [lo, hi] holds the root
+// (ω(0) = −1 < 0 < ω(1) = ρ(1)) and narrows with every sign seen. A step
+// leaving it takes Newton's step from the end of [0, 1] on the root's side
+// (Start), else the sphere model's 1/(1 + ρ), else bisects.
+void newton_on_omega(Problem const &p, Start const &start, double lambda,
+                     int n, Search *out) noexcept {
   double lo = 0.0;
   double hi = 1.0;
+  *out = Search{lambda, lambda, 0.0, 0.0, false};
   for (int k = 0; k < n; ++k) {
     Terms t;
-    if (!terms(*lambda, p, want_newton, &t)) return false;
-    *domega = t.domega;
-    if (t.omega == 0.0) return true;
+    if (!terms(lambda, p, want_newton, &t)) return;
+    out->center = lambda;
+    out->f_center = t.f;
+    out->domega = t.domega;
+    if (t.omega == 0.0) {
+      out->converged = true;
+      return;
+    }
     double next = t.newton;
-    if (std::fabs(next - *lambda) <=
-        newton_accept * std::min(*lambda, 1.0 - *lambda)) {
+    if (std::fabs(next - lambda) <=
+        newton_accept * std::min(lambda, 1.0 - lambda)) {
       // Newton's convergence is quadratic: after a step this small, λ is
       // within ~1e-10 relative, about the rounding noise of the plain ω,
       // whose further steps (and the signs that set [lo, hi]) would only
       // jitter. The compensated steps of finish() take over.
-      if (next > 0.0 && next < 1.0) *lambda = next;
-      return true;
+      if (next > 0.0 && next < 1.0) out->lambda = next;
+      out->converged = true;
+      return;
     }
-    (t.omega < 0.0 ? lo : hi) = *lambda;
+    (t.omega < 0.0 ? lo : hi) = lambda;
+    if (!(next > lo && next < hi))
+      next = t.omega > 0.0 ? start.from_0 : start.from_1;
     if (!(next > lo && next < hi)) next = t.fixed;
     if (next >= 1.0 && hi == 1.0) next = below_one;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -186,26 +229,31 @@ bool newton_on_omega(Problem const &p, int n, double *lambda,
     // an end of [0, 1], say): λ, which is one of them and inside (0, 1), is
     // as close to the root as doubles allow. (The midpoint would round onto
     // an end, where λ(1−λ) = 0.)
-    if (!(next > lo && next < hi)) return true;
-    *lambda = next;
+    if (!(next > lo && next < hi)) {
+      out->converged = true;
+      return;
+    }
+    lambda = next;
+    out->lambda = lambda;
   }
-  return false;
 }
+
+// The first bracket of Brent's method: [λ − δ, λ + δ] with this δ, which
+// already meets Brent's stopping test when it is verified.
+constexpr double bracket_half_width = 0.49 * PW85_LAMBDA_ATOL;
 
 // Brent's method on −f (ch. 5), GSL's gsl_min_fminimizer_brent, on a
 // bracket around λ verified to enclose the maximum: [λ − δ, λ + δ] with
-// δ = 0.49·PW85_LAMBDA_ATOL, widened ×16 while rounding noise in f (up to
+// δ = bracket_half_width, widened ×16 while rounding noise in f (up to
 // cond(Q)·ε) defeats the check, up to [0, 1] where f(0) = f(1) = 0.
-// Iterates to PW85_LAMBDA_ATOL or PW85_MAX_ITER. Writes Brent's estimate
-// and final bracket; returns PW85_SUCCESS or PW85_ENOMEM.
-int certify_with_brent(Problem &p, double lambda, double *estimate,
+// fm = brent_objective(λ). Iterates to PW85_LAMBDA_ATOL or PW85_MAX_ITER.
+// Writes Brent's estimate and final bracket; returns PW85_SUCCESS or
+// PW85_ENOMEM.
+int certify_with_brent(Problem &p, double lambda, double fm, double *estimate,
                        double *lower, double *upper) noexcept {
-  double fm = brent_objective(lambda, &p);
   double a = 0.0, b = 1.0, fa = 0.0, fb = 0.0;
   bool enclosed = false;
-  // Half-width 0.49·PW85_LAMBDA_ATOL first: when that bracket is verified,
-  // it already meets Brent's stopping test and no iteration is needed.
-  for (double delta = 0.49 * PW85_LAMBDA_ATOL; !enclosed && delta < 0.5;
+  for (double delta = bracket_half_width; !enclosed && delta < 0.5;
        delta *= 16.0) {
     a = lambda - delta;
     b = lambda + delta;
@@ -306,21 +354,35 @@ bool finish(Problem const &p, double domega, double *lambda,
 // μ² and λ of a prepared problem with r ≠ 0; out = {μ²(problem), λ}.
 int solve(Problem &p, double out[2]) noexcept {
   // 1. Warm start, refined by Newton on ω.
-  double lambda = warm_start(p);
-  double domega = 0.0;
-  bool converged = newton_on_omega(p, warm_newton_iter, &lambda, &domega);
-  // 2. Brent's method certifies the maximum on a bracket around λ.
-  double estimate = lambda, lower = 0.0, upper = 1.0;
-  int const status = certify_with_brent(p, lambda, &estimate, &lower, &upper);
+  Start const start = warm_start(p);
+  Search search;
+  newton_on_omega(p, start, start.lambda, warm_newton_iter, &search);
+  // 2. Brent's method certifies the maximum on a bracket around the last
+  // point where Newton evaluated f, if the root lies well inside that
+  // bracket (f there is then known), else around the estimate.
+  double center = search.lambda;
+  double fm = 0.0;
+  if (search.converged &&
+      std::fabs(search.lambda - search.center) <= 0.25 * bracket_half_width) {
+    center = search.center;
+    fm = -search.f_center;
+  } else {
+    fm = brent_objective(center, &p);
+  }
+  double estimate = center, lower = 0.0, upper = 1.0;
+  int const status =
+      certify_with_brent(p, center, fm, &estimate, &lower, &upper);
   if (status != PW85_SUCCESS) return status;
   // 3. Newton to finish: from the warm λ if Brent's bracket (widened by its
   // tolerance) confirms it, else from Brent's estimate, at most
-  // PW85_NR_ITER plain steps; then one compensated step.
-  if (!converged || lambda < lower - PW85_LAMBDA_ATOL ||
+  // PW85_NR_ITER plain steps; then compensated steps.
+  double lambda = search.lambda;
+  double domega = search.domega;
+  if (!search.converged || lambda < lower - PW85_LAMBDA_ATOL ||
       lambda > upper + PW85_LAMBDA_ATOL) {
-    lambda = estimate;
-    converged = newton_on_omega(p, PW85_NR_ITER, &lambda, &domega);
-    if (!converged) lambda = estimate;
+    newton_on_omega(p, start, estimate, PW85_NR_ITER, &search);
+    lambda = search.converged ? search.lambda : estimate;
+    domega = search.domega;
   }
   double mu2 = 0.0;
   if (!finish(p, domega, &lambda, &mu2)) {

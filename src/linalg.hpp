@@ -87,12 +87,25 @@ PW85_INLINE void ldl_forward(Ldl const &f, double const b[dim],
   z[2] = b[2] - f.l2 * z[0] - f.l4 * z[1];
 }
 
-// bᵀ·Q⁻¹·b, a sum of non-negative terms.
+// bᵀ·Q⁻¹·b = Σ zᵢ²/dᵢ, a sum of non-negative terms, from z = L⁻¹·b.
+PW85_INLINE double ldl_quad(Ldl const &f, double const z[dim]) noexcept {
+  return z[0] * z[0] * f.inv_d[0] + z[1] * z[1] * f.inv_d[1] +
+         z[2] * z[2] * f.inv_d[2];
+}
+
+// bᵀ·Q⁻¹·b.
 PW85_INLINE double ldl_quad_inverse(Ldl const &f, double const b[dim]) noexcept {
   double z[dim];
   ldl_forward(f, b, z);
-  return z[0] * z[0] * f.inv_d[0] + z[1] * z[1] * f.inv_d[1] +
-         z[2] * z[2] * f.inv_d[2];
+  return ldl_quad(f, z);
+}
+
+// x = Q⁻¹·b from z = L⁻¹·b (backward substitution with D⁻¹ and Lᵀ).
+PW85_INLINE void ldl_backward(Ldl const &f, double const z[dim],
+                              double x[dim]) noexcept {
+  x[2] = z[2] * f.inv_d[2];
+  x[1] = z[1] * f.inv_d[1] - f.l4 * x[2];
+  x[0] = z[0] * f.inv_d[0] - f.l1 * x[1] - f.l2 * x[2];
 }
 
 // x = Q⁻¹·b. x may alias b.
@@ -100,9 +113,17 @@ PW85_INLINE void ldl_solve(Ldl const &f, double const b[dim],
                            double x[dim]) noexcept {
   double z[dim];
   ldl_forward(f, b, z);
-  x[2] = z[2] * f.inv_d[2];
-  x[1] = z[1] * f.inv_d[1] - f.l4 * x[2];
-  x[0] = z[0] * f.inv_d[0] - f.l1 * x[1] - f.l2 * x[2];
+  ldl_backward(f, z, x);
+}
+
+// x = Q⁻¹·b, returning bᵀ·Q⁻¹·b from the same forward pass, bitwise equal
+// to ldl_quad_inverse(f, b).
+PW85_INLINE double ldl_solve_quad(Ldl const &f, double const b[dim],
+                                  double x[dim]) noexcept {
+  double z[dim];
+  ldl_forward(f, b, z);
+  ldl_backward(f, z, x);
+  return ldl_quad(f, z);
 }
 
 // An upper bound of the 2-norm condition number of Q = L·D·Lᵀ:
