@@ -4,6 +4,7 @@
 #include "core.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -37,10 +38,20 @@ int exponent(double x) noexcept {
 
 
 
-double max_abs(double const *x, int n) noexcept {
-  double m = 0.0;
-  for (int i = 0; i < n; ++i) m = std::max(m, std::fabs(x[i]));
-  return m;
+// The largest and smallest |x| of the diagonals of q1 and q2.
+void diagonal_range(double const q1[sym], double const q2[sym], double *lo,
+                    double *hi) noexcept {
+  double a = std::fabs(q1[0]);
+  double b = a;
+  for (double const *q : {q1, q2}) {
+    for (int i : diag_of) {
+      double const d = std::fabs(q[i]);
+      a = std::min(a, d);
+      b = std::max(b, d);
+    }
+  }
+  *lo = a;
+  *hi = b;
 }
 
 }  // namespace
@@ -64,18 +75,16 @@ void scale(double const *x, int n, int k, double *y) noexcept {
 
 bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
              Scaled *s) noexcept {
-  double const rmax = max_abs(r, dim);
+  double const rmax =
+      std::max(std::max(std::fabs(r[0]), std::fabs(r[1])), std::fabs(r[2]));
   s->r_is_zero = rmax == 0.0;
   int const er = exponent(rmax);
-  int emin = exponent(q1[0]);
-  int emax = emin;
-  for (int i : diag_of) {
-    for (double d : {q1[i], q2[i]}) {
-      int const e = exponent(d);
-      emin = e < emin ? e : emin;
-      emax = e > emax ? e : emax;
-    }
-  }
+  // The exponent is monotone in |x|: those of the extreme diagonal entries
+  // are the extreme exponents.
+  double dmin = 0.0, dmax = 0.0;
+  diagonal_range(q1, q2, &dmin, &dmax);
+  int const emin = exponent(dmin);
+  int const emax = exponent(dmax);
   int const eq = emin + (emax - emin) / 2;
   scale(r, dim, -er, s->r);
   scale(q1, sym, -eq, s->q1);
@@ -89,11 +98,11 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
 }
 
 bool all_finite(double const *x, int n) noexcept {
-  // x − x is 0 for finite x and NaN for NaN and ±∞: one test, no branch
-  // per entry.
-  double acc = 0.0;
-  for (int i = 0; i < n; ++i) acc += x[i] - x[i];
-  return acc == 0.0;
+  // |x| ≤ DBL_MAX is false for NaN and ±∞. The tests are independent of
+  // each other (a running sum would chain n additions), with no branch.
+  bool finite = true;
+  for (int i = 0; i < n; ++i) finite &= std::fabs(x[i]) <= DBL_MAX;
+  return finite;
 }
 
 bool cholesky_decomp(double const a[sym], double l[sym]) noexcept {
