@@ -9,6 +9,15 @@
 
 // Force inlining, so that the helpers below are compiled for the target of
 // the function that uses them (see PW85_FMA_CLONES).
+// PW85_UNROLL before a loop of 3 to 9 iterations unrolls it completely, so
+// that index arithmetic (sym_index, row_of, col_of) folds into constants:
+// -O2 does not unroll by itself.
+#if defined(__GNUC__)
+#define PW85_UNROLL _Pragma("GCC unroll 9")
+#else
+#define PW85_UNROLL
+#endif
+
 #if defined(__GNUC__)
 #define PW85_INLINE inline __attribute__((always_inline))
 #else

@@ -50,6 +50,7 @@ PW85_INLINE void combine(double lambda, double const q1[sym],
                          double const q2[sym], double q[sym]) noexcept {
   PW85_COUNT_EVALUATION();
   double const mu = 1.0 - lambda;
+  PW85_UNROLL
   for (int i = 0; i < sym; ++i) q[i] = mu * q1[i] + lambda * q2[i];
 }
 
@@ -143,6 +144,7 @@ PW85_INLINE void combine_dd(double lambda, double const q1[sym],
                             double lo[sym]) noexcept {
   PW85_COUNT_EVALUATION();
   dd const mu = two_sum(1.0, -lambda);
+  PW85_UNROLL
   for (int i = 0; i < sym; ++i) {
     dd const a = two_prod(mu.hi, q1[i]);
     dd const b = two_prod(lambda, q2[i]);
@@ -176,9 +178,11 @@ struct Dot2 {
 PW85_INLINE void exact_residual(double const hi[sym], double const lo[sym],
                                 double const r[dim], double const s[dim],
                                 double rho[dim]) noexcept {
+  PW85_UNROLL
   for (int i = 0; i < dim; ++i) {
     Dot2 acc{r[i], 0.0};
     double lo_part = 0.0;
+    PW85_UNROLL
     for (int j = 0; j < dim; ++j) {
       int const k = sym_index(i, j);
       acc.add_product(-hi[k], s[j]);
@@ -194,6 +198,7 @@ PW85_INLINE void exact_residual(double const hi[sym], double const lo[sym],
 PW85_INLINE double quad_form_dd(double const a[sym],
                                 double const s[dim]) noexcept {
   Dot2 acc{0.0, 0.0};
+  PW85_UNROLL
   for (int k = 0; k < sym; ++k) {
     double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;  // exact
     dd const p = two_prod(factor * a[k], s[row_of[k]]);
@@ -206,6 +211,7 @@ PW85_INLINE double quad_form_dd(double const a[sym],
 // x·y as an unevaluated sum hi + lo, to twice the working precision.
 PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
   Dot2 acc{0.0, 0.0};
+  PW85_UNROLL
   for (int i = 0; i < dim; ++i) acc.add_product(x[i], y[i]);
   return two_sum(acc.sum, acc.err);
 }
@@ -240,9 +246,11 @@ PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
   bool const refine = ldl_cond_bound(hi, fac) > refine_cond;
   if (refine || with_p) {
     ldl_solve(fac, rho, ds);
+    PW85_UNROLL
     for (int i = 0; i < dim; ++i) ds[i] += s[i];  // the refined s
   }
   if (refine) {
+    PW85_UNROLL
     for (int i = 0; i < dim; ++i) s[i] = ds[i];
     exact_residual(hi, lo, r, s, rho);
   }
