@@ -130,12 +130,12 @@ struct Terms {
   double omega;
   double domega;  // ω′ = 1 + ρ + λρ′
   double newton;  // λ − ω/ω′
-  double fixed;   // 1/(1 + ρ): the root of ω if ρ were constant
+  double rho;     // ρ: 1/(1 + ρ) is the root of ω if ρ were constant
   double cond;    // ≥ cond(Q(λ))
 };
 
-// What terms() computes beyond f, ω and the fixed point: each phase asks
-// only for what it uses.
+// What terms() computes beyond f, ω and ρ: each phase asks only for what
+// it uses.
 enum : unsigned { want_newton = 1u, want_bounds = 2u };
 
 bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
@@ -151,16 +151,26 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   double const p2 = dot(s, q2s);
   if (!(p1 > 0.0 && p2 > 0.0)) return false;
   double const mu = 1.0 - lambda;
-  double const rho = std::sqrt(p2 / p1);
+  // One division for ρ and ρ′/ρ: k = 1/(P1·P2), ρ = P2·√k, unless P1·P2
+  // leaves the normal range.
+  double const p12 = p1 * p2;
+  bool const normal = p12 >= DBL_MIN && p12 <= DBL_MAX;
+  double const k = normal ? 1.0 / p12 : 0.0;
+  double const rho = normal ? p2 * std::sqrt(k) : std::sqrt(p2 / p1);
   t->f = lambda * mu * quad;  // the expression of f() in core.cpp
   t->omega = lambda * rho - mu;
-  t->fixed = 1.0 / (1.0 + rho);
+  t->rho = rho;
   bool ok = std::isfinite(t->omega) && std::isfinite(t->f);
   if (want & want_newton) {
     double u[dim], v[dim];
+    PW85_UNROLL
     for (int i = 0; i < dim; ++i) u[i] = q2s[i] - q1s[i];  // (Q2 − Q1)·s
     ldl_solve(fac, u, v);
-    double const drho = rho * (dot(q1s, v) / p1 - dot(q2s, v) / p2);
+    double const a1 = dot(q1s, v);
+    double const a2 = dot(q2s, v);
+    // ρ′/ρ = sᵀQ1v/P1 − sᵀQ2v/P2
+    double const log_drho = normal ? (a1 * p2 - a2 * p1) * k : a1 / p1 - a2 / p2;
+    double const drho = rho * log_drho;
     t->domega = 1.0 + rho + lambda * drho;
     // λ − ω/ω′ rearranged so that it does not cancel when the root is far
     // smaller than λ (ρ ≫ 1: a thin disc).
@@ -224,7 +234,7 @@ void newton_on_omega(Problem const &p, double lambda, int n,
       if (!tried) next = step_from_end(p, t.omega > 0.0);
       tried = true;
     }
-    if (!(next > lo && next < hi)) next = t.fixed;
+    if (!(next > lo && next < hi)) next = 1.0 / (1.0 + t.rho);
     if (next >= 1.0 && hi == 1.0) next = below_one;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     // No double strictly between lo and hi (the root lies within an ulp of
@@ -477,7 +487,7 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
     }
     if (k == 1 || !terms(lambda, p, want_newton, &t)) break;
     double next = t.newton;
-    if (!(next > 0.0 && next < 1.0)) next = t.fixed;
+    if (!(next > 0.0 && next < 1.0)) next = 1.0 / (1.0 + t.rho);
     if (!(next > 0.0 && next < 1.0)) break;
     lambda = next;
   }
