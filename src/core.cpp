@@ -38,20 +38,41 @@ int exponent(double x) noexcept {
 
 
 
-// The largest and smallest |x| of the diagonals of q1 and q2.
+// The smallest and largest |x| of the diagonals of q1 and q2, written out:
+// -O2 leaves loops rolled, and this runs on every call.
 void diagonal_range(double const q1[sym], double const q2[sym], double *lo,
                     double *hi) noexcept {
-  double a = std::fabs(q1[0]);
-  double b = a;
-  for (double const *q : {q1, q2}) {
-    for (int i : diag_of) {
-      double const d = std::fabs(q[i]);
-      a = std::min(a, d);
-      b = std::max(b, d);
-    }
+  double const a = std::fabs(q1[0]), b = std::fabs(q1[3]), c = std::fabs(q1[5]);
+  double const d = std::fabs(q2[0]), e = std::fabs(q2[3]), f = std::fabs(q2[5]);
+  *lo = std::min(std::min(std::min(a, b), std::min(c, d)), std::min(e, f));
+  *hi = std::max(std::max(std::max(a, b), std::max(c, d)), std::max(e, f));
+}
+
+// y = x·2^k for N entries (scale(), unrolled).
+template <int N>
+inline void scale_n(double const *x, int k, double *y) noexcept {
+  if (k >= -1022 && k <= 1023) {
+    double const factor = pow2(k);
+    PW85_UNROLL
+    for (int i = 0; i < N; ++i) y[i] = x[i] * factor;
+  } else {
+    for (int i = 0; i < N; ++i) y[i] = std::ldexp(x[i], k);
   }
-  *lo = a;
-  *hi = b;
+}
+
+// True when the N entries of x are finite: x − x is 0 for finite x and NaN
+// for NaN and ±∞; the sum is taken pairwise.
+template <int N>
+inline bool finite_n(double const *x) noexcept {
+  double acc[N];
+  PW85_UNROLL
+  for (int i = 0; i < N; ++i) acc[i] = x[i] - x[i];
+  PW85_UNROLL
+  for (int w = 1; w < N; w *= 2) {
+    PW85_UNROLL
+    for (int i = 0; i + w < N; i += 2 * w) acc[i] += acc[i + w];
+  }
+  return acc[0] == 0.0;
 }
 
 }  // namespace
@@ -86,9 +107,9 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
   int const emin = exponent(dmin);
   int const emax = exponent(dmax);
   int const eq = emin + (emax - emin) / 2;
-  scale(r, dim, -er, s->r);
-  scale(q1, sym, -eq, s->q1);
-  scale(q2, sym, -eq, s->q2);
+  scale_n<dim>(r, -er, s->r);
+  scale_n<sym>(q1, -eq, s->q1);
+  scale_n<sym>(q2, -eq, s->q2);
   s->shift = 2 * er - eq;
   // A diagonal entry overflows only if the diagonals span more than the
   // range of doubles (emax − eq > 1024); an off-diagonal entry cannot
@@ -217,7 +238,7 @@ int check_pointers_and_finite(double const *r, double const *q1,
                               double const *q2, void const *out) noexcept {
   if (r == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
     return PW85_EFAULT;
-  if (!all_finite(r, dim) || !all_finite(q1, sym) || !all_finite(q2, sym))
+  if (!(finite_n<dim>(r) && finite_n<sym>(q1) && finite_n<sym>(q2)))
     return PW85_EDOM;
   return PW85_SUCCESS;
 }
