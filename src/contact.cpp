@@ -447,18 +447,17 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   // μ² < 1 ⟺ μ²(problem) < 2^−shift (exact; 0 or +∞ out of range, which
   // decides the comparison correctly since μ²(problem) is finite and > 0).
   double const one = pow2(-p.shift);
-  // Bounds valid at every λ (ch. 5, eqs. (1a)–(1b)): f(λ) ≤ μ² because μ²
-  // is the maximum of f; μ² ≤ max(μ1², μ2²) because the point x0(λ) lies in
-  // both ellipsoids scaled by max(μ1, μ2), which therefore meet. In plain
-  // double each is off by at most a few cond(Q(λ))·ε (f), or that times
-  // √cond(Qᵢ) (μᵢ², a quadratic form in s), relative: the margins take 32
-  // times the bounds tr·tr(⁻¹) of these condition numbers.
+  // Bounds that need no λ, the cheapest first: sphere_lower_bound(), then
+  // at λ = 0 and 1, where the point x0 is a centre, μ² ≤ min(rᵀQ1⁻¹r,
+  // rᵀQ2⁻¹r), computed from the factors of Q1 and Q2 with an error of a few
+  // cond(Qᵢ)·ε relative: the margin takes 32 times the bound tr·tr(⁻¹) of
+  // cond(Qᵢ).
+  if (sphere_lower_bound(p) > one) {
+    *result = 1;
+    return PW85_SUCCESS;
+  }
   double const cond1 = ldl_cond_bound(p.q1, p.f1);
   double const cond2 = ldl_cond_bound(p.q2, p.f2);
-  double const cond_q = std::sqrt(std::max(cond1, cond2));
-  // Bounds that need no λ. At λ = 0 and 1 the point x0 is a centre, so
-  // μ² ≤ min(rᵀQ1⁻¹r, rᵀQ2⁻¹r) (computed from the factors of Q1, Q2: error
-  // a few cond(Qᵢ)·ε); and sphere_lower_bound().
   double const a1 = ldl_quad_inverse(p.f1, p.r);
   double const a2 = ldl_quad_inverse(p.f2, p.r);
   double const m_a = 32.0 * DBL_EPSILON * std::max(cond1, cond2);
@@ -466,10 +465,13 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
     *result = -1;
     return PW85_SUCCESS;
   }
-  if (sphere_lower_bound(p) > one) {
-    *result = 1;
-    return PW85_SUCCESS;
-  }
+  // Bounds valid at every λ (ch. 5, eqs. (1a)–(1b)): f(λ) ≤ μ² because μ²
+  // is the maximum of f; μ² ≤ max(μ1², μ2²) because the point x0(λ) lies in
+  // both ellipsoids scaled by max(μ1, μ2), which therefore meet. In plain
+  // double each is off by at most a few cond(Q(λ))·ε (f), or that times
+  // √cond(Qᵢ) (μᵢ², a quadratic form in s), relative: the margins take 32
+  // times the bounds tr·tr(⁻¹) of these condition numbers.
+  double const cond_q = std::sqrt(std::max(cond1, cond2));
   double lambda = warm_start(a1, a2);
   // At λ0, then (rarely needed) one Newton step on ω further.
   for (int k = 0; k < 2; ++k) {

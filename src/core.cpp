@@ -61,18 +61,14 @@ inline void scale_n(double const *x, int k, double *y) noexcept {
 }
 
 // True when the N entries of x are finite: x − x is 0 for finite x and NaN
-// for NaN and ±∞; the sum is taken pairwise.
+// for NaN and ±∞. (The additions form a chain, but nothing waits for it:
+// the branch on the result is predicted.)
 template <int N>
 inline bool finite_n(double const *x) noexcept {
-  double acc[N];
+  double acc = 0.0;
   PW85_UNROLL
-  for (int i = 0; i < N; ++i) acc[i] = x[i] - x[i];
-  PW85_UNROLL
-  for (int w = 1; w < N; w *= 2) {
-    PW85_UNROLL
-    for (int i = 0; i + w < N; i += 2 * w) acc[i] += acc[i + w];
-  }
-  return acc[0] == 0.0;
+  for (int i = 0; i < N; ++i) acc += x[i] - x[i];
+  return acc == 0.0;
 }
 
 }  // namespace
@@ -119,11 +115,9 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
 }
 
 bool all_finite(double const *x, int n) noexcept {
-  // |x| ≤ DBL_MAX is false for NaN and ±∞. The tests are independent of
-  // each other (a running sum would chain n additions), with no branch.
-  bool finite = true;
-  for (int i = 0; i < n; ++i) finite &= std::fabs(x[i]) <= DBL_MAX;
-  return finite;
+  double acc = 0.0;  // as finite_n()
+  for (int i = 0; i < n; ++i) acc += x[i] - x[i];
+  return acc == 0.0;
 }
 
 bool cholesky_decomp(double const a[sym], double l[sym]) noexcept {
