@@ -132,6 +132,7 @@ struct Terms {
   double newton;  // λ − ω/ω′
   double rho;     // ρ: 1/(1 + ρ) is the root of ω if ρ were constant
   double cond;    // ≥ cond(Q(λ))
+  Plain plain;    // the factors of Q(λ) and s
 };
 
 // What terms() computes beyond f, ω and ρ: each phase asks only for what
@@ -141,9 +142,10 @@ enum : unsigned { want_newton = 1u, want_bounds = 2u };
 bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   double q[sym];
   combine(lambda, p.q1, p.q2, q);
-  Ldl fac;
+  Ldl &fac = t->plain.fac;
   if (!ldl_decomp(q, &fac)) return false;
-  double s[dim], q1s[dim], q2s[dim];
+  double *s = t->plain.s;
+  double q1s[dim], q2s[dim];
   double const quad = ldl_solve_quad(fac, p.r, s);
   sym_mul(p.q1, s, q1s);
   sym_mul(p.q2, s, q2s);
@@ -192,6 +194,7 @@ struct Search {
   double center;    // the last λ at which ω was evaluated
   double f_center;  // f there, as brent_objective() computes it
   double domega;    // ω′ there
+  Plain plain;      // the factors of Q and s there
   bool converged;   // to the resolution of the plain ω
 };
 
@@ -206,13 +209,14 @@ void newton_on_omega(Problem const &p, double lambda, int n,
   bool tried_1 = false;
   double lo = 0.0;
   double hi = 1.0;
-  *out = Search{lambda, lambda, 0.0, 0.0, false};
+  *out = Search{lambda, lambda, 0.0, 0.0, {}, false};
   for (int k = 0; k < n; ++k) {
     Terms t;
     if (!terms(lambda, p, want_newton, &t)) return;
     out->center = lambda;
     out->f_center = t.f;
     out->domega = t.domega;
+    out->plain = t.plain;
     if (t.omega == 0.0) {
       out->converged = true;
       return;
@@ -321,16 +325,20 @@ constexpr int accurate_iter = 3;
 // the rounding of a double, so the step is taken and the iteration stops.
 constexpr double accurate_accept = 1e-7;
 
+// See solve().
+constexpr double finish_from_center = 1e-8;
+
 PW85_FMA_CLONES
-bool finish(Problem const &p, double domega, double *lambda,
-            double *mu2) noexcept {
+bool finish(Problem const &p, double domega, double *lambda, double *mu2,
+            Plain const *plain) noexcept {
   double best = 0.0, best_lambda = *lambda;
   double prev_lambda = 0.0, prev_omega = 0.0;
   bool found = false;
   for (int k = 0; k < accurate_iter; ++k) {
     double const l0 = *lambda;
     Accurate a;
-    if (!accurate_terms(l0, p.r, p.q1, p.q2, true, &a)) break;
+    if (!accurate_terms(l0, p.r, p.q1, p.q2, true, &a, k == 0 ? plain : nullptr))
+      break;
     if (!found || a.f > best) best = a.f, best_lambda = l0;
     found = true;
     double const rho = std::sqrt(a.p2 / a.p1);
@@ -349,7 +357,8 @@ bool finish(Problem const &p, double domega, double *lambda,
       double const correction = 0.5 * root_p1 * omega * sum_mu * step;
       if (correction >= 0.0 && correction <= 1e-10 * a.f) {
         *lambda = next;
-        *mu2 = std::max(a.f + correction, best);
+        // Added to f before f is rounded: the correction can reach an ulp.
+        *mu2 = std::max(a.f + (a.f_lo + correction), best);
         return true;
       }
     }
@@ -387,16 +396,25 @@ int solve(Problem &p, double out[2]) noexcept {
   // 3. Newton to finish: from the warm λ if Brent's bracket (widened by its
   // tolerance) confirms it, else from Brent's estimate, at most
   // PW85_NR_ITER plain steps; then compensated steps.
-  double lambda = search.lambda;
-  double domega = search.domega;
-  if (!search.converged || lambda < lower - PW85_LAMBDA_ATOL ||
-      lambda > upper + PW85_LAMBDA_ATOL) {
+  // The compensated steps start from the last point where Newton evaluated
+  // ω, whose factors they reuse, when Newton's last step from there was
+  // below finish_from_center (relative): the first compensated step is as
+  // small, and leaves λ off by its square.
+  if (!search.converged || search.lambda < lower - PW85_LAMBDA_ATOL ||
+      search.lambda > upper + PW85_LAMBDA_ATOL) {
     newton_on_omega(p, estimate, PW85_NR_ITER, &search);
-    lambda = search.converged ? search.lambda : estimate;
-    domega = search.domega;
+    if (!search.converged) search.lambda = estimate;
+  }
+  double lambda = search.lambda;
+  Plain const *plain = nullptr;
+  double const c = search.center;
+  if (search.converged && std::fabs(search.lambda - c) <=
+                              finish_from_center * std::min(c, 1.0 - c)) {
+    lambda = c;
+    plain = &search.plain;
   }
   double mu2 = 0.0;
-  if (!finish(p, domega, &lambda, &mu2)) {
+  if (!finish(p, search.domega, &lambda, &mu2, plain)) {
     // Q(λ) failed to factorise in double-double (rounding only): fall back
     // to Brent's estimate in plain arithmetic.
     lambda = estimate;

@@ -227,21 +227,37 @@ PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
 // Returns false when Q(λ) does not factorise.
 struct Accurate {
   double f;
+  double f_lo;  // f + f_lo: f before its rounding to double
   double p1;
   double p2;
 };
 
 constexpr double refine_cond = 1e6;
 
+// The plain factorisation and solution at λ, where the caller has them:
+// Q(λ) rounded to double is exactly the hi part of combine_dd() (both round
+// (1−λ)·Q1 and λ·Q2, then their sum, once), so they are those computed here.
+struct Plain {
+  Ldl fac;
+  double s[dim];  // Q(λ)⁻¹·r
+};
+
 PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
                                 double const q1[sym], double const q2[sym],
-                                bool with_p, Accurate *out) noexcept {
+                                bool with_p, Accurate *out,
+                                Plain const *plain = nullptr) noexcept {
   double hi[sym], lo[sym];
   combine_dd(lambda, q1, q2, hi, lo);
   Ldl fac;
-  if (!ldl_decomp(hi, &fac)) return false;
   double s[dim], rho[dim], ds[dim];
-  ldl_solve(fac, r, s);
+  if (plain != nullptr) {
+    fac = plain->fac;
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) s[i] = plain->s[i];
+  } else {
+    if (!ldl_decomp(hi, &fac)) return false;
+    ldl_solve(fac, r, s);
+  }
   exact_residual(hi, lo, r, s, rho);
   bool const refine = ldl_cond_bound(hi, fac) > refine_cond;
   if (refine || with_p) {
@@ -256,7 +272,9 @@ PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
   }
   dd const rs = dd_add(dot_dd(r, s), dot(s, rho));     // rᵀQ⁻¹r − eᵀQe
   dd const w = dd_mul(two_sum(1.0, -lambda), lambda);  // λ(1−λ)
-  out->f = dd_round(dd_mul(w, rs));
+  dd const value = dd_mul(w, rs);  // normalised: value.hi = dd_round(value)
+  out->f = value.hi;
+  out->f_lo = value.lo;
   if (with_p) {
     out->p1 = quad_form_dd(q1, ds);
     out->p2 = quad_form_dd(q2, ds);
