@@ -111,7 +111,7 @@ double step_from_end(Problem const &p, bool from_zero) noexcept {
 double brent_objective(double lambda, void *params) noexcept {
   auto const *p = static_cast<Problem const *>(params);
   double value = 0.0;
-  if (!f(lambda, p->r, p->q1, p->q2, &value) || !std::isfinite(value))
+  if (!f_plain(lambda, p->r, p->q1, p->q2, &value) || !std::isfinite(value))
     return 0.0;
   return -value;
 }
@@ -159,7 +159,7 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   bool const normal = p12 >= DBL_MIN && p12 <= DBL_MAX;
   double const k = normal ? 1.0 / p12 : 0.0;
   double const rho = normal ? p2 * std::sqrt(k) : std::sqrt(p2 / p1);
-  t->f = lambda * mu * quad;  // the expression of f() in core.cpp
+  t->f = lambda * mu * quad;  // the expression of f_plain() (linalg.hpp)
   t->omega = lambda * rho - mu;
   t->rho = rho;
   bool ok = std::isfinite(t->omega) && std::isfinite(t->f);
@@ -441,9 +441,16 @@ int contact_function(double const r[dim], double const q1[sym],
   status = solve(p, res);
   if (status != PW85_SUCCESS) return status;
   // Beyond the documented domain (cond(Qᵢ) far above 1/ε) the computed f
-  // can be meaningless; μ² never falls below this rigorous bound.
-  double const floor = sphere_lower_bound(p);
-  double const mu2 = std::ldexp(res[0] > floor ? res[0] : floor, p.shift);
+  // can be meaningless; μ² never falls below the rigorous bound
+  // sphere_lower_bound() ≤ |r|²/(tr Q1 + tr Q2), which is computed only when
+  // μ² is below the latter.
+  double mu2 = res[0];
+  double const tr = p.q1[0] + p.q1[3] + p.q1[5] + p.q2[0] + p.q2[3] + p.q2[5];
+  if (!(mu2 * tr >= dot(p.r, p.r))) {
+    double const floor = sphere_lower_bound(p);
+    mu2 = mu2 > floor ? mu2 : floor;  // also when mu2 is NaN
+  }
+  mu2 = times_pow2(mu2, p.shift);
   out[1] = res[1];
   if (std::isinf(mu2)) {
     out[0] = HUGE_VAL;

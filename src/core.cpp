@@ -81,6 +81,11 @@ double pow2(int k) noexcept {
   return x;
 }
 
+double times_pow2(double x, int k) noexcept {
+  // x·2^k is rounded once, as ldexp rounds it, when 2^k is a double.
+  return k >= -1022 && k <= 1023 ? x * pow2(k) : std::ldexp(x, k);
+}
+
 void scale(double const *x, int n, int k, double *y) noexcept {
   if (k >= -1022 && k <= 1023) {
     double const factor = pow2(k);
@@ -166,14 +171,7 @@ void spheroid(double a, double c, double const n[dim], double q[sym]) noexcept {
 
 bool f(double lambda, double const r[dim], double const q1[sym],
        double const q2[sym], double *value) noexcept {
-  double q[sym];
-  combine(lambda, q1, q2, q);
-  Ldl fac;
-  if (!ldl_decomp(q, &fac)) return false;
-  // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ with z = L⁻¹·r: one triangular solve instead of the
-  // two of ch. 4, eq. (4), no square root, and no cancellation.
-  *value = lambda * (1.0 - lambda) * ldl_quad_inverse(fac, r);
-  return true;
+  return f_plain(lambda, r, q1, q2, value);
 }
 
 PW85_FMA_CLONES

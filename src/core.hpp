@@ -58,6 +58,10 @@ bool is_positive_definite(double const q[sym]) noexcept;
 // cost more than the rest of the rescaling); ldexp otherwise.
 double pow2(int k) noexcept;
 
+// x·2^k, as std::ldexp(x, k) computes it, without a libm call when 2^k is a
+// normal double.
+double times_pow2(double x, int k) noexcept;
+
 // y = x·2^k for n entries: exact unless a result leaves the normal range.
 void scale(double const *x, int n, int k, double *y) noexcept;
 

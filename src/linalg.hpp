@@ -137,6 +137,20 @@ PW85_INLINE double ldl_cond_bound(double const q[sym], Ldl const &f) noexcept {
   return (q[0] + q[3] + q[5]) * tr_inv;
 }
 
+// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r in plain double (core.hpp, f()):
+// rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ with z = L⁻¹·r, one triangular solve instead of the
+// two of ch. 4, eq. (4), no square root, and no cancellation.
+PW85_INLINE bool f_plain(double lambda, double const r[dim],
+                         double const q1[sym], double const q2[sym],
+                         double *value) noexcept {
+  double q[sym];
+  combine(lambda, q1, q2, q);
+  Ldl fac;
+  if (!ldl_decomp(q, &fac)) return false;
+  *value = lambda * (1.0 - lambda) * ldl_quad_inverse(fac, r);
+  return true;
+}
+
 // Q(λ) in double-double: hi + lo equals (1−λ)·Q1 + λ·Q2 to ~2⁻¹⁰⁴ relative
 // (1 − λ itself is carried as hi + lo; lo is not renormalised).
 PW85_INLINE void combine_dd(double lambda, double const q1[sym],
