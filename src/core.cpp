@@ -4,7 +4,6 @@
 #include "core.hpp"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
