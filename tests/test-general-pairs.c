@@ -16,9 +16,12 @@ static double const *r12(size_t n) { return pairs.r12 + 3 * n; }
 static double const *q1(size_t n) { return pairs.q1 + 6 * n; }
 static double const *q2(size_t n) { return pairs.q2 + 6 * n; }
 
-/* μ² to one ulp and λ to 1e-9 (issue 6); measured worst errors printed. */
+/* μ² correctly rounded (as the README and the docs claim: the reference is
+ * the correctly rounded μ², so any difference is at least an ulp; issue 6
+ * asks for one ulp) and λ to 1e-9 (issue 6); measured worst errors
+ * printed. */
 static void test_contact_function(void) {
-  double worst_mu = 0., worst_lambda = 0.;
+  double worst_mu = 0., worst_lambda = 0., got_mu = 0.;
   size_t at_mu = 0, at_lambda = 0;
   for (size_t n = 0; n < pairs.count; n++) {
     double out[2];
@@ -27,15 +30,15 @@ static void test_contact_function(void) {
       g_error("case %zu: status %d (%s)", n, status, pw85_strerror(status));
     double const e_mu = rel_err(out[0], pairs.MU2[n]);
     double const e_l = fabs(out[1] - pairs.LAMBDA[n]);
-    if (!(e_mu <= worst_mu)) worst_mu = e_mu, at_mu = n;
+    if (!(e_mu <= worst_mu)) worst_mu = e_mu, at_mu = n, got_mu = out[0];
     if (!(e_l <= worst_lambda)) worst_lambda = e_l, at_lambda = n;
   }
   g_test_message("%zu cases: worst mu^2 error %.3g (case %zu), worst "
                  "|dlambda| %.3g (case %zu)",
                  pairs.count, worst_mu, at_mu, worst_lambda, at_lambda);
-  if (!(worst_mu <= DBL_EPSILON))
+  if (!(worst_mu == 0.))
     g_error("case %zu: mu^2 %.17g, expected %.17g, relative error %.3g",
-            at_mu, 0., pairs.MU2[at_mu], worst_mu);
+            at_mu, got_mu, pairs.MU2[at_mu], worst_mu);
   g_assert_cmpfloat(worst_lambda, <=, 1e-9);
 }
 

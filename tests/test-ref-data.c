@@ -212,12 +212,13 @@ static void test_residual(void) {
                TOL_RESIDUAL_DG);
 }
 
-/* μ²: measured 0, every value correctly rounded; tolerance one ulp.
- * λ: measured 1.1e-15 (a few ulps; λ is a root, so its accuracy is that of
- * ω near it). The seed's criteria of ch. 6, at 10× the measured worst:
- * μ1², μ2² within 1.5e-12 of μ² (the seed asks 1e-10) and
+/* μ²: every value correctly rounded, as the README and the docs claim
+ * (tolerance 0: the reference is the correctly rounded μ²; issue 6 asks
+ * for one ulp). λ: measured 1.2e-15 (a few ulps; λ is a root, so its
+ * accuracy is that of ω near it). The seed's criteria of ch. 6, at 10× the
+ * measured worst: μ1², μ2² within 1.5e-12 of μ² (the seed asks 1e-10) and
  * |f′| ≤ 2.5e-10·|f″| (the seed asks PW85_LAMBDA_ATOL = 1e-6). */
-#define TOL_MU2 DBL_EPSILON
+#define TOL_MU2 0.0
 #define TOL_LAMBDA 1.1e-14
 #define TOL_SEED_MU 1.5e-11
 #define TOL_SEED_DF 2.5e-9
