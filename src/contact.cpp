@@ -395,11 +395,11 @@ int solve(Problem &p, double out[2]) noexcept {
   if (status != PW85_SUCCESS) return status;
   // 3. Newton to finish: from the warm λ if Brent's bracket (widened by its
   // tolerance) confirms it, else from Brent's estimate, at most
-  // PW85_NR_ITER plain steps; then compensated steps.
-  // The compensated steps start from the last point where Newton evaluated
-  // ω, whose factors they reuse, when Newton's last step from there was
-  // below finish_from_center (relative): the first compensated step is as
-  // small, and leaves λ off by its square.
+  // PW85_NR_ITER plain steps; then compensated steps. These start from the
+  // last point where Newton evaluated ω, whose factors they reuse, when
+  // Newton's last step from there was below finish_from_center (relative):
+  // the first compensated step is then as small, and leaves λ off by its
+  // square.
   if (!search.converged || search.lambda < lower - PW85_LAMBDA_ATOL ||
       search.lambda > upper + PW85_LAMBDA_ATOL) {
     newton_on_omega(p, estimate, PW85_NR_ITER, &search);
