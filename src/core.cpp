@@ -47,7 +47,7 @@ void diagonal_range(double const q1[sym], double const q2[sym], double *lo,
   *hi = std::max(std::max(std::max(a, b), std::max(c, d)), std::max(e, f));
 }
 
-// y = x·2^k for N entries (scale(), unrolled).
+// y = x·2^k for N entries: exact unless a result leaves the normal range.
 template <int N>
 inline void scale_n(double const *x, int k, double *y) noexcept {
   if (k >= -1022 && k <= 1023) {
@@ -83,15 +83,6 @@ double pow2(int k) noexcept {
 double times_pow2(double x, int k) noexcept {
   // x·2^k is rounded once, as ldexp rounds it, when 2^k is a double.
   return k >= -1022 && k <= 1023 ? x * pow2(k) : std::ldexp(x, k);
-}
-
-void scale(double const *x, int n, int k, double *y) noexcept {
-  if (k >= -1022 && k <= 1023) {
-    double const factor = pow2(k);
-    for (int i = 0; i < n; ++i) y[i] = x[i] * factor;
-  } else {
-    for (int i = 0; i < n; ++i) y[i] = std::ldexp(x[i], k);
-  }
 }
 
 bool rescale(double const r[dim], double const q1[sym], double const q2[sym],

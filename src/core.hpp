@@ -62,9 +62,6 @@ double pow2(int k) noexcept;
 // normal double.
 double times_pow2(double x, int k) noexcept;
 
-// y = x·2^k for n entries: exact unless a result leaves the normal range.
-void scale(double const *x, int n, int k, double *y) noexcept;
-
 // r, Q1, Q2 rescaled exactly by powers of two (seed ch. 3, eq. (6):
 // μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2), λ unchanged): r to order
 // one, Q1 and Q2 so that their diagonals (which bound every entry of a
