@@ -62,4 +62,11 @@ static inline size_t ref_data_mu2_index(RefData const *d, size_t i, size_t j,
              d->num_distances + m;
 }
 
+/* r12 of MU2[.][.][k][m]: distances[m] times directions[k]. */
+static inline void ref_data_r12(RefData const *d, size_t k, size_t m,
+                                double r[3]) {
+  for (int c = 0; c < 3; c++)
+    r[c] = d->distances[m] * d->directions[3 * k + c];
+}
+
 #endif /* PW85_TESTS_REFDATA_H */

@@ -231,8 +231,7 @@ static void test_contact_function(void) {
         for (size_t m = 0; m < data.num_distances; m++) {
           size_t const n = ref_data_mu2_index(&data, i, j, k, m);
           double r[PW85_DIM], out[2];
-          for (int c = 0; c < PW85_DIM; c++)
-            r[c] = data.distances[m] * direction(k)[c];
+          ref_data_r12(&data, k, m, r);
           int const status =
               pw85_contact_function(r, spheroid(i), spheroid(j), out);
           if (status != PW85_SUCCESS)
@@ -265,8 +264,7 @@ static void test_overlap(void) {
         for (size_t m = 0; m < data.num_distances; m++, count++) {
           size_t const n = ref_data_mu2_index(&data, i, j, k, m);
           double r[PW85_DIM];
-          for (int c = 0; c < PW85_DIM; c++)
-            r[c] = data.distances[m] * direction(k)[c];
+          ref_data_r12(&data, k, m, r);
           int result = 42;
           g_assert_cmpint(pw85_overlap(r, spheroid(i), spheroid(j), &result),
                           ==, PW85_SUCCESS);

@@ -13,11 +13,6 @@ static RefData data;
 
 static double const *spheroid(size_t i) { return data.spheroids + 6 * i; }
 
-static void r12_of(size_t k, size_t m, double r[PW85_DIM]) {
-  for (int c = 0; c < PW85_DIM; c++)
-    r[c] = data.distances[m] * data.directions[3 * k + c];
-}
-
 typedef int (*ContactFunc)(double const *, double const *, double const *,
                            double *);
 
@@ -46,7 +41,7 @@ static void replay(gconstpointer user_data) {
         for (size_t m = 0; m < data.num_distances; m++) {
           size_t const n = ref_data_mu2_index(&data, i, j, k, m);
           double r[PW85_DIM], out[2];
-          r12_of(k, m, r);
+          ref_data_r12(&data, k, m, r);
           int const status = rp->func(r, spheroid(i), spheroid(j), out);
           if (status == PW85_ENOCONV) {
             if (failures++ == 0) first_failure = n;
