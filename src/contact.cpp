@@ -104,16 +104,55 @@ double step_from_end(Problem const &p, bool from_zero) noexcept {
   return 1.0 / (1.0 + std::sqrt(from_zero ? b / a : a / b));
 }
 
-// −f(λ) for gsl_min, in plain double; finite for every λ, as Brent's method
-// requires (it calls GSL's error handler on a non-finite value): where Q(λ)
-// fails to factorise (only possible through rounding), −f is taken as 0,
-// the value at the ends of [0, 1], which Brent's method never prefers.
-double brent_objective(double lambda, void *params) noexcept {
-  auto const *p = static_cast<Problem const *>(params);
+// −f(λ), the objective of Brent's method, in plain double; finite for
+// every λ, as Brent's method requires (it calls GSL's error handler on a
+// non-finite value): where Q(λ) fails to factorise (only possible through
+// rounding), −f is taken as 0, the value at the ends of [0, 1], which
+// Brent's method never prefers.
+double brent_objective(double lambda, Problem const &p) noexcept {
   double value = 0.0;
-  if (!f_plain(lambda, p->r, p->q1, p->q2, &value) || !std::isfinite(value))
+  if (!f_plain(lambda, p.r, p.q1, p.q2, &value) || !std::isfinite(value))
     return 0.0;
   return -value;
+}
+
+// GSL's Brent's method evaluates the objective once as it starts, at
+// a + golden·(b − a) on the bracket [a, b] it is given (gsl/min/brent.c,
+// brent_init). certify_with_brent() places the bracket so that this point
+// is the centre λ, where brent_objective() is already known: the objective
+// that GSL calls returns that value there, which is the value it would
+// compute, and evaluates anywhere else. (Should a GSL release move that
+// point, the objective is merely evaluated there.)
+constexpr double gsl_brent_golden = 0.3819660;
+
+struct KnownCentre {
+  Problem const *p;
+  double lambda;
+  double value;  // brent_objective(lambda, *p)
+};
+
+double gsl_objective(double lambda, void *params) noexcept {
+  auto const *c = static_cast<KnownCentre const *>(params);
+  if (lambda == c->lambda) return c->value;
+  return brent_objective(lambda, *c->p);
+}
+
+// [a, b] of width about w about c, such that GSL's first point,
+// a + golden·(b − a) computed in double, is c itself. It exists: as a moves
+// by one ulp with b fixed, that point moves by about 0.62 ulp, less than
+// the spacing of the doubles, so one of them rounds to c. Two corrections
+// of a (by the miss, which shrinks by 0.38 each time) find it nearly always;
+// a bracket that misses costs one evaluation of f, nothing else.
+void golden_bracket(double c, double w, double *a, double *b) noexcept {
+  double lo = c - gsl_brent_golden * w;
+  double const hi = lo + w;
+  for (int k = 0; k < 4; ++k) {
+    double const first = lo + gsl_brent_golden * (hi - lo);
+    if (first == c) break;
+    lo += c - first;
+  }
+  *a = lo;
+  *b = hi;
 }
 
 // At λ, in plain double: f, μ1² = (1−λ)²·P1, μ2² = λ²·P2 (ch. 5,
@@ -254,28 +293,27 @@ void newton_on_omega(Problem const &p, double lambda, int n,
   }
 }
 
-// The first bracket of Brent's method: [λ − δ, λ + δ] with this δ, which
-// already meets Brent's stopping test when it is verified.
-constexpr double bracket_half_width = 0.49 * PW85_LAMBDA_ATOL;
+// The width of the first bracket of Brent's method, which already meets
+// Brent's stopping test when it is verified.
+constexpr double bracket_width = 0.98 * PW85_LAMBDA_ATOL;
 
 // Brent's method on −f (ch. 5), GSL's gsl_min_fminimizer_brent, on a
-// bracket around λ verified to enclose the maximum: [λ − δ, λ + δ] with
-// δ = bracket_half_width, widened ×16 while rounding noise in f (up to
-// cond(Q)·ε) defeats the check, up to [0, 1] where f(0) = f(1) = 0.
-// fm = brent_objective(λ). Iterates to PW85_LAMBDA_ATOL or PW85_MAX_ITER.
-// Writes Brent's estimate and final bracket; returns PW85_SUCCESS or
-// PW85_ENOMEM.
-int certify_with_brent(Problem &p, double lambda, double fm, double *estimate,
-                       double *lower, double *upper) noexcept {
+// bracket about λ verified to enclose the maximum: golden_bracket() of
+// width bracket_width (λ − 0.38·w to λ + 0.62·w), widened ×16 while
+// rounding noise in f (up to cond(Q)·ε) defeats the check, up to [0, 1]
+// where f(0) = f(1) = 0. fm = brent_objective(λ). Iterates to
+// PW85_LAMBDA_ATOL or PW85_MAX_ITER. Writes Brent's estimate and final
+// bracket; returns PW85_SUCCESS or PW85_ENOMEM.
+int certify_with_brent(Problem const &p, double lambda, double fm,
+                       double *estimate, double *lower,
+                       double *upper) noexcept {
   double a = 0.0, b = 1.0, fa = 0.0, fb = 0.0;
   bool enclosed = false;
-  for (double delta = bracket_half_width; !enclosed && delta < 0.5;
-       delta *= 16.0) {
-    a = lambda - delta;
-    b = lambda + delta;
+  for (double width = bracket_width; !enclosed && width < 1.0; width *= 16.0) {
+    golden_bracket(lambda, width, &a, &b);
     if (a <= 0.0 || b >= 1.0) break;
-    fa = brent_objective(a, &p);
-    fb = brent_objective(b, &p);
+    fa = brent_objective(a, p);
+    fb = brent_objective(b, p);
     enclosed = fm < fa && fm < fb;
   }
   if (!enclosed) {
@@ -295,7 +333,8 @@ int certify_with_brent(Problem &p, double lambda, double fm, double *estimate,
   gsl_min_fminimizer s{};
   s.type = type;
   s.state = state;
-  gsl_function objective{&brent_objective, &p};
+  KnownCentre centre{&p, lambda, fm};
+  gsl_function objective{&gsl_objective, &centre};
   // The preconditions that GSL checks (a < λ < b, f(λ) below both ends)
   // hold here, so its error handler is not reached.
   gsl_min_fminimizer_set_with_values(&s, &objective, lambda, fm, a, fa, b, fb);
@@ -373,7 +412,7 @@ bool finish(Problem const &p, double domega, double *lambda, double *mu2,
 }
 
 // μ² and λ of a prepared problem with r ≠ 0; out = {μ²(problem), λ}.
-int solve(Problem &p, double out[2]) noexcept {
+int solve(Problem const &p, double out[2]) noexcept {
   // 1. Warm start, refined by Newton on ω.
   Search search;
   newton_on_omega(p, warm_start(p), warm_newton_iter, &search);
@@ -383,11 +422,11 @@ int solve(Problem &p, double out[2]) noexcept {
   double center = search.lambda;
   double fm = 0.0;
   if (search.converged &&
-      std::fabs(search.lambda - search.center) <= 0.25 * bracket_half_width) {
+      std::fabs(search.lambda - search.center) <= 0.125 * bracket_width) {
     center = search.center;
     fm = -search.f_center;
   } else {
-    fm = brent_objective(center, &p);
+    fm = brent_objective(center, p);
   }
   double estimate = center, lower = 0.0, upper = 1.0;
   int const status =
@@ -418,7 +457,7 @@ int solve(Problem &p, double out[2]) noexcept {
     // Q(λ) failed to factorise in double-double (rounding only): fall back
     // to Brent's estimate in plain arithmetic.
     lambda = estimate;
-    mu2 = -brent_objective(lambda, &p);
+    mu2 = -brent_objective(lambda, p);
   }
   out[0] = mu2;
   out[1] = lambda;
