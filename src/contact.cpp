@@ -182,7 +182,7 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   double q[sym];
   combine(lambda, p.q1, p.q2, q);
   Ldl &fac = t->plain.fac;
-  if (!ldl_decomp(q, &fac)) return false;
+  if (!ldl_decomp_fast(q, &fac)) return false;
   double *s = t->plain.s;
   double q1s[dim], q2s[dim];
   double const quad = ldl_solve_quad(fac, p.r, s);
