@@ -192,12 +192,9 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   double const p2 = dot(s, q2s);
   if (!(p1 > 0.0 && p2 > 0.0)) return false;
   double const mu = 1.0 - lambda;
-  // One division for ρ and ρ′/ρ: k = 1/(P1·P2), ρ = P2·√k, unless P1·P2
-  // leaves the normal range.
-  double const p12 = p1 * p2;
-  bool const normal = p12 >= DBL_MIN && p12 <= DBL_MAX;
-  double const k = normal ? 1.0 / p12 : 0.0;
-  double const rho = normal ? p2 * std::sqrt(k) : std::sqrt(p2 / p1);
+  double const m1 = std::sqrt(p1);
+  double const m2 = std::sqrt(p2);
+  double const rho = m2 / m1;
   t->f = lambda * mu * quad;  // the expression of f_plain() (linalg.hpp)
   t->omega = lambda * rho - mu;
   t->rho = rho;
@@ -209,13 +206,24 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
     ldl_solve(fac, u, v);
     double const a1 = dot(q1s, v);
     double const a2 = dot(q2s, v);
-    // ρ′/ρ = sᵀQ1v/P1 − sᵀQ2v/P2
-    double const log_drho = normal ? (a1 * p2 - a2 * p1) * k : a1 / p1 - a2 / p2;
-    double const drho = rho * log_drho;
-    t->domega = 1.0 + rho + lambda * drho;
-    // λ − ω/ω′ rearranged so that it does not cancel when the root is far
-    // smaller than λ (ρ ≫ 1: a thin disc).
-    t->newton = (1.0 + lambda * lambda * drho) / t->domega;
+    // ρ′/ρ = sᵀQ1v/P1 − sᵀQ2v/P2. The step λ − ω/ω′ is computed as
+    // (1 + λ²ρ′)/ω′, which does not cancel when the root is far smaller
+    // than λ (ρ ≫ 1: a thin disc), and with both terms multiplied by
+    // c = √P1·P1·P2: then ρ·c = √P2·P1·P2 and ρ′·c = √P2·(a1·P2 − a2·P1)
+    // need neither ρ nor a division, and the step waits for the square
+    // roots and one division only. Unless c leaves the normal range.
+    double const p12 = p1 * p2;
+    double const c = m1 * p12;
+    if (c >= DBL_MIN && c <= DBL_MAX) {
+      double const w = m2 * (a1 * p2 - a2 * p1);        // ρ′·c
+      double const den = (m1 + m2) * p12 + lambda * w;  // ω′·c
+      t->newton = (c + lambda * lambda * w) / den;
+      t->domega = den / c;
+    } else {
+      double const drho = rho * (a1 / p1 - a2 / p2);
+      t->domega = 1.0 + rho + lambda * drho;
+      t->newton = (1.0 + lambda * lambda * drho) / t->domega;
+    }
     ok = ok && std::isfinite(t->newton);
   }
   if (want & want_bounds) {
