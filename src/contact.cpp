@@ -67,17 +67,22 @@ double sphere_lower_bound(Problem const &p) noexcept {
   return dot(p.r, p.r) / (radii * radii) * (1.0 - 16.0 * DBL_EPSILON);
 }
 
-// The sphere model's maximiser, exact for two spheres (Qᵢ = aᵢ²·I gives
-// λ = a1/(a1 + a2)): λ0 = 1/(1 + √(rᵀQ1⁻¹r / rᵀQ2⁻¹r)).
 // The largest double below 1: where a step rounds onto λ = 1 (the root
 // lies within an ulp of it), λ goes here instead, where f ≠ 0.
 constexpr double below_one = 1.0 - 0x1p-53;
 
-// aᵢ = rᵀQᵢ⁻¹r.
+// The sphere model's maximiser, exact for two spheres (Qᵢ = aᵢ²·I gives
+// λ = a1/(a1 + a2)): λ0 = 1/(1 + √(a1/a2)) with aᵢ = rᵀQᵢ⁻¹r, computed as
+// √a2/(√a2 + √a1), the square roots side by side and then one division,
+// rather than a division, a square root and a division in a row.
 double warm_start(double a1, double a2) noexcept {
-  double const lambda = 1.0 / (1.0 + std::sqrt(a1 / a2));
+  double const b1 = std::sqrt(a1);
+  double const b2 = std::sqrt(a2);
+  double const lambda = b2 / (b2 + b1);
   if (lambda >= 1.0) return below_one;
-  return lambda > 0.0 ? lambda : 0.5;
+  if (lambda > 0.0) return lambda;
+  // 0 or NaN: a2 = 0, or a2 = ∞ (where λ0 → 1), or both 0 or both ∞.
+  return b1 < b2 ? below_one : 0.5;
 }
 
 double warm_start(Problem const &p) noexcept {
