@@ -205,12 +205,16 @@ bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   t->rho = rho;
   bool ok = std::isfinite(t->omega) && std::isfinite(t->f);
   if (want & want_newton) {
-    double u[dim], v[dim];
+    // aᵢ = sᵀQᵢv = zᵢᵀ·D⁻¹·(z2 − z1) with zᵢ = L⁻¹Qᵢs, since
+    // v = L⁻ᵀD⁻¹L⁻¹(Q2 − Q1)s: two forward substitutions side by side
+    // instead of a forward and a backward one in a row.
+    double z1[dim], z2[dim], y[dim];
+    ldl_forward(fac, q1s, z1);
+    ldl_forward(fac, q2s, z2);
     PW85_UNROLL
-    for (int i = 0; i < dim; ++i) u[i] = q2s[i] - q1s[i];  // (Q2 − Q1)·s
-    ldl_solve(fac, u, v);
-    double const a1 = dot(q1s, v);
-    double const a2 = dot(q2s, v);
+    for (int i = 0; i < dim; ++i) y[i] = (z2[i] - z1[i]) * fac.inv_d[i];
+    double const a1 = dot(z1, y);
+    double const a2 = dot(z2, y);
     // ρ′/ρ = sᵀQ1v/P1 − sᵀQ2v/P2. The step λ − ω/ω′ is computed as
     // (1 + λ²ρ′)/ω′, which does not cancel when the root is far smaller
     // than λ (ρ ≫ 1: a thin disc), and with both terms multiplied by
