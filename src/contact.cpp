@@ -114,9 +114,14 @@ double step_from_end(Problem const &p, bool from_zero) noexcept {
 // non-finite value): where Q(λ) fails to factorise (only possible through
 // rounding), −f is taken as 0, the value at the ends of [0, 1], which
 // Brent's method never prefers.
+//
+// The functions of the search take Fast = p.moderate as a template
+// argument, so that each compiled search factorises Q(λ) one way
+// (ldl_decomp_q() in linalg.hpp).
+template <bool Fast>
 double brent_objective(double lambda, Problem const &p) noexcept {
   double value = 0.0;
-  if (!f_plain(lambda, p.r, p.q1, p.q2, &value) || !std::isfinite(value))
+  if (!f_plain(lambda, p.r, p.q1, p.q2, Fast, &value) || !std::isfinite(value))
     return 0.0;
   return -value;
 }
@@ -136,10 +141,11 @@ struct KnownCentre {
   double value;  // brent_objective(lambda, *p)
 };
 
+template <bool Fast>
 double gsl_objective(double lambda, void *params) noexcept {
   auto const *c = static_cast<KnownCentre const *>(params);
   if (lambda == c->lambda) return c->value;
-  return brent_objective(lambda, *c->p);
+  return brent_objective<Fast>(lambda, *c->p);
 }
 
 // [a, b] of width about w about c, such that GSL's first point,
@@ -183,11 +189,12 @@ struct Terms {
 // it uses.
 enum : unsigned { want_newton = 1u, want_bounds = 2u };
 
+template <bool Fast>
 bool terms(double lambda, Problem const &p, unsigned want, Terms *t) noexcept {
   double q[sym];
   combine(lambda, p.q1, p.q2, q);
   Ldl &fac = t->plain.fac;
-  if (!ldl_decomp_fast(q, &fac)) return false;
+  if (!ldl_decomp_q(q, &fac, Fast)) return false;
   double *s = t->plain.s;
   double q1s[dim], q2s[dim];
   double const quad = ldl_solve_quad(fac, p.r, s);
@@ -259,6 +266,7 @@ struct Search {
 // leaving it takes Newton's step from the end of [0, 1] on the root's side
 // (step_from_end(), at most once per end), else the sphere model's
 // 1/(1 + ρ), else bisects.
+template <bool Fast>
 void newton_on_omega(Problem const &p, double lambda, int n,
                      Search *out) noexcept {
   bool tried_0 = false;
@@ -268,7 +276,7 @@ void newton_on_omega(Problem const &p, double lambda, int n,
   *out = Search{lambda, lambda, 0.0, 0.0, {}, false};
   for (int k = 0; k < n; ++k) {
     Terms t;
-    if (!terms(lambda, p, want_newton, &t)) return;
+    if (!terms<Fast>(lambda, p, want_newton, &t)) return;
     out->center = lambda;
     out->f_center = t.f;
     out->domega = t.domega;
@@ -321,6 +329,7 @@ constexpr double bracket_width = 0.98 * PW85_LAMBDA_ATOL;
 // where f(0) = f(1) = 0. fm = brent_objective(λ). Iterates to
 // PW85_LAMBDA_ATOL or PW85_MAX_ITER. Writes Brent's estimate and final
 // bracket; returns PW85_SUCCESS or PW85_ENOMEM.
+template <bool Fast>
 int certify_with_brent(Problem const &p, double lambda, double fm,
                        double *estimate, double *lower,
                        double *upper) noexcept {
@@ -329,8 +338,8 @@ int certify_with_brent(Problem const &p, double lambda, double fm,
   for (double width = bracket_width; !enclosed && width < 1.0; width *= 16.0) {
     golden_bracket(lambda, width, &a, &b);
     if (a <= 0.0 || b >= 1.0) break;
-    fa = brent_objective(a, p);
-    fb = brent_objective(b, p);
+    fa = brent_objective<Fast>(a, p);
+    fb = brent_objective<Fast>(b, p);
     enclosed = fm < fa && fm < fb;
   }
   if (!enclosed) {
@@ -351,7 +360,7 @@ int certify_with_brent(Problem const &p, double lambda, double fm,
   s.type = type;
   s.state = state;
   KnownCentre centre{&p, lambda, fm};
-  gsl_function objective{&gsl_objective, &centre};
+  gsl_function objective{&gsl_objective<Fast>, &centre};
   // The preconditions that GSL checks (a < λ < b, f(λ) below both ends)
   // hold here, so its error handler is not reached.
   gsl_min_fminimizer_set_with_values(&s, &objective, lambda, fm, a, fa, b, fb);
@@ -393,7 +402,8 @@ bool finish(Problem const &p, double domega, double *lambda, double *mu2,
   for (int k = 0; k < accurate_iter; ++k) {
     double const l0 = *lambda;
     Accurate a;
-    if (!accurate_terms(l0, p.r, p.q1, p.q2, true, &a, k == 0 ? plain : nullptr))
+    if (!accurate_terms(l0, p.r, p.q1, p.q2, p.moderate, true, &a,
+                        k == 0 ? plain : nullptr))
       break;
     if (!found || a.f > best) best = a.f, best_lambda = l0;
     found = true;
@@ -429,10 +439,11 @@ bool finish(Problem const &p, double domega, double *lambda, double *mu2,
 }
 
 // μ² and λ of a prepared problem with r ≠ 0; out = {μ²(problem), λ}.
+template <bool Fast>
 int solve(Problem const &p, double out[2]) noexcept {
   // 1. Warm start, refined by Newton on ω.
   Search search;
-  newton_on_omega(p, warm_start(p), warm_newton_iter, &search);
+  newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter, &search);
   // 2. Brent's method certifies the maximum on a bracket around the last
   // point where Newton evaluated f, if the root lies well inside that
   // bracket (f there is then known), else around the estimate.
@@ -443,11 +454,11 @@ int solve(Problem const &p, double out[2]) noexcept {
     center = search.center;
     fm = -search.f_center;
   } else {
-    fm = brent_objective(center, p);
+    fm = brent_objective<Fast>(center, p);
   }
   double estimate = center, lower = 0.0, upper = 1.0;
   int const status =
-      certify_with_brent(p, center, fm, &estimate, &lower, &upper);
+      certify_with_brent<Fast>(p, center, fm, &estimate, &lower, &upper);
   if (status != PW85_SUCCESS) return status;
   // 3. Newton to finish: from the warm λ if Brent's bracket (widened by its
   // tolerance) confirms it, else from Brent's estimate, at most
@@ -458,7 +469,7 @@ int solve(Problem const &p, double out[2]) noexcept {
   // square.
   if (!search.converged || search.lambda < lower - PW85_LAMBDA_ATOL ||
       search.lambda > upper + PW85_LAMBDA_ATOL) {
-    newton_on_omega(p, estimate, PW85_NR_ITER, &search);
+    newton_on_omega<Fast>(p, estimate, PW85_NR_ITER, &search);
     if (!search.converged) search.lambda = estimate;
   }
   double lambda = search.lambda;
@@ -474,10 +485,47 @@ int solve(Problem const &p, double out[2]) noexcept {
     // Q(λ) failed to factorise in double-double (rounding only): fall back
     // to Brent's estimate in plain arithmetic.
     lambda = estimate;
-    mu2 = -brent_objective(lambda, p);
+    mu2 = -brent_objective<Fast>(lambda, p);
   }
   out[0] = mu2;
   out[1] = lambda;
+  return PW85_SUCCESS;
+}
+
+// The rest of overlap(), from λ = lambda: the bounds at λ0 and one Newton
+// step further, then the exact contact function. cond_q ≥ √cond(Qᵢ);
+// one = 2^−shift.
+template <bool Fast>
+int overlap_from(Problem const &p, double lambda, double cond_q, double one,
+                 int *result) noexcept {
+  // At λ0, then (rarely needed) one Newton step on ω further.
+  for (int k = 0; k < 2; ++k) {
+    Terms t;
+    if (!terms<Fast>(lambda, p, want_bounds, &t)) break;
+    double const m_f = 32.0 * DBL_EPSILON * t.cond;
+    double const m_mu = 32.0 * DBL_EPSILON * t.cond * (1.0 + cond_q);
+    if (m_f < 0.5 && t.f * (1.0 - m_f) > one) {
+      *result = 1;
+      return PW85_SUCCESS;
+    }
+    if (m_mu < 0.5 && std::max(t.mu1, t.mu2) * (1.0 + m_mu) < one) {
+      *result = -1;
+      return PW85_SUCCESS;
+    }
+    if (k == 1 || !terms<Fast>(lambda, p, want_newton, &t)) break;
+    double next = t.newton;
+    if (!(next > 0.0 && next < 1.0)) next = 1.0 / (1.0 + t.rho);
+    if (!(next > 0.0 && next < 1.0)) break;
+    lambda = next;
+  }
+  // Nearly tangent, or too ill-conditioned for the plain bounds: the exact
+  // contact function decides.
+  double res[2];
+  int const status = solve<Fast>(p, res);
+  if (status != PW85_SUCCESS) return status;
+  double const mu2 = std::ldexp(res[0], p.shift);
+  double const tangency = 4.0 * DBL_EPSILON;
+  *result = std::fabs(mu2 - 1.0) <= tangency ? 0 : (mu2 < 1.0 ? -1 : 1);
   return PW85_SUCCESS;
 }
 
@@ -494,7 +542,7 @@ int contact_function(double const r[dim], double const q1[sym],
     return PW85_SUCCESS;
   }
   double res[2];
-  status = solve(p, res);
+  status = p.moderate ? solve<true>(p, res) : solve<false>(p, res);
   if (status != PW85_SUCCESS) return status;
   // Beyond the documented domain (cond(Qᵢ) far above 1/ε) the computed f
   // can be meaningless; μ² never falls below the rigorous bound
@@ -553,36 +601,9 @@ int overlap(double const r[dim], double const q1[sym], double const q2[sym],
   // √cond(Qᵢ) (μᵢ², a quadratic form in s), relative: the margins take 32
   // times the bounds tr·tr(⁻¹) of these condition numbers.
   double const cond_q = std::sqrt(std::max(cond1, cond2));
-  double lambda = warm_start(a1, a2);
-  // At λ0, then (rarely needed) one Newton step on ω further.
-  for (int k = 0; k < 2; ++k) {
-    Terms t;
-    if (!terms(lambda, p, want_bounds, &t)) break;
-    double const m_f = 32.0 * DBL_EPSILON * t.cond;
-    double const m_mu = 32.0 * DBL_EPSILON * t.cond * (1.0 + cond_q);
-    if (m_f < 0.5 && t.f * (1.0 - m_f) > one) {
-      *result = 1;
-      return PW85_SUCCESS;
-    }
-    if (m_mu < 0.5 && std::max(t.mu1, t.mu2) * (1.0 + m_mu) < one) {
-      *result = -1;
-      return PW85_SUCCESS;
-    }
-    if (k == 1 || !terms(lambda, p, want_newton, &t)) break;
-    double next = t.newton;
-    if (!(next > 0.0 && next < 1.0)) next = 1.0 / (1.0 + t.rho);
-    if (!(next > 0.0 && next < 1.0)) break;
-    lambda = next;
-  }
-  // Nearly tangent, or too ill-conditioned for the plain bounds: the exact
-  // contact function decides.
-  double res[2];
-  status = solve(p, res);
-  if (status != PW85_SUCCESS) return status;
-  double const mu2 = std::ldexp(res[0], p.shift);
-  double const tangency = 4.0 * DBL_EPSILON;
-  *result = std::fabs(mu2 - 1.0) <= tangency ? 0 : (mu2 < 1.0 ? -1 : 1);
-  return PW85_SUCCESS;
+  double const lambda = warm_start(a1, a2);
+  return p.moderate ? overlap_from<true>(p, lambda, cond_q, one, result)
+                    : overlap_from<false>(p, lambda, cond_q, one, result);
 }
 
 }  // namespace pw85::detail

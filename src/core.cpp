@@ -102,6 +102,8 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
   scale_n<sym>(q1, -eq, s->q1);
   scale_n<sym>(q2, -eq, s->q2);
   s->shift = 2 * er - eq;
+  // |x| < 2^e for the exponent e of x, and |x| ≥ 2^(e−1).
+  s->moderate = emax - eq <= 400 && emin - eq >= -399;
   // A diagonal entry overflows only if the diagonals span more than the
   // range of doubles (emax − eq > 1024); an off-diagonal entry cannot
   // overflow without exceeding √(Qᵢᵢ·Qⱼⱼ), which leaves the form
@@ -161,14 +163,14 @@ void spheroid(double a, double c, double const n[dim], double q[sym]) noexcept {
 
 bool f(double lambda, double const r[dim], double const q1[sym],
        double const q2[sym], double *value) noexcept {
-  return f_plain(lambda, r, q1, q2, value);
+  return f_plain(lambda, r, q1, q2, false, value);
 }
 
 PW85_FMA_CLONES
 bool f_accurate(double lambda, double const r[dim], double const q1[sym],
                 double const q2[sym], double *value) noexcept {
   Accurate a;
-  if (!accurate_terms(lambda, r, q1, q2, false, &a)) return false;
+  if (!accurate_terms(lambda, r, q1, q2, false, false, &a)) return false;
   *value = a.f;
   return true;
 }

@@ -72,6 +72,10 @@ struct Scaled {
   double q2[sym];
   int shift;
   bool r_is_zero;
+  // Every rescaled diagonal entry of Q1 and Q2, hence of Q(λ), a convex
+  // combination of them, lies in [2^−400, 2^400]: the range in which
+  // ldl_decomp_fast() (linalg.hpp) may be used.
+  bool moderate;
 };
 
 // Fills *s from finite input. Returns false when the diagonals of Q1 and

@@ -84,10 +84,12 @@ PW85_INLINE bool ldl_decomp(double const a[sym], Ldl *f) noexcept {
 // Q(λ) in the search, where latency counts: each pivot waits only for the
 // reciprocal of the one before, dᵢ being formed from products of entries
 // computed meanwhile (d1 = a11 − a01²/d0, not a11 − L10·a01). The roundings
-// differ, not their number. The input forms are still factorised by
-// ldl_decomp(): where cond ≈ 1/ε the two can disagree on definiteness (one
-// of the 100,000 random pairs of tests/test-errors.c), and prepare() would
-// then report ERANGE.
+// differ, not their number. Those products leave the range of doubles
+// sooner than the terms of ldl_decomp(): the diagonal of a must lie in
+// [2^−400, 2^400] (Scaled::moderate), where no product overflows and one
+// that underflows is below ε times the pivot it enters. The input forms
+// are factorised by ldl_decomp() alone, whose definiteness decisions the
+// tests pin.
 PW85_INLINE bool ldl_decomp_fast(double const a[sym], Ldl *f) noexcept {
   double const d0 = a[0];
   if (!(d0 > 0.0)) return false;
@@ -105,6 +107,13 @@ PW85_INLINE bool ldl_decomp_fast(double const a[sym], Ldl *f) noexcept {
   if (!(d2 > 0.0)) return false;
   f->inv_d[2] = 1.0 / d2;
   return true;
+}
+
+// Which of the two factorisations Q(λ) gets: fast only where the caller
+// knows the range condition of ldl_decomp_fast() to hold. Callers pass a
+// constant where they can, so that the other is not compiled in.
+PW85_INLINE bool ldl_decomp_q(double const a[sym], Ldl *f, bool fast) noexcept {
+  return fast ? ldl_decomp_fast(a, f) : ldl_decomp(a, f);
 }
 
 // z = L⁻¹·b; then bᵀ·Q⁻¹·b = Σ zᵢ²/dᵢ.
@@ -167,13 +176,14 @@ PW85_INLINE double ldl_cond_bound(double const q[sym], Ldl const &f) noexcept {
 // f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r in plain double (core.hpp, f()):
 // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ with z = L⁻¹·r, one triangular solve instead of the
 // two of ch. 4, eq. (4), no square root, and no cancellation.
+// fast: see ldl_decomp_q().
 PW85_INLINE bool f_plain(double lambda, double const r[dim],
                          double const q1[sym], double const q2[sym],
-                         double *value) noexcept {
+                         bool fast, double *value) noexcept {
   double q[sym];
   combine(lambda, q1, q2, q);
   Ldl fac;
-  if (!ldl_decomp_fast(q, &fac)) return false;
+  if (!ldl_decomp_q(q, &fac, fast)) return false;
   *value = lambda * (1.0 - lambda) * ldl_quad_inverse(fac, r);
   return true;
 }
@@ -283,9 +293,10 @@ struct Plain {
   double s[dim];  // Q(λ)⁻¹·r
 };
 
+// fast: see ldl_decomp_q().
 PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
                                 double const q1[sym], double const q2[sym],
-                                bool with_p, Accurate *out,
+                                bool fast, bool with_p, Accurate *out,
                                 Plain const *plain = nullptr) noexcept {
   double hi[sym], lo[sym];
   combine_dd(lambda, q1, q2, hi, lo);
@@ -296,7 +307,7 @@ PW85_INLINE bool accurate_terms(double lambda, double const r[dim],
     PW85_UNROLL
     for (int i = 0; i < dim; ++i) s[i] = plain->s[i];
   } else {
-    if (!ldl_decomp_fast(hi, &fac)) return false;
+    if (!ldl_decomp_q(hi, &fac, fast)) return false;
     ldl_solve(fac, r, s);
   }
   exact_residual(hi, lo, r, s, rho);

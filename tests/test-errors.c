@@ -89,6 +89,31 @@ static void test_scale_power_of_two(void) {
   }
 }
 
+/* pw85_f_neg works on its input as given, unscaled: scaling r by 2^k and the
+ * forms by 2^2k changes no rounding of f = λ(1−λ)·rᵀQ⁻¹r while no
+ * intermediate leaves the normal range, so the value must not change at
+ * all. 2^±800 in the forms is where a product of two entries of Q(λ), were
+ * it formed, would overflow or underflow; a factorisation that forms one
+ * must notice. */
+static void test_f_neg_scale(void) {
+  /* r, then two forms with off-diagonal entries (diagonally dominant). */
+  double const params[15] = {0.7, -0.7, 1.1,
+                             4., 1., 0.5, 3., 0.25, 2.,
+                             1., -0.3, 0.2, 2., 0.1, 5.};
+  double const lambdas[] = {0.1, 0.5, 0.9};
+  int const exps[] = {-400, -200, 200, 400};
+  for (size_t l = 0; l < G_N_ELEMENTS(lambdas); l++) {
+    double const ref = pw85_f_neg(lambdas[l], params);
+    g_assert_true(isfinite(ref) && ref < 0.);
+    for (size_t k = 0; k < G_N_ELEMENTS(exps); k++) {
+      double scaled[15];
+      for (int i = 0; i < 15; i++)
+        scaled[i] = ldexp(params[i], i < 3 ? exps[k] : 2 * exps[k]);
+      g_assert_cmpfloat(pw85_f_neg(lambdas[l], scaled), ==, ref);
+    }
+  }
+}
+
 /* pw85_overlap takes the contract of pw85_contact_function. */
 static void test_overlap_contract(void) {
   int result = 42;
@@ -475,6 +500,7 @@ int main(int argc, char **argv) {
                   test_random_input);
   g_test_add_func("/pw85/overlap/random-pairs", test_random_overlap);
   g_test_add_func("/pw85/f_neg/contract", test_f_neg_contract);
+  g_test_add_func("/pw85/f_neg/scale", test_f_neg_scale);
   g_test_add_func("/pw85/strerror", test_strerror);
   g_test_add_func("/pw85/gsl-handler/detects", test_gsl_handler_detects);
   g_test_add_func("/pw85/version", test_version);
