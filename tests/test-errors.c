@@ -89,6 +89,46 @@ static void test_scale_power_of_two(void) {
   }
 }
 
+/* Ellipsoids of one shape and orientation whose sizes differ by 2^m
+ * (Q2 = 4^m·Q1), up to 2^1000: μ² = rᵀQ1⁻¹r/(1 + 2^m)² and λ = 1/(1 + 2^m)
+ * exactly (an affine map makes them two spheres). rᵀQ1⁻¹r is computed here
+ * in long double from the construction Q1 = R·D·Rᵀ; rounding Q1 to double
+ * moves μ² by 2.2e-17 relative (measured), so μ² is checked to one ulp.
+ * Beyond m ≈ 512, rᵀQ1⁻¹r / rᵀQ2⁻¹r overflows: a warm start formed from
+ * that ratio fell back to λ = ½, and μ² came out 3e-6 off. */
+static void test_size_ratio(void) {
+  long double const rot[3][3] = {{0.36L, 0.48L, -0.8L},
+                                 {-0.8L, 0.6L, 0.0L},
+                                 {0.48L, 0.64L, 0.6L}};
+  long double const d[3] = {1.0L, 2.0L, 3.0L};
+  for (int m = 100; m <= 1000; m += 100) {
+    double const s = ldexp(1., -m);
+    double q1[PW85_SYM], q2[PW85_SYM];
+    int k = 0;
+    for (int i = 0; i < 3; i++)
+      for (int j = i; j < 3; j++, k++) {
+        long double t = 0.0L;
+        for (int n = 0; n < 3; n++) t += rot[i][n] * d[n] * rot[j][n];
+        q1[k] = (double)(t * s);
+        q2[k] = ldexp(q1[k], 2 * m);
+      }
+    double const r[PW85_DIM] = {ldexp(0.3, m), ldexp(0.2, m), ldexp(0.1, m)};
+    long double a = 0.0L;
+    for (int n = 0; n < 3; n++) {
+      long double c = 0.0L;
+      for (int i = 0; i < 3; i++) c += rot[i][n] * r[i];
+      a += c * c / (d[n] * s);
+    }
+    long double const den = 1.0L + ldexpl(1.0L, m);
+    double out[2];
+    assert_valid(call(r, q1, q2, out), out);
+    assert_close("mu2, size ratio 2^m", out[0], (double)(a / (den * den)),
+                 DBL_EPSILON);
+    assert_close("lambda, size ratio 2^m", out[1], (double)(1.0L / den),
+                 DBL_EPSILON);
+  }
+}
+
 /* pw85_f_neg works on its input as given, unscaled: scaling r by 2^k and the
  * forms by 2^2k changes no rounding of f = λ(1−λ)·rᵀQ⁻¹r while no
  * intermediate leaves the normal range, so the value must not change at
@@ -495,6 +535,8 @@ int main(int argc, char **argv) {
                   test_wide_range);
   g_test_add_func("/pw85/contact_function/contract/scale-power-of-two",
                   test_scale_power_of_two);
+  g_test_add_func("/pw85/contact_function/contract/size-ratio",
+                  test_size_ratio);
   g_test_add_func("/pw85/overlap/contract", test_overlap_contract);
   g_test_add_func("/pw85/contact_function/contract/random-input",
                   test_random_input);
