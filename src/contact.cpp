@@ -71,18 +71,22 @@ double sphere_lower_bound(Problem const &p) noexcept {
 // lies within an ulp of it), λ goes here instead, where f ≠ 0.
 constexpr double below_one = 1.0 - 0x1p-53;
 
+// 1/(1 + √(x/y)) for x, y ≥ 0, computed as √y/(√y + √x): the square roots
+// side by side, then one division (rather than a division, a square root
+// and a division in a row), and no ratio x/y to overflow or underflow.
+double sphere_root(double x, double y) noexcept {
+  double const root_y = std::sqrt(y);
+  return root_y / (root_y + std::sqrt(x));
+}
+
 // The sphere model's maximiser, exact for two spheres (Qᵢ = aᵢ²·I gives
-// λ = a1/(a1 + a2)): λ0 = 1/(1 + √(a1/a2)) with aᵢ = rᵀQᵢ⁻¹r, computed as
-// √a2/(√a2 + √a1), the square roots side by side and then one division,
-// rather than a division, a square root and a division in a row.
+// λ = a1/(a1 + a2)): λ0 = 1/(1 + √(a1/a2)) with aᵢ = rᵀQᵢ⁻¹r.
 double warm_start(double a1, double a2) noexcept {
-  double const b1 = std::sqrt(a1);
-  double const b2 = std::sqrt(a2);
-  double const lambda = b2 / (b2 + b1);
+  double const lambda = sphere_root(a1, a2);
   if (lambda >= 1.0) return below_one;
   if (lambda > 0.0) return lambda;
   // 0 or NaN: a2 = 0, or a2 = ∞ (where λ0 → 1), or both 0 or both ∞.
-  return b1 < b2 ? below_one : 0.5;
+  return a1 < a2 ? below_one : 0.5;
 }
 
 double warm_start(Problem const &p) noexcept {
@@ -99,14 +103,15 @@ double warm_start(Problem const &p) noexcept {
 // defeats Newton's steps from the middle (9.8% of the reference pairs
 // took more than 8 steps without them). s = Q1⁻¹r at λ = 0, where
 // ρ(0)² = sᵀQ2s / rᵀQ1⁻¹r, and s = Q2⁻¹r at λ = 1, where
-// ρ(1)² = rᵀQ2⁻¹r / sᵀQ1s, from the factors of Q1 and Q2. A non-finite
-// result (ρ overflowing, say) is rejected where it is used.
+// ρ(1)² = rᵀQ2⁻¹r / sᵀQ1s, from the factors of Q1 and Q2. A NaN (both
+// forms 0, or both infinite) is rejected where it is used, as any point
+// outside the bracket.
 double step_from_end(Problem const &p, bool from_zero) noexcept {
   double s[dim], t[dim];
   double const a = ldl_solve_quad(from_zero ? p.f1 : p.f2, p.r, s);
   sym_mul(from_zero ? p.q2 : p.q1, s, t);
   double const b = dot(s, t);
-  return 1.0 / (1.0 + std::sqrt(from_zero ? b / a : a / b));
+  return from_zero ? sphere_root(b, a) : sphere_root(a, b);
 }
 
 // −f(λ), the objective of Brent's method, in plain double; finite for
