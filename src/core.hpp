@@ -109,6 +109,14 @@ int contact_function(double const r[dim], double const q1[sym],
 int overlap(double const r[dim], double const q1[sym], double const q2[sym],
             int *result) noexcept;
 
+// GSL's Brent minimiser, given a bracket [a, b], evaluates its objective
+// first at a + golden·(b − a) (gsl/min/brent.c). golden_bracket() returns
+// in *a, *b a bracket of width about w about c (c − 0.38·w to c + 0.62·w)
+// for which that point, computed in double, is c itself, nearly always
+// (contact.cpp). 0 < w, and c ± w finite.
+extern double const gsl_brent_golden;
+void golden_bracket(double c, double w, double *a, double *b) noexcept;
+
 #ifdef PW85_COUNT_EVALUATIONS
 // Benchmark builds only: the number of times Q(λ) was formed (each is one
 // evaluation of f or of its derivatives) on the calling thread.

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Kernels of the core that the public API does not expose on their own,
+// tested through the core's static library: the factorisations of Q(λ) and
+// the bracket given to GSL's Brent minimiser.
+#include <glib.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+
+#include <cfloat>
+#include <cmath>
+
+#include "core.hpp"
+#include "pw85.h"
+#include "linalg.hpp"
+#include "testutil.h"
+
+namespace {
+
+using pw85::detail::Ldl;
+
+// A random symmetric positive definite form R·diag(e)·Rᵀ (R from a random
+// unit quaternion), eigenvalues 10^[-4, 4] times 2^[-300, 300]: condition
+// numbers to 1e8, diagonal inside the range of ldl_decomp_fast().
+void random_form(GRand *rng, double q[PW85_SYM]) {
+  double w = g_rand_double_range(rng, -1., 1.), x = g_rand_double_range(rng, -1., 1.);
+  double y = g_rand_double_range(rng, -1., 1.), z = g_rand_double_range(rng, -1., 1.);
+  double const norm = std::sqrt(w * w + x * x + y * y + z * z);
+  w /= norm, x /= norm, y /= norm, z /= norm;
+  double const rot[3][3] = {
+      {1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y)},
+      {2. * (x * y + w * z), 1. - 2. * (x * x + z * z), 2. * (y * z - w * x)},
+      {2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y)}};
+  double const scale = std::ldexp(1., g_rand_int_range(rng, -300, 301));
+  double e[3];
+  for (double &ei : e) ei = scale * std::pow(10., g_rand_double_range(rng, -4., 4.));
+  int k = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = i; j < 3; j++, k++)
+      q[k] = rot[i][0] * e[0] * rot[j][0] + rot[i][1] * e[1] * rot[j][1] +
+             rot[i][2] * e[2] * rot[j][2];
+}
+
+// max over entries of |Q − L·D·Lᵀ| / (|L|·|D|·|Lᵀ|), in long double, with
+// dᵢ = 1/(1/dᵢ) as stored.
+double backward_error(double const q[PW85_SYM], Ldl const &f) {
+  long double const l[3][3] = {{1.0L, 0.0L, 0.0L},
+                               {f.l1, 1.0L, 0.0L},
+                               {f.l2, f.l4, 1.0L}};
+  long double d[3];
+  for (int i = 0; i < 3; i++) d[i] = 1.0L / f.inv_d[i];
+  double worst = 0.0;
+  int k = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = i; j < 3; j++, k++) {
+      long double sum = 0.0L, size = 0.0L;
+      for (int m = 0; m < 3; m++) {
+        sum += l[i][m] * d[m] * l[j][m];
+        size += std::fabs(l[i][m] * d[m] * l[j][m]);
+      }
+      worst = std::fmax(worst, double(std::fabs(sum - q[k]) / size));
+    }
+  return worst;
+}
+
+// Both factorisations are backward stable, |Q − LDLᵀ| ≤ c·ε·|L||D||Lᵀ|
+// entrywise with c = 4 for a 3×3 form (Higham, Accuracy and Stability of
+// Numerical Algorithms, 2nd ed., Theorem 10.3, γ(n+1) with u = ε/2), and the
+// reciprocal pivots they store add one rounding: 5ε is the bound checked.
+void test_ldl_backward_error() {
+  GRand *rng = g_rand_new_with_seed(1985);
+  double worst[2] = {0.0, 0.0};
+  for (int n = 0; n < 100000; n++) {
+    double q[PW85_SYM];
+    random_form(rng, q);
+    Ldl f;
+    g_assert_true(pw85::detail::ldl_decomp(q, &f));
+    worst[0] = std::fmax(worst[0], backward_error(q, f));
+    g_assert_true(pw85::detail::ldl_decomp_fast(q, &f));
+    worst[1] = std::fmax(worst[1], backward_error(q, f));
+  }
+  g_test_message("worst backward error / eps: ldl_decomp %.2f, "
+                 "ldl_decomp_fast %.2f",
+                 worst[0] / DBL_EPSILON, worst[1] / DBL_EPSILON);
+  g_assert_cmpfloat(worst[0], <=, 5.0 * DBL_EPSILON);
+  g_assert_cmpfloat(worst[1], <=, 5.0 * DBL_EPSILON);
+  g_rand_free(rng);
+}
+
+// The bracket of golden_bracket() makes GSL's Brent minimiser (the library
+// installed, not a copy of its formula) evaluate first at the centre.
+struct FirstCall {
+  double centre;
+  double first;
+  int calls;
+};
+
+double parabola(double x, void *params) {
+  auto *rec = static_cast<FirstCall *>(params);
+  if (rec->calls++ == 0) rec->first = x;
+  return (x - rec->centre) * (x - rec->centre);
+}
+
+void test_golden_bracket() {
+  GRand *rng = g_rand_new_with_seed(2026);
+  gsl_min_fminimizer *s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  g_assert_nonnull(s);
+  int checked = 0, at_centre = 0;
+  for (int n = 0; n < 100000; n++) {
+    // Centres from 1e-5 to 1 − 1e-5, log-uniform towards both ends; the
+    // widths certify_with_brent() tries.
+    double const t = 0.5 * std::pow(10., g_rand_double_range(rng, -5., 0.));
+    double const c = g_rand_boolean(rng) ? t : 1.0 - t;
+    double const w = 0.98e-6 * std::ldexp(1., 4 * g_rand_int_range(rng, 0, 5));
+    double a = 0.0, b = 0.0;
+    pw85::detail::golden_bracket(c, w, &a, &b);
+    if (!(a > 0.0 && b < 1.0)) continue;  // not used: certify_with_brent()
+    g_assert_cmpfloat(a, <, c);
+    g_assert_cmpfloat(c, <, b);
+    g_assert_cmpfloat(std::fabs((b - a) - w), <=, 1e-6 * w);
+    FirstCall rec{c, 0.0, 0};
+    gsl_function fn{&parabola, &rec};
+    double const fa = (a - c) * (a - c), fb = (b - c) * (b - c);
+    g_assert_cmpint(gsl_min_fminimizer_set_with_values(s, &fn, c, 0.0, a, fa,
+                                                       b, fb),
+                    ==, GSL_SUCCESS);
+    g_assert_cmpint(rec.calls, ==, 1);
+    checked++;
+    if (rec.first == c) at_centre++;
+  }
+  g_test_message("%d of %d brackets: GSL's first point is the centre",
+                 at_centre, checked);
+  g_assert_cmpint(checked, >, 60000);  // the widest brackets often leave (0, 1)
+  g_assert_cmpint(at_centre, ==, checked);
+  gsl_min_fminimizer_free(s);
+  g_rand_free(rng);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, nullptr);
+  install_failing_gsl_handler();
+  g_test_add_func("/core/ldl/backward-error", test_ldl_backward_error);
+  g_test_add_func("/core/golden-bracket", test_golden_bracket);
+  return g_test_run();
+}
