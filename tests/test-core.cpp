@@ -22,22 +22,10 @@ using pw85::detail::Ldl;
 // unit quaternion), eigenvalues 10^[-4, 4] times 2^[-300, 300]: condition
 // numbers to 1e8, diagonal inside the range of ldl_decomp_fast().
 void random_form(GRand *rng, double q[PW85_SYM]) {
-  double w = g_rand_double_range(rng, -1., 1.), x = g_rand_double_range(rng, -1., 1.);
-  double y = g_rand_double_range(rng, -1., 1.), z = g_rand_double_range(rng, -1., 1.);
-  double const norm = std::sqrt(w * w + x * x + y * y + z * z);
-  w /= norm, x /= norm, y /= norm, z /= norm;
-  double const rot[3][3] = {
-      {1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y)},
-      {2. * (x * y + w * z), 1. - 2. * (x * x + z * z), 2. * (y * z - w * x)},
-      {2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y)}};
   double const scale = std::ldexp(1., g_rand_int_range(rng, -300, 301));
   double e[3];
   for (double &ei : e) ei = scale * std::pow(10., g_rand_double_range(rng, -4., 4.));
-  int k = 0;
-  for (int i = 0; i < 3; i++)
-    for (int j = i; j < 3; j++, k++)
-      q[k] = rot[i][0] * e[0] * rot[j][0] + rot[i][1] * e[1] * rot[j][1] +
-             rot[i][2] * e[2] * rot[j][2];
+  random_form_with_eigenvalues(rng, e, q);
 }
 
 // max over entries of |Q − L·D·Lᵀ| / (|L|·|D|·|Lᵀ|), in long double, with

@@ -303,25 +303,13 @@ static void test_random_input(void) {
 /* Q = R·diag(a²)·Rᵀ for a random rotation R (unit quaternion) and
  * semi-axes of aspect ratio up to 1e8 about a random scale 2^±150. */
 static void random_ellipsoid(GRand *rng, double q[PW85_SYM]) {
-  double w = g_rand_double_range(rng, -1., 1.), x = g_rand_double_range(rng, -1., 1.);
-  double y = g_rand_double_range(rng, -1., 1.), z = g_rand_double_range(rng, -1., 1.);
-  double const norm = sqrt(w * w + x * x + y * y + z * z);
-  w /= norm, x /= norm, y /= norm, z /= norm;
-  double const rot[3][3] = {
-      {1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y)},
-      {2. * (x * y + w * z), 1. - 2. * (x * x + z * z), 2. * (y * z - w * x)},
-      {2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y)}};
   double const scale = ldexp(1., g_rand_int_range(rng, -150, 151));
   double a2[3];
   for (int i = 0; i < 3; i++) {
     double const a = scale * pow(10., g_rand_double_range(rng, -4., 4.));
     a2[i] = a * a;
   }
-  int k = 0;
-  for (int i = 0; i < 3; i++)
-    for (int j = i; j < 3; j++, k++)
-      q[k] = rot[i][0] * a2[0] * rot[j][0] + rot[i][1] * a2[1] * rot[j][1] +
-             rot[i][2] * a2[2] * rot[j][2];
+  random_form_with_eigenvalues(rng, a2, q);
 }
 
 /* Inside the documented domain pw85_overlap never contradicts μ²: 100,000

@@ -37,4 +37,23 @@ static inline void install_failing_gsl_handler(void) {
   gsl_set_error_handler(&failing_gsl_handler);
 }
 
+/* q = R·diag(e)·Rᵀ (storage of pw85.h) for a random rotation R, from a
+ * random unit quaternion: a symmetric form of eigenvalues e. */
+static inline void random_form_with_eigenvalues(GRand *rng, double const e[3],
+                                                double q[6]) {
+  double w = g_rand_double_range(rng, -1., 1.), x = g_rand_double_range(rng, -1., 1.);
+  double y = g_rand_double_range(rng, -1., 1.), z = g_rand_double_range(rng, -1., 1.);
+  double const norm = sqrt(w * w + x * x + y * y + z * z);
+  w /= norm, x /= norm, y /= norm, z /= norm;
+  double const rot[3][3] = {
+      {1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y)},
+      {2. * (x * y + w * z), 1. - 2. * (x * x + z * z), 2. * (y * z - w * x)},
+      {2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y)}};
+  int k = 0;
+  for (int i = 0; i < 3; i++)
+    for (int j = i; j < 3; j++, k++)
+      q[k] = rot[i][0] * e[0] * rot[j][0] + rot[i][1] * e[1] * rot[j][1] +
+             rot[i][2] * e[2] * rot[j][2];
+}
+
 #endif /* PW85_TESTUTIL_H */
