@@ -28,7 +28,7 @@ double const gsl_brent_golden = 0.3819660;
 // corrections of b by the miss over golden (needed where b − a rounds to a
 // coarser binade than a, so that a's ulp steps skip c). Of 1.4 million
 // random brackets 99.3% needed no correction, 0.4% one and the rest three
-// (tests/test-core.cpp checks 100,000 against GSL itself); a bracket that
+// (tests/test-core.cpp checks 68,384 against GSL itself); a bracket that
 // missed would cost one evaluation of f, nothing else.
 void golden_bracket(double c, double w, double *a, double *b) noexcept {
   double lo = c - gsl_brent_golden * w;
