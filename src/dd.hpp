@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Error-free transformations and double-double arithmetic (private).
+// Error-free transformations, double-double arithmetic and compensated
+// sums (private).
 // two_sum: Knuth, TAOCP vol. 2, 4.2.2; two_prod: exact through a fused
 // multiply-add (std::fma is exact also where it is emulated in software).
 #ifndef PW85_SRC_DD_HPP
@@ -7,33 +8,7 @@
 
 #include <cmath>
 
-// Force inlining, so that the helpers below are compiled for the target of
-// the function that uses them (see PW85_FMA_CLONES).
-// PW85_UNROLL before a loop of 3 to 9 iterations unrolls it completely, so
-// that index arithmetic (sym_index, row_of, col_of) folds into constants:
-// -O2 does not unroll by itself.
-#if defined(__GNUC__)
-#define PW85_UNROLL _Pragma("GCC unroll 9")
-#else
-#define PW85_UNROLL
-#endif
-
-#if defined(__GNUC__)
-#define PW85_INLINE inline __attribute__((always_inline))
-#else
-#define PW85_INLINE inline
-#endif
-
-// Compile a function twice, for CPUs with and without FMA, and pick one at
-// load time (an ifunc): where the CPU has FMA, std::fma becomes one
-// instruction; elsewhere it stays the exact libm routine. The build itself
-// stays portable.
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__) && \
-    (defined(__clang__) ? __clang_major__ >= 14 : __GNUC__ >= 8)
-#define PW85_FMA_CLONES __attribute__((target_clones("fma", "default")))
-#else
-#define PW85_FMA_CLONES
-#endif
+#include "compiler.hpp"
 
 namespace pw85::detail {
 
@@ -84,6 +59,26 @@ PW85_INLINE dd dd_add(dd a, double b) noexcept {
 }
 
 PW85_INLINE double dd_round(dd a) noexcept { return a.hi + a.lo; }
+
+// Compensated accumulation (Ogita, Rump and Oishi, SIAM J. Sci. Comput. 26,
+// 2005, algorithm Dot2): the result is as accurate as if computed in twice
+// the working precision, then rounded.
+struct Dot2 {
+  double sum;
+  double err;
+  PW85_INLINE void add_product(double a, double b) noexcept {
+    dd const p = two_prod(a, b);
+    dd const t = two_sum(sum, p.hi);
+    sum = t.hi;
+    err += p.lo + t.lo;
+  }
+  PW85_INLINE void add(double a) noexcept {
+    dd const t = two_sum(sum, a);
+    sum = t.hi;
+    err += t.lo;
+  }
+  PW85_INLINE double value() const noexcept { return sum + err; }
+};
 
 }  // namespace pw85::detail
 

@@ -1,14 +1,33 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The extern "C" facade: check arguments, call the core, map to a status.
+// The extern "C" facade of libpw85: check arguments, call the core, map the
+// core's status to PW85_*.
 #include "pw85.h"
 
 #include <cmath>
 
-#include "core.hpp"
+#include "checks.hpp"
+#include "cholesky.hpp"
+#include "contact.hpp"
+#include "f.hpp"
+#include "facade.hpp"
+#include "overlap.hpp"
+#include "spheroid.hpp"
+#include "status.hpp"
+#include "tolerances.hpp"
 
 namespace {
 
 namespace core = pw85::detail;
+using core::Status;
+
+static_assert(PW85_DIM == core::dim && PW85_SYM == core::sym,
+              "pw85.h and the core disagree on sizes");
+static_assert(PW85_LAMBDA_ATOL == core::lambda_atol &&
+                  PW85_MAX_ITER == core::brent_max_iter &&
+                  PW85_NR_ITER == core::restart_newton_iter,
+              "pw85.h does not describe the core as built");
+
+using pw85::facade::to_code;
 
 }  // namespace
 
@@ -25,7 +44,8 @@ const char *pw85_strerror(int status) noexcept {
     case PW85_ENOTPOSDEF:
       return "a quadratic form is not positive definite";
     case PW85_ERANGE:
-      return "the contact function exceeds the range of a double";
+      return "a result or an intermediate value is out of the range of a "
+             "double";
     case PW85_ENOMEM:
       return "the minimiser needs more working memory than reserved";
     case PW85_ENOCONV:
@@ -60,13 +80,15 @@ void pw85_spheroid(double a, double c, double const n[PW85_DIM],
   core::spheroid(a, c, n, q);
 }
 
-double pw85_f_neg(double lambda, double const *params) noexcept {
-  if (params == nullptr || !std::isfinite(lambda) ||
-      !core::all_finite(params, PW85_DIM + 2 * PW85_SYM))
-    return NAN;
+double pw85_f_neg(double lambda,
+                  double const params[PW85_DIM + 2 * PW85_SYM]) noexcept {
+  if (params == nullptr) return NAN;
+  double const *r12 = params;
+  double const *q1 = params + PW85_DIM;
+  double const *q2 = q1 + PW85_SYM;
   double value = 0.0;
-  if (!core::f_accurate(lambda, params, params + PW85_DIM,
-                        params + PW85_DIM + PW85_SYM, &value))
+  if (!core::valid_f_input(lambda, r12, q1, q2) ||
+      !core::f_compensated(lambda, r12, q1, q2, &value))
     return NAN;
   return -value;
 }
@@ -79,16 +101,16 @@ void pw85__residual(double lambda, double const r12[PW85_DIM],
 
 int pw85_contact_function(double const r12[PW85_DIM], double const q1[PW85_SYM],
                           double const q2[PW85_SYM], double out[2]) noexcept {
-  int const status = core::check_pointers_and_finite(r12, q1, q2, out);
-  if (status != PW85_SUCCESS) return status;
-  return core::contact_function(r12, q1, q2, out);
+  Status const status = core::check_pointers_and_finite(r12, q1, q2, out);
+  if (status != Status::success) return to_code(status);
+  return to_code(core::contact_function(r12, q1, q2, out));
 }
 
 int pw85_overlap(double const r12[PW85_DIM], double const q1[PW85_SYM],
                  double const q2[PW85_SYM], int *result) noexcept {
-  int const status = core::check_pointers_and_finite(r12, q1, q2, result);
-  if (status != PW85_SUCCESS) return status;
-  return core::overlap(r12, q1, q2, result);
+  Status const status = core::check_pointers_and_finite(r12, q1, q2, result);
+  if (status != Status::success) return to_code(status);
+  return to_code(core::overlap(r12, q1, q2, result));
 }
 
 }  // extern "C"

@@ -9,9 +9,9 @@
 #include <cfloat>
 #include <cmath>
 
-#include "core.hpp"
+#include "brent_certify.hpp"
+#include "ldl.hpp"
 #include "pw85.h"
-#include "linalg.hpp"
 #include "testutil.h"
 
 namespace {
@@ -32,8 +32,8 @@ void random_form(GRand *rng, double q[PW85_SYM]) {
 // dᵢ = 1/(1/dᵢ) as stored.
 double backward_error(double const q[PW85_SYM], Ldl const &f) {
   long double const l[3][3] = {{1.0L, 0.0L, 0.0L},
-                               {f.l1, 1.0L, 0.0L},
-                               {f.l2, f.l4, 1.0L}};
+                               {f.l10, 1.0L, 0.0L},
+                               {f.l20, f.l21, 1.0L}};
   long double d[3];
   for (int i = 0; i < 3; i++) d[i] = 1.0L / f.inv_d[i];
   double worst = 0.0;

@@ -5,8 +5,9 @@
 #include <cmath>
 #include <initializer_list>
 
+#include "checks.hpp"
 #include "legacy.hpp"
-#include "pw85_legacy.h"
+#include "scaling.hpp"
 
 namespace pw85::legacy::detail {
 
@@ -16,26 +17,26 @@ namespace core = pw85::detail;
 
 using core::Scaled;
 
-// core::rescale(), for input that passed core::check_input(): PW85_ERANGE
+// core::rescale(), for input that passed core::check_input(): Status::out_of_range
 // when the diagonals of Q1 and Q2 together span more than the range of a
 // double (the rescaled forms are then no longer positive definite).
-int rescale_checked(double const r[dim], double const q1[sym],
-                    double const q2[sym], Scaled *p) noexcept {
+Status rescale_checked(double const r[dim], double const q1[sym],
+                       double const q2[sym], Scaled *p) noexcept {
   if (!core::rescale(r, q1, q2, p) || !core::is_positive_definite(p->q1) ||
       !core::is_positive_definite(p->q2))
-    return PW85_ERANGE;
-  return PW85_SUCCESS;
+    return Status::out_of_range;
+  return Status::success;
 }
 
-// out = {μ², λ} from the rescaled problem's f; PW85_ERANGE when μ²
+// out = {μ², λ} from the rescaled problem's f; Status::out_of_range when μ²
 // overflows (out[0] = +∞), as pw85_contact_function does.
-int finish(Scaled const &p, double f, double lambda, int status,
-           double out[2]) noexcept {
+Status unscale(Scaled const &p, double f, double lambda, Status status,
+              double out[2]) noexcept {
   double const mu2 = std::ldexp(f, p.shift);
   out[1] = lambda;
   if (std::isinf(mu2)) {
     out[0] = HUGE_VAL;
-    return PW85_ERANGE;
+    return Status::out_of_range;
   }
   out[0] = mu2;
   return status;
@@ -43,10 +44,10 @@ int finish(Scaled const &p, double f, double lambda, int status,
 
 // Coincident centres: f ≡ 0, μ² = 0 and λ is arbitrary (½), as
 // pw85_contact_function answers.
-int coincident(double out[2]) noexcept {
+Status coincident(double out[2]) noexcept {
   out[0] = 0.0;
   out[1] = 0.5;
-  return PW85_SUCCESS;
+  return Status::success;
 }
 
 // Horner's scheme for p[0] + p[1]·x + ... + p[n−1]·x^(n−1).
@@ -59,10 +60,11 @@ double horner(double const (&p)[n], double x) noexcept {
 
 }  // namespace
 
-int contact_function1(double const r[dim], double const q1[sym],
-                      double const q2[sym], double out[2]) noexcept {
+Status contact_function1(double const r[dim], double const q1[sym],
+                         double const q2[sym], double out[2]) noexcept {
   Scaled p;
-  if (int const status = rescale_checked(r, q1, q2, &p); status != PW85_SUCCESS)
+  if (Status const status = rescale_checked(r, q1, q2, &p);
+      status != Status::success)
     return status;
   if (p.r_is_zero) return coincident(out);
 
@@ -78,7 +80,7 @@ int contact_function1(double const r[dim], double const q1[sym],
   // do not converge, or when it converges to a root of f′ outside [0, 1]
   // (inside, f′ has a single root, the maximiser). Each f(λ) with λ in
   // [0, 1] is a lower bound of μ² (μ² = max f): on failure the best one met
-  // is returned, with PW85_ENOCONV; λ = ½ is always among them.
+  // is returned, with Status::no_convergence; λ = ½ is always among them.
   double lambda = 0.5;
   double best_f = 0.0;
   double best_lambda = 0.5;
@@ -98,16 +100,17 @@ int contact_function1(double const r[dim], double const q1[sym],
       // Converged: μ² = f(λ) at the last iterate (seed ch. 4, eq. (4)).
       if (!(lambda >= 0.0 && lambda <= 1.0)) break;
       if (!f1(lambda, p.r, p.q1, p.q2, &f, nullptr)) break;
-      return finish(p, f, lambda, PW85_SUCCESS, out);
+      return unscale(p, f, lambda, Status::success, out);
     }
   }
-  return finish(p, best_f, best_lambda, PW85_ENOCONV, out);
+  return unscale(p, best_f, best_lambda, Status::no_convergence, out);
 }
 
-int contact_function2(double const r[dim], double const q1[sym],
-                      double const q2[sym], double out[2]) noexcept {
+Status contact_function2(double const r[dim], double const q1[sym],
+                         double const q2[sym], double out[2]) noexcept {
   Scaled p;
-  if (int const status = rescale_checked(r, q1, q2, &p); status != PW85_SUCCESS)
+  if (Status const status = rescale_checked(r, q1, q2, &p);
+      status != Status::success)
     return status;
   if (p.r_is_zero) return coincident(out);
 
@@ -133,7 +136,7 @@ int contact_function2(double const r[dim], double const q1[sym],
       -2.0 * a[2] * b[2],
       -a[2] * b[3],
   };
-  if (!core::all_finite(c, 7)) return PW85_ERANGE;
+  if (!core::all_finite<7>(c)) return Status::out_of_range;
 
   // Bisection on c over [0, 1]: c(0) = a0·b0 > 0 > c(1) = −a(1)·b(1) in
   // exact arithmetic, and c has one root there (seed ch. 4.2). The bracket
@@ -164,8 +167,8 @@ int contact_function2(double const r[dim], double const q1[sym],
   // method failed, and the only lower bound of μ² it knows is 0.
   if (!(lambda > 0.0 && lambda < 1.0 && a_lambda > 0.0 && b_lambda > 0.0 &&
         std::isfinite(mu2)))
-    return finish(p, 0.0, lambda, PW85_ENOCONV, out);
-  return finish(p, mu2, lambda, PW85_SUCCESS, out);
+    return unscale(p, 0.0, lambda, Status::no_convergence, out);
+  return unscale(p, mu2, lambda, Status::success, out);
 }
 
 }  // namespace pw85::legacy::detail

@@ -2,31 +2,14 @@
 // The two implementations of f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4).
 #include "legacy.hpp"
 
+#include "cholesky.hpp"
+
 namespace pw85::legacy::detail {
 
-namespace {
-
 namespace core = pw85::detail;
-
-double dot(double const x[dim], double const y[dim]) noexcept {
-  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
-
-// y = A·x for symmetric A.
-void sym_mul(double const a[sym], double const x[dim], double y[dim]) noexcept {
-  y[0] = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
-  y[1] = a[1] * x[0] + a[3] * x[1] + a[4] * x[2];
-  y[2] = a[2] * x[0] + a[4] * x[1] + a[5] * x[2];
-}
-
-// Q(λ) = (1−λ)·Q1 + λ·Q2 (seed ch. 4, eq. (2)).
-void combine(double lambda, double const q1[sym], double const q2[sym],
-             double q[sym]) noexcept {
-  double const mu = 1.0 - lambda;
-  for (int i = 0; i < sym; ++i) q[i] = mu * q1[i] + lambda * q2[i];
-}
-
-}  // namespace
+using core::combine;
+using core::dot;
+using core::sym_mul;
 
 bool q_positive_definite(double lambda, double const q1[sym],
                          double const q2[sym]) noexcept {

@@ -7,11 +7,13 @@
 #ifndef PW85_SRC_LEGACY_LEGACY_HPP
 #define PW85_SRC_LEGACY_LEGACY_HPP
 
-#include "core.hpp"
+#include "status.hpp"
+#include "sym3.hpp"
 
 namespace pw85::legacy::detail {
 
 using pw85::detail::dim;
+using pw85::detail::Status;
 using pw85::detail::sym;
 
 // The most Newton–Raphson steps contact_function1() takes (seed ch. 7.3).
@@ -60,17 +62,17 @@ double f2(double lambda, double const r[dim], double const q1[sym],
           double const q2[sym]) noexcept;
 
 // The contact functions, for input that passed pw85::detail::check_input().
-// Both return a PW85_* status and write out = {μ², λ} as documented in
-// include/pw85/pw85_legacy.h.
+// Both write out = {μ², λ} and return the status documented in
+// include/pw85/pw85_legacy.h (Status::no_convergence for PW85_ENOCONV).
 
 // Newton–Raphson on f′ from λ = ½, with f′ and f″ of f1() (ch. 7.3).
-int contact_function1(double const r[dim], double const q1[sym],
-                      double const q2[sym], double out[2]) noexcept;
+Status contact_function1(double const r[dim], double const q1[sym],
+                         double const q2[sym], double out[2]) noexcept;
 
 // Bisection on the numerator c(λ) of f′ (ch. 4, eqs. (13)–(15g)), then
 // μ² = f(λ) by eq. (10).
-int contact_function2(double const r[dim], double const q1[sym],
-                      double const q2[sym], double out[2]) noexcept;
+Status contact_function2(double const r[dim], double const q1[sym],
+                         double const q2[sym], double out[2]) noexcept;
 
 }  // namespace pw85::legacy::detail
 

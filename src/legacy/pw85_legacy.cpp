@@ -5,21 +5,18 @@
 
 #include <cmath>
 
-#include "core.hpp"
+#include "checks.hpp"
+#include "facade.hpp"
 #include "legacy.hpp"
+#include "status.hpp"
 
 namespace {
 
 namespace core = pw85::detail;
 namespace legacy = pw85::legacy::detail;
+using core::Status;
 
-// The validation of pw85_f_neg(): pointers, then finiteness.
-bool valid_f_input(double lambda, double const *r12, double const *q1,
-                   double const *q2) noexcept {
-  return r12 != nullptr && q1 != nullptr && q2 != nullptr &&
-         std::isfinite(lambda) && core::all_finite(r12, PW85_DIM) &&
-         core::all_finite(q1, PW85_SYM) && core::all_finite(q2, PW85_SYM);
-}
+using pw85::facade::to_code;
 
 }  // namespace
 
@@ -63,7 +60,7 @@ double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
                       double const q1[PW85_SYM], double const q2[PW85_SYM],
                       double *out) noexcept {
   double f = NAN;
-  if (!valid_f_input(lambda, r12, q1, q2) ||
+  if (!core::valid_f_input(lambda, r12, q1, q2) ||
       !legacy::f1(lambda, r12, q1, q2, &f, out)) {
     if (out != nullptr) out[0] = out[1] = out[2] = NAN;
     return NAN;
@@ -75,7 +72,7 @@ double pw85_legacy_f2(double lambda, double const r12[PW85_DIM],
                       double const q1[PW85_SYM], double const q2[PW85_SYM],
                       double *out) noexcept {
   double f = NAN;
-  if (valid_f_input(lambda, r12, q1, q2) &&
+  if (core::valid_f_input(lambda, r12, q1, q2) &&
       legacy::q_positive_definite(lambda, q1, q2))
     f = legacy::f2(lambda, r12, q1, q2);
   if (out != nullptr) out[0] = f;
@@ -86,18 +83,18 @@ int pw85_legacy_contact_function1(double const r12[PW85_DIM],
                                   double const q1[PW85_SYM],
                                   double const q2[PW85_SYM],
                                   double out[2]) noexcept {
-  int const status = core::check_input(r12, q1, q2, out);
-  if (status != PW85_SUCCESS) return status;
-  return legacy::contact_function1(r12, q1, q2, out);
+  Status const status = core::check_input(r12, q1, q2, out);
+  if (status != Status::success) return to_code(status);
+  return to_code(legacy::contact_function1(r12, q1, q2, out));
 }
 
 int pw85_legacy_contact_function2(double const r12[PW85_DIM],
                                   double const q1[PW85_SYM],
                                   double const q2[PW85_SYM],
                                   double out[2]) noexcept {
-  int const status = core::check_input(r12, q1, q2, out);
-  if (status != PW85_SUCCESS) return status;
-  return legacy::contact_function2(r12, q1, q2, out);
+  Status const status = core::check_input(r12, q1, q2, out);
+  if (status != Status::success) return to_code(status);
+  return to_code(legacy::contact_function2(r12, q1, q2, out));
 }
 
 }  // extern "C"

@@ -21,7 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "core.hpp"
+#include "checks.hpp"
+#include "compiler.hpp"
+#include "contact.hpp"
 #include "pw85.h"
 
 namespace {
@@ -258,7 +260,8 @@ void run(char const *title, std::vector<Case> const &cases, int passes,
     double out[2];
     seed::contact_function(c.r, c.q1, c.q2, out);
     err_seed = std::max(err_seed, std::fabs(out[0] - c.mu2) / c.mu2);
-    if (pw85::detail::check_input(c.r, c.q1, c.q2, out) == PW85_SUCCESS)
+    if (pw85::detail::check_input(c.r, c.q1, c.q2, out) ==
+        pw85::detail::Status::success)
       pw85::detail::contact_function(c.r, c.q1, c.q2, out);
     err_cf = std::max(err_cf, std::fabs(out[0] - c.mu2) / c.mu2);
   }

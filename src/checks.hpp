@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Every validation of input, for both libraries (private).
+#ifndef PW85_SRC_CHECKS_HPP
+#define PW85_SRC_CHECKS_HPP
+
+#include "compiler.hpp"
+#include "status.hpp"
+#include "sym3.hpp"
+
+namespace pw85::detail {
+
+// True when the N entries of x are finite: x − x is 0 for finite x and NaN
+// for NaN and ±∞. (The additions form a chain, but nothing waits for it:
+// the branch on the result is predicted.)
+template <int N>
+PW85_INLINE bool all_finite(double const *x) noexcept {
+  double acc = 0.0;
+  PW85_UNROLL
+  for (int i = 0; i < N; ++i) acc += x[i] - x[i];
+  return acc == 0.0;
+}
+
+// The arguments of every function that evaluates f at λ (pw85_f_neg and
+// the legacy f1, f2): no pointer NULL, λ and every entry of r (3), q1 and
+// q2 (6 each) finite.
+bool valid_f_input(double lambda, double const *r, double const *q1,
+                   double const *q2) noexcept;
+
+// Status::null_pointer if a pointer is NULL, Status::not_finite if an entry
+// of r (3), q1 or q2 (6 each) is not finite, Status::success otherwise.
+// out is only tested against NULL.
+Status check_pointers_and_finite(double const *r, double const *q1,
+                                 double const *q2, void const *out) noexcept;
+
+// True when the stored matrix is positive definite to the resolution of a
+// double Cholesky factorisation, after an exact power-of-two rescaling of
+// its rows and columns. False for a non-finite entry.
+bool is_positive_definite(double const q[sym]) noexcept;
+
+// check_pointers_and_finite(), then Status::not_positive_definite if q1 or
+// q2 is not positive definite: the input contract of the legacy contact
+// functions.
+Status check_input(double const *r, double const *q1, double const *q2,
+                   void const *out) noexcept;
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_CHECKS_HPP

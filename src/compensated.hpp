@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The compensated evaluation of f and Pᵢ at λ (private; seed ch. 4, eq. (4),
+// and ch. 5, eqs. (1a)–(1b); docs/implementation.rst). Header-only: the
+// callers are compiled for CPUs with and without FMA (PW85_FMA_CLONES),
+// and these kernels with them.
+#ifndef PW85_SRC_COMPENSATED_HPP
+#define PW85_SRC_COMPENSATED_HPP
+
+#include "compiler.hpp"
+#include "dd.hpp"
+#include "ldl.hpp"
+#include "sym3.hpp"
+#include "tolerances.hpp"
+
+namespace pw85::detail {
+
+// Q(λ) in double-double: hi + lo equals (1−λ)·Q1 + λ·Q2 to ~2⁻¹⁰⁴ relative
+// (1 − λ itself is carried as hi + lo; lo is not renormalised). hi is Q(λ)
+// as combine() rounds it, bit for bit (both round (1−λ)·Q1 and λ·Q2, then
+// their sum, once).
+PW85_INLINE void combine_dd(double lambda, double const q1[sym],
+                            double const q2[sym], double hi[sym],
+                            double lo[sym]) noexcept {
+  PW85_COUNT_EVALUATION();
+  dd const mu = two_sum(1.0, -lambda);
+  PW85_UNROLL
+  for (int i = 0; i < sym; ++i) {
+    dd const a = two_prod(mu.hi, q1[i]);
+    dd const b = two_prod(lambda, q2[i]);
+    dd const t = two_sum(a.hi, b.hi);
+    hi[i] = t.hi;
+    lo[i] = t.lo + (a.lo + b.lo + mu.lo * q1[i]);
+  }
+}
+
+// ρ = r − (Qhi + Qlo)·s, computed as in twice the working precision, then
+// rounded (compensated: its error is of order ε·|ρ|, not ε·|Q|·|s|).
+PW85_INLINE void compensated_residual(double const hi[sym],
+                                      double const lo[sym],
+                                      double const r[dim], double const s[dim],
+                                      double rho[dim]) noexcept {
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    Dot2 acc{r[i], 0.0};
+    double lo_part = 0.0;
+    PW85_UNROLL
+    for (int j = 0; j < dim; ++j) {
+      int const k = sym_index(i, j);
+      acc.add_product(-hi[k], s[j]);
+      lo_part += lo[k] * s[j];
+    }
+    acc.err -= lo_part;
+    rho[i] = acc.value();
+  }
+}
+
+// sᵀ·A·s for symmetric A, as in twice the working precision: no
+// cancellation error however ill-conditioned A is.
+PW85_INLINE double quad_form_dd(double const a[sym],
+                                double const s[dim]) noexcept {
+  Dot2 acc{0.0, 0.0};
+  PW85_UNROLL
+  for (int k = 0; k < sym; ++k) {
+    double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;  // exact
+    dd const p = two_prod(factor * a[k], s[row_of[k]]);
+    acc.add_product(p.hi, s[col_of[k]]);
+    acc.err += p.lo * s[col_of[k]];
+  }
+  return acc.value();
+}
+
+// x·y as an unevaluated sum hi + lo, as in twice the working precision.
+PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
+  Dot2 acc{0.0, 0.0};
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) acc.add_product(x[i], y[i]);
+  return two_sum(acc.sum, acc.err);
+}
+
+// The compensated evaluation at λ. With s = Q(λ)⁻¹·r in plain double,
+// e = Q⁻¹r − s its error (relative size cond·ε) and the residual
+// ρ = r − Q(λ)·s (compensated_residual(), Q(λ) kept as hi + lo):
+// r·s + s·ρ = rᵀQ⁻¹r − eᵀQe, so f = λ(1−λ)·(r·s + s·ρ) has an error of
+// order (cond·ε)², below an ulp while κ̄(Q) ≤ refine_cond. Beyond it, s is
+// refined once (s += Q⁻¹ρ) and ρ recomputed, squaring the error again.
+// Pᵢ = sᵀ·Qᵢ·s, first order in e, use the refined s, with exact products.
+struct Compensated {
+  double f;
+  double f_lo;  // f + f_lo: f before its rounding to double
+  double p1;    // P1, when asked for
+  double p2;    // P2, when asked for
+};
+
+// The evaluation from Q(λ) as hi + lo and its plain factors and solution.
+// WithP: also P1 and P2.
+template <bool WithP>
+PW85_INLINE void compensated_from(double lambda, double const r[dim],
+                                  double const q1[sym], double const q2[sym],
+                                  double const hi[sym], double const lo[sym],
+                                  LdlSolution const &plain,
+                                  Compensated *out) noexcept {
+  Ldl const &fac = plain.fac;
+  double s[dim], rho[dim], ds[dim];
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) s[i] = plain.s[i];
+  compensated_residual(hi, lo, r, s, rho);
+  bool const refine = ldl_cond_bound(hi, fac) > refine_cond;
+  if (refine || WithP) {
+    ldl_solve(fac, rho, ds);
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) ds[i] += s[i];  // the refined s
+  }
+  if (refine) {
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) s[i] = ds[i];
+    compensated_residual(hi, lo, r, s, rho);
+  }
+  dd const rs = dd_add(dot_dd(r, s), dot(s, rho));     // rᵀQ⁻¹r − eᵀQe
+  dd const w = dd_mul(two_sum(1.0, -lambda), lambda);  // λ(1−λ)
+  dd const value = dd_mul(w, rs);  // normalised: value.hi = dd_round(value)
+  out->f = value.hi;
+  out->f_lo = value.lo;
+  if (WithP) {
+    out->p1 = quad_form_dd(q1, ds);
+    out->p2 = quad_form_dd(q2, ds);
+  }
+}
+
+// The compensated evaluation at λ from scratch. Returns false when Q(λ)
+// does not factorise. fast: see ldl_decomp_q().
+template <bool WithP>
+PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
+                                      double const q1[sym],
+                                      double const q2[sym], bool fast,
+                                      Compensated *out) noexcept {
+  double hi[sym], lo[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
+  LdlSolution plain;
+  if (!ldl_decomp_q(hi, &plain.fac, fast)) return false;
+  ldl_solve(plain.fac, r, plain.s);
+  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, plain, out);
+  return true;
+}
+
+// The same, reusing the plain factors and solution already computed at this
+// λ (by evaluate_plain()): they are those evaluate_compensated() would
+// compute, since hi is Q(λ) as combine() rounds it.
+template <bool WithP>
+PW85_INLINE void evaluate_compensated(double lambda, double const r[dim],
+                                      double const q1[sym],
+                                      double const q2[sym],
+                                      LdlSolution const &plain,
+                                      Compensated *out) noexcept {
+  double hi[sym], lo[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
+  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, plain, out);
+}
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_COMPENSATED_HPP

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Compiler and portability macros of the core (private). Every other file
+// of src/ that needs one includes this header rather than defining its own.
+#ifndef PW85_SRC_COMPILER_HPP
+#define PW85_SRC_COMPILER_HPP
+
+// PW85_INLINE forces inlining, so that the small kernels are compiled for
+// the target of the function that uses them (see PW85_FMA_CLONES).
+// PW85_UNROLL before a loop of 3 to 9 iterations unrolls it completely, so
+// that index arithmetic (sym_index, row_of, col_of) folds into constants:
+// -O2 does not unroll by itself.
+#if defined(__GNUC__)
+#define PW85_INLINE inline __attribute__((always_inline))
+#define PW85_UNROLL _Pragma("GCC unroll 9")
+#else
+#define PW85_INLINE inline
+#define PW85_UNROLL
+#endif
+
+// Compile a function twice, for CPUs with and without FMA, and pick one at
+// load time (an ifunc): where the CPU has FMA, std::fma becomes one
+// instruction; elsewhere it stays the exact libm routine. The build itself
+// stays portable.
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__) && \
+    (defined(__clang__) ? __clang_major__ >= 14 : __GNUC__ >= 8)
+#define PW85_FMA_CLONES __attribute__((target_clones("fma", "default")))
+#else
+#define PW85_FMA_CLONES
+#endif
+
+// Benchmark builds only (-DPW85_COUNT_EVALUATIONS): the number of times
+// Q(λ) was formed on the calling thread, each one evaluation of f or of its
+// terms (counters.cpp).
+#ifdef PW85_COUNT_EVALUATIONS
+namespace pw85::detail {
+extern thread_local unsigned long long evaluations;
+unsigned long long evaluation_count() noexcept;
+}  // namespace pw85::detail
+#define PW85_COUNT_EVALUATION() (++::pw85::detail::evaluations)
+#else
+#define PW85_COUNT_EVALUATION() ((void)0)
+#endif
+
+#endif  // PW85_SRC_COMPILER_HPP

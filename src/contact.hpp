@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The contact function μ² = max f over [0, 1] (private; seed ch. 5;
+// docs/optimisation.rst, "The algorithm").
+#ifndef PW85_SRC_CONTACT_HPP
+#define PW85_SRC_CONTACT_HPP
+
+#include "problem.hpp"
+#include "status.hpp"
+
+namespace pw85::detail {
+
+// The contact function for input that passed check_pointers_and_finite():
+// out = {μ², λ}. Returns Status::success, Status::not_positive_definite,
+// Status::out_of_range (out[0] = +∞ when μ² overflows, out[1] = λ) or
+// Status::no_memory.
+Status contact_function(double const r[dim], double const q1[sym],
+                        double const q2[sym], double out[2]) noexcept;
+
+// Steps 3 to 7 on a prepared problem with r ≠ 0: out = {μ² of the problem
+// (unscaled, unfloored), λ}. Fast = p.moderate.
+template <bool Fast>
+Status solve(Problem const &p, double out[2]) noexcept;
+
+extern template Status solve<true>(Problem const &, double[2]) noexcept;
+extern template Status solve<false>(Problem const &, double[2]) noexcept;
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_CONTACT_HPP

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// f and the terms of Newton's step on ω at one λ, in plain double
+// (private; docs/optimisation.rst, eqs. (5.1a)–(5.8)).
+//
+// The functions of the search take Fast = Problem::moderate as a template
+// argument, so that each compiled search factorises Q(λ) one way
+// (ldl_decomp_q()).
+#ifndef PW85_SRC_EVALUATE_HPP
+#define PW85_SRC_EVALUATE_HPP
+
+#include <cfloat>
+#include <cmath>
+
+#include "compiler.hpp"
+#include "ldl.hpp"
+#include "problem.hpp"
+#include "sym3.hpp"
+
+namespace pw85::detail {
+
+// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4, eqs. (1)–(4)) in plain double:
+// rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ with z = L⁻¹·r, one triangular solve instead of the
+// two of ch. 4, eq. (4), no square root, and no cancellation. Returns false
+// when Q(λ) does not factorise. fast: see ldl_decomp_q().
+PW85_INLINE bool f_plain(double lambda, double const r[dim],
+                         double const q1[sym], double const q2[sym],
+                         bool fast, double *value) noexcept {
+  double q[sym];
+  combine(lambda, q1, q2, q);
+  Ldl fac;
+  if (!ldl_decomp_q(q, &fac, fast)) return false;
+  *value = lambda * (1.0 - lambda) * ldl_quad_inverse(fac, r);
+  return true;
+}
+
+// −f(λ), or 0 where Q(λ) fails to factorise (only possible through
+// rounding) or f is not finite: 0 is f at the ends of [0, 1], which a
+// maximisation never prefers. The objective of Brent's method, which
+// needs a finite value everywhere.
+template <bool Fast>
+PW85_INLINE double neg_f_or_zero(double lambda, Problem const &p) noexcept {
+  double value = 0.0;
+  if (!f_plain(lambda, p.r, p.q1, p.q2, Fast, &value) || !std::isfinite(value))
+    return 0.0;
+  return -value;
+}
+
+// The plain evaluation at λ (ch. 5, eqs. (1a)–(1b)): Q(λ) factorised,
+// s = Q(λ)⁻¹·r, Qᵢ·s, Pᵢ = sᵀ·Qᵢ·s, then f and
+// ω(λ) = λ·ρ − (1 − λ) with ρ = √(P2/P1) (eq. (5.6)): ω = (μ2 − μ1)/√P1
+// has the sign of g = μ2² − μ1² (ch. 5, eq. (4)) but is linear for two
+// spheres and nearly so otherwise, where g varies sharply near λ = 0 or 1.
+struct PlainPoint {
+  double lambda;
+  double trace_q;       // tr(Q(λ))
+  LdlSolution sol;      // the factors of Q(λ) and s
+  double q1s[dim];      // Q1·s
+  double q2s[dim];      // Q2·s
+  double p1, p2;        // Pᵢ = sᵀ·Qᵢ·s
+  double root_p1;       // √P1
+  double root_p2;       // √P2
+  double f;             // as neg_f_or_zero() computes it, bit for bit
+  double rho;           // ρ: 1/(1 + ρ) would be the root if ρ were constant
+  double omega;         // ω(λ)
+};
+
+// Returns false when Q(λ) does not factorise, P1 or P2 is not > 0, or f or
+// ω is not finite.
+template <bool Fast>
+PW85_INLINE bool evaluate_plain(double lambda, Problem const &p,
+                                PlainPoint *pt) noexcept {
+  double q[sym];
+  combine(lambda, p.q1, p.q2, q);
+  pt->lambda = lambda;
+  pt->trace_q = trace(q);
+  Ldl &fac = pt->sol.fac;
+  if (!ldl_decomp_q(q, &fac, Fast)) return false;
+  double const quad = ldl_solve_quad(fac, p.r, pt->sol.s);
+  sym_mul(p.q1, pt->sol.s, pt->q1s);
+  sym_mul(p.q2, pt->sol.s, pt->q2s);
+  pt->p1 = dot(pt->sol.s, pt->q1s);
+  pt->p2 = dot(pt->sol.s, pt->q2s);
+  if (!(pt->p1 > 0.0 && pt->p2 > 0.0)) return false;
+  double const mu = 1.0 - lambda;
+  pt->root_p1 = std::sqrt(pt->p1);
+  pt->root_p2 = std::sqrt(pt->p2);
+  pt->rho = pt->root_p2 / pt->root_p1;
+  pt->f = lambda * mu * quad;  // the expression of f_plain()
+  pt->omega = lambda * pt->rho - mu;
+  return std::isfinite(pt->omega) && std::isfinite(pt->f);
+}
+
+// Newton's step on ω from a plain point.
+struct NewtonStep {
+  double next;    // λ − ω/ω′
+  double domega;  // ω′ = 1 + ρ + λρ′ (eq. (5.7))
+};
+
+// Returns false when the step is not finite. With v = Q⁻¹·(Q2 − Q1)·s,
+// s′ = −v (ch. 4, eq. (5)), so Pᵢ′ = −2·sᵀ·Qᵢ·v and
+// ρ′ = (ρ/2)·(P2′/P2 − P1′/P1) (eq. (5.7)).
+PW85_INLINE bool newton_step(PlainPoint const &pt, NewtonStep *step) noexcept {
+  Ldl const &fac = pt.sol.fac;
+  double const lambda = pt.lambda;
+  double const p1 = pt.p1, p2 = pt.p2;
+  // aᵢ = sᵀQᵢv = zᵢᵀ·D⁻¹·(z2 − z1) with zᵢ = L⁻¹Qᵢs, since
+  // v = L⁻ᵀD⁻¹L⁻¹(Q2 − Q1)s: two forward substitutions side by side
+  // instead of a forward and a backward one in a row.
+  double z1[dim], z2[dim], y[dim];
+  ldl_forward(fac, pt.q1s, z1);
+  ldl_forward(fac, pt.q2s, z2);
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) y[i] = (z2[i] - z1[i]) * fac.inv_d[i];
+  double const a1 = dot(z1, y);
+  double const a2 = dot(z2, y);
+  // ρ′/ρ = sᵀQ1v/P1 − sᵀQ2v/P2. The step λ − ω/ω′ is computed as
+  // (1 + λ²ρ′)/ω′ (eq. (5.8)), which does not cancel when the root is far
+  // smaller than λ (ρ ≫ 1: a thin disc), and with both terms multiplied by
+  // c = √P1·P1·P2: then ρ·c = √P2·P1·P2 and ρ′·c = √P2·(a1·P2 − a2·P1)
+  // need neither ρ nor a division, and the step waits for the square
+  // roots and one division only. Unless c leaves the normal range.
+  double const p12 = p1 * p2;
+  double const c = pt.root_p1 * p12;
+  if (c >= DBL_MIN && c <= DBL_MAX) {
+    double const w = pt.root_p2 * (a1 * p2 - a2 * p1);           // ρ′·c
+    double const den = (pt.root_p1 + pt.root_p2) * p12 + lambda * w;  // ω′·c
+    step->next = (c + lambda * lambda * w) / den;
+    step->domega = den / c;
+  } else {
+    double const drho = pt.rho * (a1 / p1 - a2 / p2);
+    step->domega = 1.0 + pt.rho + lambda * drho;
+    step->next = (1.0 + lambda * lambda * drho) / step->domega;
+  }
+  return std::isfinite(step->next);
+}
+
+// The bounds of μ² at a plain point (ch. 5, eqs. (1a)–(1b), (3.16)):
+// f(λ) ≤ μ² ≤ max(μ1², μ2²), and κ̄(Q(λ)) for their rounding margins.
+struct PlainBounds {
+  double mu1_sq;  // μ1² = (1−λ)²·P1
+  double mu2_sq;  // μ2² = λ²·P2
+  double cond;    // κ̄(Q(λ)) = tr(Q)·tr(Q⁻¹) ≥ cond(Q(λ))
+};
+
+// Returns false when κ̄ is not finite.
+PW85_INLINE bool plain_bounds(PlainPoint const &pt, PlainBounds *b) noexcept {
+  double const lambda = pt.lambda, mu = 1.0 - lambda;
+  b->mu1_sq = mu * mu * pt.p1;
+  b->mu2_sq = lambda * lambda * pt.p2;
+  b->cond = pt.trace_q * ldl_trace_inverse(pt.sol.fac);
+  return std::isfinite(b->cond);
+}
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_EVALUATE_HPP

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The compensated finish of the search (finish.hpp).
+#include "finish.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "compensated.hpp"
+#include "compiler.hpp"
+#include "tolerances.hpp"
+
+namespace pw85::detail {
+
+namespace {
+
+// ω = λρ − (1 − λ), ρ = √(P2/P1) (eq. (5.6)), from compensated P1 and P2.
+PW85_INLINE double omega_of(double lambda, Compensated const &a) noexcept {
+  double const rho = std::sqrt(a.p2 / a.p1);
+  return lambda * rho - (1.0 - lambda);
+}
+
+// The quadratic model's gain over f(λ) for the Newton step Δλ = −step
+// (eq. (5.10)): ½·f′·Δλ = ½·√P1·ω·(μ1 + μ2)·step, with μ1 = (1−λ)√P1 and
+// μ2 = λ√P2.
+PW85_INLINE double model_gain(double lambda, Compensated const &a,
+                              double omega, double step) noexcept {
+  double const root_p1 = std::sqrt(a.p1);
+  double const sum_mu = (1.0 - lambda) * root_p1 + lambda * std::sqrt(a.p2);
+  return 0.5 * root_p1 * omega * sum_mu * step;
+}
+
+// The largest compensated f seen, and where.
+struct Best {
+  double f = 0.0;
+  double lambda = 0.0;
+  bool any = false;
+  void see(double f_at, double lambda_at) noexcept {
+    if (!any || f_at > f) f = f_at, lambda = lambda_at;
+    any = true;
+  }
+};
+
+}  // namespace
+
+PW85_FMA_CLONES
+bool finish(Problem const &p, FinishStart const &start,
+            Finished *out) noexcept {
+  double lambda = start.lambda;
+  double domega = start.domega;
+  Compensated a;
+  if (start.plain != nullptr)
+    evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, *start.plain, &a);
+  else if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
+                                       &a))
+    return false;
+  Best best;
+  double prev_lambda = 0.0, prev_omega = 0.0;
+  for (int evaluations = 1;; ++evaluations) {
+    best.see(a.f, lambda);
+    double const omega = omega_of(lambda, a);
+    // The slope: the secant through the previous point once there is one
+    // (and it is positive, as ω′ is), else the plain ω′.
+    if (evaluations > 1 && lambda != prev_lambda) {
+      double const secant = (omega - prev_omega) / (lambda - prev_lambda);
+      if (secant > 0.0) domega = secant;
+    }
+    if (!(domega > 0.0)) break;
+    double const step = omega / domega;
+    double const next = lambda - step;
+    if (!(next > 0.0 && next < 1.0)) break;
+    if (std::fabs(step) <= finish_accept * std::min(lambda, 1.0 - lambda)) {
+      double const gain = model_gain(lambda, a, omega, step);
+      if (gain >= 0.0 && gain <= max_model_gain * a.f) {
+        out->lambda = next;
+        // The gain is added to f before f is rounded: it can reach an ulp.
+        out->mu2 = std::max(a.f + (a.f_lo + gain), best.f);
+        return true;
+      }
+    }
+    prev_lambda = lambda;
+    prev_omega = omega;
+    lambda = next;
+    if (evaluations == finish_iter ||
+        !evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate, &a))
+      break;
+  }
+  out->lambda = best.lambda;
+  out->mu2 = best.f;
+  return true;
+}
+
+}  // namespace pw85::detail

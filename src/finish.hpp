@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The compensated finish of the search (private; docs/optimisation.rst,
+// step 7).
+#ifndef PW85_SRC_FINISH_HPP
+#define PW85_SRC_FINISH_HPP
+
+#include "ldl.hpp"
+#include "problem.hpp"
+
+namespace pw85::detail {
+
+struct FinishStart {
+  double lambda;  // where the compensated steps start
+  double domega;  // the plain ω′ there (or nearby): the first slope
+  // The plain factors and solution at lambda, when the caller has them
+  // (Newton's last point), else nullptr.
+  LdlSolution const *plain;
+};
+
+struct Finished {
+  double lambda;
+  double mu2;  // μ² of the problem
+};
+
+// Compensated Newton steps on ω (slope: start.domega first, then secants),
+// at most finish_iter evaluations, until a step is at most finish_accept
+// (relative). μ² is then the quadratic model's maximum (eq. (5.10)),
+// f(λ) + ½·f′(λ)·Δλ with f′ = −g = −√P1·ω·(μ1 + μ2), the gain added to the
+// double-double f before it is rounded, and never below the largest
+// compensated f evaluated (each is a lower bound of μ², to rounding). When
+// the steps do not settle, the largest f evaluated and its λ. Returns false
+// when Q(λ) failed to factorise at the start (rounding only).
+bool finish(Problem const &p, FinishStart const &start,
+            Finished *out) noexcept;
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_FINISH_HPP

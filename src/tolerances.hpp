@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Every tolerance and rounding margin of the search and of the overlap test,
+// derived in one place (private). ε = DBL_EPSILON = 2⁻⁵²; cond(A) is bounded
+// above by κ̄(A) = tr(A)·tr(A⁻¹) (ldl_cond_bound()). Equation numbers refer
+// to docs/optimisation.rst.
+#ifndef PW85_SRC_TOLERANCES_HPP
+#define PW85_SRC_TOLERANCES_HPP
+
+#include <cfloat>
+
+namespace pw85::detail {
+
+// ---- Rounding margins (certified bounds; the overlap test and the floor)
+//
+// A quantity computed with a handful of roundings of relative size ε/2 each
+// is off by at most about k·ε/2 relative. sphere_margin: the sphere bound
+// |r|²/(√tr Q1 + √tr Q2)² takes 15 roundings (two traces, two square roots,
+// a sum, a square, a dot product, a division, the final product), at most
+// 7.5·ε: 16·ε covers them twice, so (1 − sphere_margin) keeps it a lower
+// bound.
+constexpr double sphere_margin = 16.0 * DBL_EPSILON;
+// f(λ) = λ(1−λ)·rᵀQ(λ)⁻¹r in plain double: the LDLᵀ solve is backward
+// stable with |ΔQ| ≤ 4ε|L||D||Lᵀ| (Higham, Theorem 10.3, n = 3), so the
+// quadratic form is off by at most a few κ̄(Q)·ε relative, and forming Q(λ)
+// and λ(1−λ) adds a few ε. The same holds for rᵀQᵢ⁻¹r (λ = 0 or 1). The
+// margin m_f (eq. (5.11)) takes 32·ε·κ̄, at least 4 times that estimate.
+constexpr double plain_form_margin = 32.0 * DBL_EPSILON;
+// μᵢ² = sᵀQᵢs with s = Q(λ)⁻¹r off by κ̄(Q)·ε relative: a quadratic form in
+// an inexact vector, off by that times √κ̄(Qᵢ) (the error of s is amplified
+// by at most the ratio of the norms in which Qᵢ measures it). m_μ of
+// eq. (5.11) is plain_form_margin·κ̄(Q)·(1 + √max κ̄(Qᵢ)).
+// A margin is used only while it is below margin_limit: beyond, the plain
+// bounds are not trusted at all and the exact μ² decides.
+constexpr double margin_limit = 0.5;
+// pw85_overlap reports tangency (0) within 4 ulps of 1.
+constexpr double tangency = 4.0 * DBL_EPSILON;
+
+// ---- Stopping rules of the search (accuracy, not certification)
+//
+// The three that pw85.h publishes (PW85_LAMBDA_ATOL, PW85_MAX_ITER,
+// PW85_NR_ITER; pw85.cpp checks that they agree): Brent's method stops when
+// its bracket is narrower than lambda_atol, after at most brent_max_iter
+// iterations; when the first Newton run did not converge, or converged
+// outside Brent's bracket, at most restart_newton_iter Newton steps restart
+// from Brent's estimate (step 6).
+constexpr double lambda_atol = 1e-6;
+constexpr int brent_max_iter = 25;
+constexpr int restart_newton_iter = 3;
+//
+// Newton on the plain ω (step 4) stops after a step of relative size h ≤
+// newton_accept: its error is then O(h²) ≈ 1e-10, the rounding noise of
+// the plain ω for cond(Q) near 1e6. (At 1e-4, λ ended 6e-14 off on the
+// reference data, for 1% fewer evaluations.)
+constexpr double newton_accept = 1e-5;
+// Newton steps on ω from the warm start, before Brent's method certifies.
+constexpr int warm_newton_iter = 8;
+// The width of Brent's first bracket, which already meets Brent's stopping
+// test once it is verified to hold the maximum.
+constexpr double first_bracket_width = 0.98 * lambda_atol;
+// Each failed check of the bracket widens it by this factor.
+constexpr double bracket_growth = 16.0;
+// Brent's method (step 5) reuses f at Newton's last point when Newton's
+// estimate lies within this fraction of the first bracket's width of it,
+// that is well inside the bracket [λ − 0.38·w, λ + 0.62·w].
+constexpr double brent_reuse_fraction = 0.125;
+// The compensated finish (step 7) starts from Newton's last point, reusing
+// its factors, when Newton's last step from it was at most this (relative):
+// the first compensated step is then as small, and leaves λ off by its
+// square.
+constexpr double finish_reuse = 1e-8;
+// At most this many compensated evaluations.
+constexpr int finish_iter = 3;
+// A compensated Newton step of relative size h leaves λ off by O(h²) and
+// the quadratic model's μ² (eq. (5.10)) off by O(h³) relative: at
+// h ≤ finish_accept both are below the rounding of a double, so the step is
+// taken and the iteration stops.
+constexpr double finish_accept = 1e-7;
+// The quadratic model's gain ½·f′·Δλ is O(h²)·f ≤ 1e-14·f after such a
+// step; a gain above max_model_gain·f (or negative) means the model does
+// not hold there, and the largest f evaluated is returned instead.
+constexpr double max_model_gain = 1e-10;
+// The compensated f is refined once (s += Q⁻¹ρ) when κ̄(Q(λ)) exceeds this:
+// below, its error O((κ̄·ε)²) is under an ulp already.
+constexpr double refine_cond = 1e6;
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_TOLERANCES_HPP
