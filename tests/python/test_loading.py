@@ -44,8 +44,9 @@ def install_copy(root, libpw85, libpw85_legacy=None, paths=True):
     """Copy pypw85 under root, with a _paths.py naming the given paths."""
     target = root / "pypw85"
     target.mkdir()
-    for name in ("__init__.py", "legacy.py"):
-        shutil.copy(PACKAGE_DIR / name, target / name)
+    for source in PACKAGE_DIR.glob("*.py"):
+        if source.name != "_paths.py":  # written below, or absent
+            shutil.copy(source, target / source.name)
     if paths:
         (target / "_paths.py").write_text(
             "LIBPW85 = %r\nLIBPW85_LEGACY = %r\n" % (libpw85, libpw85_legacy))
