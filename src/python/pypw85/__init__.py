@@ -67,6 +67,7 @@ licence.
 """
 
 import ctypes
+import math
 
 import numpy as np
 
@@ -171,7 +172,7 @@ def _cholesky_decomp(a, l=None):
     (a,) = _unaliased(l, a)
     _check_finite("_cholesky_decomp", a=a)
     _c_cholesky_decomp(a.ctypes.data, l.ctypes.data)
-    if l[0] != l[0]:
+    if math.isnan(l[0]):  # pw85.h: l is all NaN when A is not SPD.
         raise Error(ENOTPOSDEF, "_cholesky_decomp", "a = %r" % a)
     return l
 
@@ -269,9 +270,9 @@ def _f_neg(where, lambda_, r12, q1, q2):
     q2 = _vector("q2", q2, SYM)
     params = np.concatenate((r12, q1, q2))
     value = _c_f_neg(lambda_, params.ctypes.data)
-    if value - value != 0.0:  # NaN or infinite.
+    if not math.isfinite(value):
         _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
-        if value != value:
+        if math.isnan(value):
             raise Error(ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
                         "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
         raise Error(ERANGE, where, "f(%r) overflows" % lambda_)

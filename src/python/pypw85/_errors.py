@@ -4,10 +4,6 @@
 from ._constants import STATUS_NAMES
 from ._libpw85 import strerror
 
-# Messages for codes that the pw85_strerror() of an older libpw85.so.2 may
-# not name (PW85_ENOCONV appeared in 2.1.0).
-_FALLBACK_MESSAGES = {6: "an iterative method did not converge"}
-
 
 class Error(ValueError):
     """An input rejected by pw85, or a result it cannot represent.
@@ -36,9 +32,6 @@ class Error(ValueError):
         super().__init__(status, where, detail)
         self.status = status
         self.strerror = strerror(status)
-        if status in _FALLBACK_MESSAGES and \
-                self.strerror.startswith("unknown"):
-            self.strerror = _FALLBACK_MESSAGES[status]
         self.where = where
         self.detail = detail
 

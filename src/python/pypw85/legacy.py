@@ -16,6 +16,8 @@ Importing this module raises `ImportError`, listing the places tried, when
 none works (for example when pw85 was configured with ``-Dlegacy=false``).
 """
 
+import math
+
 from ._constants import DIM, ENOTPOSDEF, SUCCESS, SYM
 from ._constants import ENOCONV as _ENOCONV
 from ._convert import (
@@ -208,7 +210,7 @@ def _f(where, c_function, size, lambda_, r12, q1, q2, out):
         out_p = out.ctypes.data
     value = c_function(lambda_, r12.ctypes.data, q1.ctypes.data,
                        q2.ctypes.data, out_p)
-    if value != value:
+    if math.isnan(value):
         _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
         raise Error(ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
                     "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
