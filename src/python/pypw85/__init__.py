@@ -78,8 +78,8 @@ from ._convert import (
 )
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
-# Not used here: kept where the tests, and users until 2.1.0, look for
-# them (the path libpw85 was loaded from; the ABI this package expects).
+# Not used here: kept where the tests look for them (the path libpw85 was
+# loaded from; the ABI this package expects).
 from ._libpw85 import path as _library_path
 from ._loader import ABI_MAJOR as _ABI_MAJOR
 
@@ -95,13 +95,14 @@ __all__ = [
 DIM = _constants.DIM
 #: The number of independent entries of a symmetric DIM×DIM matrix.
 SYM = _constants.SYM
-#: The absolute tolerance on λ at which Brent's method stops (in
-#: `contact_function`).
+#: The width of the bracket on λ at which Brent's certification of the
+#: maximum stops (in `contact_function`).
 LAMBDA_ATOL = _constants.LAMBDA_ATOL
 #: The maximum number of iterations of Brent's method (in
 #: `contact_function`).
 MAX_ITER = _constants.MAX_ITER
-#: The maximum number of Newton-Raphson steps that refine Brent's λ (in
+#: The maximum number of plain Newton steps restarted from Brent's estimate
+#: when Brent's bracket did not confirm the first Newton run (in
 #: `contact_function`).
 NR_ITER = _constants.NR_ITER
 
@@ -283,9 +284,12 @@ def f(lambda_, r12, q1, q2):
     """Return f(λ) = λ(1−λ)·r12ᵀ·Q⁻¹·r12, with Q = (1−λ)·Q1 + λ·Q2.
 
     μ² is the maximum of f over [0, 1] (see `contact_function`). f is
-    evaluated through a Cholesky factorisation of Q (seed, chapter 4.1), in
-    plain double arithmetic: |r12|² and the entries of Q1, Q2 must stay
-    between about 1e-300 and 1e300.
+    evaluated with compensated (double-double) arithmetic, as pw85_f_neg in
+    pw85.h: accurate to about one ulp while the condition number of Q stays
+    below ~1e10 (every value of the reference dataset is correctly rounded).
+    There is no rescaling: intermediate values must stay within the range of
+    a double (r12ᵀ·r12 and the entries of Q1, Q2 between about 1e-150 and
+    1e150).
 
     Parameters
     ----------
@@ -342,8 +346,9 @@ def f_neg(lambda_, r12, q1, q2):
 def _residual(lambda_, r12, q1, q2, out=None):
     """Return f(λ), g(λ) = μ2²(λ) − μ1²(λ) and g′(λ).
 
-    Internal (exposed for testing; the residual of the Newton-Raphson
-    refinement, seed chapter 5); may change without notice.
+    Internal (exposed for testing; g is the residual of seed chapter 5,
+    whose sign the Newton steps of `contact_function` follow); may change
+    without notice.
 
     Parameters
     ----------
@@ -391,8 +396,20 @@ def contact_function(r12, q1, q2, out=None):
     μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
     (seed, chapter 3). μ is the common factor by which both ellipsoids must
     be scaled, their centres fixed, to be externally tangent: μ² < 1 means
-    they overlap, μ² > 1 that they are disjoint. λ is found by Brent's
-    method to `LAMBDA_ATOL`, then refined by Newton-Raphson steps.
+    they overlap, μ² > 1 that they are disjoint.
+
+    The search (docs, chapter "Optimisation"): the inputs are rescaled by
+    powers of two; λ starts from the sphere model's maximiser and is refined
+    by safeguarded Newton steps on ω(λ) = λρ − (1−λ), where ρ = √(P2/P1),
+    Pi = sᵀ·Qi·s and s = Q(λ)⁻¹·r12; ω has the sign of g = μ2² − μ1² and
+    the same root. GSL's Brent minimiser then certifies the maximum on a
+    narrow verified bracket, stopping at a width of `LAMBDA_ATOL` or after
+    `MAX_ITER` iterations; if that bracket does not confirm the first Newton
+    run, at most `NR_ITER` plain Newton steps restart from Brent's estimate.
+    A compensated (double-double) finish makes μ² correctly rounded (on the
+    reference dataset and on general pairs of aspect ratios to 1e4); μ² and
+    λ stay accurate while the condition numbers of Q1 and Q2 are below
+    ~1e16 (aspect ratios to 1e8; see pw85.h).
 
     Parameters
     ----------
@@ -458,7 +475,7 @@ def overlap(r12, q1, q2):
         −1 if they overlap (μ² < 1; also for coincident centres), +1 if
         they are disjoint (μ² > 1, including μ² beyond the range of a
         double), 0 if they are tangent to the resolution of double
-        arithmetic (|μ² − 1| ≤ 4 ulps of 1).
+        arithmetic (abs(μ² − 1) ≤ 4·ε, ε = 2⁻⁵² the machine epsilon).
 
     Raises
     ------
