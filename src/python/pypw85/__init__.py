@@ -89,8 +89,9 @@ __all__ = [
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
 ]
 
-# The constants of pw85.h: the values are those of _constants, documented
-# here, where users and Sphinx look for them.
+# The constants of pw85.h: the values are those of _constants (checked
+# against the header by tests/python/test_constants.py), documented here,
+# where users and Sphinx look for them.
 #: The dimension of the physical space.
 DIM = _constants.DIM
 #: The number of independent entries of a symmetric DIM×DIM matrix.

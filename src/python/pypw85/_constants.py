@@ -1,9 +1,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The macros and status codes of pw85.h, as Python values.
 
-Written by hand from include/pw85/pw85.h (tests/python/test_api.py
-compares them with the header). The messages of the status codes are not
-repeated here: they come from the library's pw85_strerror().
+Written by hand from include/pw85/pw85.h; tests/python/test_constants.py
+parses that header and fails if any ``#define PW85_*`` number differs from
+the value here or has no counterpart. The messages of the status codes are
+not repeated here: they come from the library's pw85_strerror().
 """
 
 DIM = 3  # PW85_DIM
