@@ -11,8 +11,7 @@ import numpy as np
 import pytest
 
 import pypw85
-from conftest import (SOURCE_ROOT, TUTORIAL_LAMBDA, TUTORIAL_MU2, full,
-                      random_spd)
+from conftest import TUTORIAL_LAMBDA, TUTORIAL_MU2, full, random_spd
 
 EPS = np.finfo(np.float64).eps
 R_OK = np.array([0.7, -0.7, 1.1])
@@ -30,24 +29,7 @@ def f_numpy(lambda_, r12, q1, q2):
     return lambda_ * (1 - lambda_) * r12 @ np.linalg.solve(q, r12)
 
 
-# --- constants, version, status codes --------------------------------------
-
-def header_macros(name):
-    text = (SOURCE_ROOT / "include" / "pw85" / name).read_text()
-    return dict(re.findall(r"^#define PW85_(\w+)\s+([-+.\w]+)", text, re.M))
-
-
-def test_constants_match_pw85_h():
-    macros = header_macros("pw85.h")
-    for name in ["DIM", "SYM", "MAX_ITER", "NR_ITER", "SUCCESS", "EFAULT",
-                 "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM"]:
-        assert getattr(pypw85, name) == int(macros[name]), name
-        assert type(getattr(pypw85, name)) is int
-    assert pypw85.LAMBDA_ATOL == float(macros["LAMBDA_ATOL"])
-    # Every status code of the header has its constant.
-    statuses = {k for k in macros if re.fullmatch(r"SUCCESS|E[A-Z]+", k)}
-    assert statuses <= set(dir(pypw85))
-
+# --- version, status codes (constants: test_constants.py) ------------
 
 def test_version():
     assert re.fullmatch(r"\d+\.\d+\.\d+", pypw85.__version__)

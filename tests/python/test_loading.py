@@ -9,6 +9,7 @@ PW85_LEGACY_LIBRARY or LD_LIBRARY_PATH unless the test sets them.
 
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -17,7 +18,7 @@ import pytest
 
 import pypw85
 
-from conftest import TUTORIAL_MU2
+from conftest import SOURCE_ROOT, TUTORIAL_MU2
 
 PACKAGE_DIR = pathlib.Path(pypw85.__file__).resolve().parent
 LIBPW85 = os.path.abspath(pypw85._library_path)
@@ -44,8 +45,9 @@ def install_copy(root, libpw85, libpw85_legacy=None, paths=True):
     """Copy pypw85 under root, with a _paths.py naming the given paths."""
     target = root / "pypw85"
     target.mkdir()
-    for name in ("__init__.py", "legacy.py"):
-        shutil.copy(PACKAGE_DIR / name, target / name)
+    for source in PACKAGE_DIR.glob("*.py"):
+        if source.name != "_paths.py":  # written below, or absent
+            shutil.copy(source, target / source.name)
     if paths:
         (target / "_paths.py").write_text(
             "LIBPW85 = %r\nLIBPW85_LEGACY = %r\n" % (libpw85, libpw85_legacy))
@@ -98,6 +100,10 @@ def test_failed_environment_falls_back_with_warning(tmp_path):
     assert result.stdout.split()[0] == LIBPW85
     assert "RuntimeWarning" in result.stderr
     assert "/nonexistent/libpw85.so.2" in result.stderr
+    # The warning points at the code that imported pypw85 (python -c),
+    # not into the package.
+    assert result.stderr.startswith("<string>:2: RuntimeWarning"), \
+        result.stderr
 
 
 def import_error(result):
@@ -172,3 +178,13 @@ print(" ".join(sorted(new - set(sys.stdlib_module_names))))
     result = run(root, code)
     assert result.returncode == 0, result.stderr
     assert result.stdout.split() == ["pypw85"]
+
+
+def test_meson_installs_every_module():
+    """src/python/meson.build installs every module of the package (a
+    module left out breaks only the installed copy)."""
+    meson_build = (SOURCE_ROOT / "src" / "python" / "meson.build").read_text()
+    installed = set(re.findall(r"'pypw85/(\w+\.py)'", meson_build))
+    modules = {p.name for p in PACKAGE_DIR.glob("*.py")} - {"_paths.py"}
+    assert "__init__.py" in modules and "legacy.py" in modules
+    assert installed == modules

@@ -67,18 +67,21 @@ licence.
 """
 
 import ctypes
-import ctypes.util
-import numbers
-import os
-import sys
-import warnings
+import math
 
 import numpy as np
 
-try:
-    from . import _paths
-except ImportError:  # Not installed by meson (e.g. run from the sources).
-    _paths = None
+from . import _constants
+from ._convert import (
+    check_finite as _check_finite, output as _output, real as _real,
+    unaliased as _unaliased, vector as _vector,
+)
+from ._errors import Error
+from ._libpw85 import lib as _lib, version as _library_version
+# Not used here: kept where the tests look for them (the path libpw85 was
+# loaded from; the ABI this package expects).
+from ._libpw85 import path as _library_path
+from ._loader import ABI_MAJOR as _ABI_MAJOR
 
 __all__ = [
     "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER",
@@ -86,185 +89,46 @@ __all__ = [
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
 ]
 
+# The constants of pw85.h: the values are those of _constants (checked
+# against the header by tests/python/test_constants.py), documented here,
+# where users and Sphinx look for them.
 #: The dimension of the physical space.
-DIM = 3
+DIM = _constants.DIM
 #: The number of independent entries of a symmetric DIM×DIM matrix.
-SYM = 6
-#: The absolute tolerance on λ at which Brent's method stops (in
-#: `contact_function`).
-LAMBDA_ATOL = 1e-6
+SYM = _constants.SYM
+#: The width of the bracket on λ at which Brent's certification of the
+#: maximum stops (in `contact_function`).
+LAMBDA_ATOL = _constants.LAMBDA_ATOL
 #: The maximum number of iterations of Brent's method (in
 #: `contact_function`).
-MAX_ITER = 25
-#: The maximum number of Newton-Raphson steps that refine Brent's λ (in
+MAX_ITER = _constants.MAX_ITER
+#: The maximum number of plain Newton steps restarted from Brent's estimate
+#: when Brent's bracket did not confirm the first Newton run (in
 #: `contact_function`).
-NR_ITER = 3
+NR_ITER = _constants.NR_ITER
 
-# The status codes of pw85.h (values never change once released).
+# The status codes (values never change once released).
 #: Success.
-SUCCESS = 0
+SUCCESS = _constants.SUCCESS
 #: A pointer argument is NULL (cannot happen through pypw85).
-EFAULT = 1
+EFAULT = _constants.EFAULT
 #: An input is NaN or infinite.
-EDOM = 2
+EDOM = _constants.EDOM
 #: A quadratic form is not positive definite.
-ENOTPOSDEF = 3
+ENOTPOSDEF = _constants.ENOTPOSDEF
 #: A result (or the dynamic range of the input) exceeds the range of a
 #: double.
-ERANGE = 4
+ERANGE = _constants.ERANGE
 #: The minimiser needs more working memory than pw85 reserves (not
 #: expected).
-ENOMEM = 5
+ENOMEM = _constants.ENOMEM
 #: An iterative method did not converge (the legacy contact functions).
-ENOCONV = 6
+ENOCONV = _constants.ENOCONV
 
-_STATUS_NAMES = {
-    SUCCESS: "PW85_SUCCESS",
-    EFAULT: "PW85_EFAULT",
-    EDOM: "PW85_EDOM",
-    ENOTPOSDEF: "PW85_ENOTPOSDEF",
-    ERANGE: "PW85_ERANGE",
-    ENOMEM: "PW85_ENOMEM",
-    ENOCONV: "PW85_ENOCONV",
-}
+#: The version of the libpw85 actually loaded ("MAJOR.MINOR.PATCH", from
+#: its pw85_version()).
+__version__ = _library_version
 
-# Messages for codes that the pw85_strerror() of an older libpw85.so.2 may
-# not name (PW85_ENOCONV appeared in 2.1.0).
-_FALLBACK_MESSAGES = {6: "an iterative method did not converge"}
-
-# The ABI this module is written for: the soname's major version
-# (libpw85.so.2). Change it only together with the library's soversion.
-_ABI_MAJOR = 2
-
-# Arrays cross into C as the address of a validated, C-contiguous float64
-# buffer (`double *` in pw85.h). c_void_p keeps each call cheap: ctypes
-# converts the int address without calling back into Python.
-_DOUBLE_P = ctypes.c_void_p
-
-
-def _soname(name, major):
-    """The file name the dynamic loader looks for (e.g. libpw85.so.2)."""
-    if sys.platform == "darwin":
-        return "lib%s.%d.dylib" % (name, major)
-    if sys.platform in ("win32", "cygwin"):
-        return "%s%s-%d.dll" % ("cyg" if sys.platform == "cygwin" else "lib",
-                                name, major)
-    return "lib%s.so.%d" % (name, major)
-
-
-def _load_library(name, env_var, installed, symbols, check=None):
-    """dlopen lib<name> from the first place that works (see the module doc).
-
-    Returns (the ctypes.CDLL, the path or name it was loaded from). Raises
-    ImportError listing every place tried and why each one failed.
-    """
-    soname = _soname(name, _ABI_MAJOR)
-    candidates = []  # (where, path or None, reason if None)
-    env_path = os.environ.get(env_var)
-    if env_path:
-        candidates.append(("$%s = %%r" % env_var, env_path, None))
-    else:
-        candidates.append(("$%s" % env_var, None, "not set"))
-    if _paths is None:
-        candidates.append(("installed path", None,
-                           "none recorded (pypw85/_paths.py is absent: this "
-                           "copy of pypw85 was not installed by meson)"))
-    elif installed is None:
-        candidates.append(("installed path", None,
-                           "none recorded (lib%s was not built with this "
-                           "pypw85)" % name))
-    else:
-        candidates.append(("installed path %r (recorded in pypw85/_paths.py)",
-                           installed, None))
-    candidates.append(("system search for %r (LD_LIBRARY_PATH, "
-                       "/etc/ld.so.cache, default directories)", soname, None))
-
-    tried = []
-
-    def attempt(where, path, reason):
-        if path is None:
-            tried.append("%s: %s" % (where, reason))
-            return None
-        try:
-            lib = ctypes.CDLL(path)
-            missing = [s for s in symbols if not hasattr(lib, s)]
-            if missing:
-                raise OSError("not lib%s: no symbol %s"
-                              % (name, ", ".join(missing)))
-            if check is not None:
-                check(lib)
-        except OSError as exc:
-            tried.append("%s: %s" % (where % path, exc))
-            return None
-        if env_path and path != env_path:
-            warnings.warn("pypw85: could not load $%s; loaded %r instead (%s)"
-                          % (env_var, path, tried[0]), RuntimeWarning,
-                          stacklevel=4)
-        return lib
-
-    for where, path, reason in candidates:
-        lib = attempt(where, path, reason)
-        if lib is not None:
-            return lib, path
-    # Last resort, looked up only when needed (it may run ldconfig or gcc).
-    found = ctypes.util.find_library(name)
-    if found is None:
-        tried.append("ctypes.util.find_library(%r): not found" % name)
-    elif found != soname:
-        lib = attempt("ctypes.util.find_library(%r) = %%r" % name, found,
-                      None)
-        if lib is not None:
-            return lib, found
-    raise ImportError(
-        "pypw85: cannot load lib%s (ABI %d, %s). Places tried, in order:\n"
-        "%s\nSet %s to the full path of %s, or reinstall pw85 with "
-        "meson (which records where it puts the library)."
-        % (name, _ABI_MAJOR, soname,
-           "\n".join("  %d. %s" % (k + 1, t) for k, t in enumerate(tried)),
-           env_var, soname), name="pypw85")
-
-
-def _check_libpw85(lib):
-    """Reject a library whose pw85_version() is not of our ABI."""
-    lib.pw85_version.argtypes = []
-    lib.pw85_version.restype = ctypes.c_char_p
-    version = lib.pw85_version().decode("ascii", "replace")
-    if version.split(".")[0] != str(_ABI_MAJOR):
-        raise OSError("pw85_version() is %s, not %d.x" % (version, _ABI_MAJOR))
-
-
-_SYMBOLS = {
-    # name: (restype, argtypes), as declared in pw85.h.
-    "pw85_strerror": (ctypes.c_char_p, [ctypes.c_int]),
-    "pw85_version": (ctypes.c_char_p, []),
-    "pw85__cholesky_decomp": (None, [_DOUBLE_P, _DOUBLE_P]),
-    "pw85__cholesky_solve": (None, [_DOUBLE_P, _DOUBLE_P, _DOUBLE_P]),
-    "pw85_spheroid": (None, [ctypes.c_double, ctypes.c_double, _DOUBLE_P,
-                             _DOUBLE_P]),
-    "pw85_f_neg": (ctypes.c_double, [ctypes.c_double, _DOUBLE_P]),
-    "pw85__residual": (None, [ctypes.c_double, _DOUBLE_P, _DOUBLE_P,
-                              _DOUBLE_P, _DOUBLE_P]),
-    "pw85_contact_function": (ctypes.c_int, [_DOUBLE_P, _DOUBLE_P,
-                                             _DOUBLE_P, _DOUBLE_P]),
-    "pw85_overlap": (ctypes.c_int, [_DOUBLE_P, _DOUBLE_P, _DOUBLE_P,
-                                    ctypes.POINTER(ctypes.c_int)]),
-}
-
-
-def _declare(lib, table):
-    """Set restype and argtypes of every function of table on lib."""
-    for symbol, (restype, argtypes) in table.items():
-        function = getattr(lib, symbol)
-        function.restype = restype
-        function.argtypes = argtypes
-
-
-_lib, _library_path = _load_library(
-    "pw85", "PW85_LIBRARY", getattr(_paths, "LIBPW85", None), _SYMBOLS,
-    _check_libpw85)
-_declare(_lib, _SYMBOLS)
-
-_strerror = _lib.pw85_strerror
 _c_cholesky_decomp = _lib.pw85__cholesky_decomp
 _c_cholesky_solve = _lib.pw85__cholesky_solve
 _c_spheroid = _lib.pw85_spheroid
@@ -272,119 +136,6 @@ _c_f_neg = _lib.pw85_f_neg
 _c_residual = _lib.pw85__residual
 _c_contact_function = _lib.pw85_contact_function
 _c_overlap = _lib.pw85_overlap
-
-#: The version of the libpw85 actually loaded ("MAJOR.MINOR.PATCH", from
-#: its pw85_version()).
-__version__ = _lib.pw85_version().decode("ascii")
-
-
-class Error(ValueError):
-    """An input rejected by pw85, or a result it cannot represent.
-
-    Parameters
-    ----------
-    status : int
-        A pw85 status code (`EDOM`, `ENOTPOSDEF`, `ERANGE`, ...).
-    where : str, optional
-        The function that failed.
-    detail : str, optional
-        What exactly was wrong.
-
-    Attributes
-    ----------
-    status : int
-        The status code.
-    strerror : str
-        The library's message for it (``pw85_strerror(status)``).
-    """
-
-    def __init__(self, status, where=None, detail=None):
-        super().__init__(status, where, detail)
-        self.status = status
-        self.strerror = _strerror(status).decode("utf-8", "replace")
-        if status in _FALLBACK_MESSAGES and \
-                self.strerror.startswith("unknown"):
-            self.strerror = _FALLBACK_MESSAGES[status]
-        self.where = where
-        self.detail = detail
-
-    def __str__(self):
-        text = "%s (%s)" % (self.strerror,
-                            _STATUS_NAMES.get(self.status,
-                                              "status %d" % self.status))
-        if self.detail:
-            text += ": " + self.detail
-        if self.where:
-            text = self.where + ": " + text
-        return text
-
-
-# ---------------------------------------------------------------------------
-# Argument checking, shared with pypw85.legacy.
-
-def _vector(name, x, n):
-    """x as a C-contiguous float64 array of shape (n,), or raise."""
-    if (type(x) is np.ndarray and x.dtype == np.float64 and x.shape == (n,)
-            and x.flags.c_contiguous):
-        return x
-    try:
-        a = np.asarray(x)
-    except (TypeError, ValueError) as exc:
-        raise ValueError("%s: expected an array of shape (%d,), got %s (%s)"
-                         % (name, n, type(x).__name__, exc)) from None
-    if a.dtype.kind not in "iuf":
-        raise TypeError("%s: expected real numbers (float64), got an array "
-                        "of dtype %s" % (name, a.dtype))
-    if a.shape != (n,):
-        raise ValueError("%s: expected shape (%d,), got %s"
-                         % (name, n, a.shape))
-    return np.ascontiguousarray(a, dtype=np.float64)
-
-
-def _output(name, out, n):
-    """out, checked to be a writeable float64 array of shape (n,); or new."""
-    if out is None:
-        return np.empty(n, dtype=np.float64)
-    expected = "a C-contiguous, writeable numpy.ndarray of dtype float64 " \
-               "and shape (%d,)" % n
-    if not isinstance(out, np.ndarray):
-        raise TypeError("%s: expected %s, got %s"
-                        % (name, expected, type(out).__name__))
-    if out.dtype != np.float64:
-        raise TypeError("%s: expected %s, got dtype %s"
-                        % (name, expected, out.dtype))
-    if out.shape != (n,):
-        raise ValueError("%s: expected %s, got shape %s"
-                         % (name, expected, out.shape))
-    if not out.flags.c_contiguous:
-        raise ValueError("%s: expected %s, got a non-contiguous array"
-                         % (name, expected))
-    if not out.flags.writeable:
-        raise ValueError("%s: expected %s, got a read-only array"
-                         % (name, expected))
-    return out
-
-
-def _unaliased(out, *inputs):
-    """The inputs, each copied if it shares memory with out."""
-    return [np.array(x) if np.may_share_memory(out, x) else x for x in inputs]
-
-
-def _real(name, x):
-    """x as a Python float, if x is a real scalar; else raise TypeError."""
-    if isinstance(x, numbers.Real):
-        return float(x)
-    if isinstance(x, np.ndarray) and x.ndim == 0 and x.dtype.kind in "iuf":
-        return float(x)
-    raise TypeError("%s: expected a real number, got %s"
-                    % (name, type(x).__name__))
-
-
-def _check_finite(where, **named):
-    """Raise Error(EDOM) naming the first non-finite argument."""
-    for name, value in named.items():
-        if not np.isfinite(value).all():
-            raise Error(EDOM, where, "%s = %r" % (name, value))
 
 
 # ---------------------------------------------------------------------------
@@ -423,7 +174,7 @@ def _cholesky_decomp(a, l=None):
     (a,) = _unaliased(l, a)
     _check_finite("_cholesky_decomp", a=a)
     _c_cholesky_decomp(a.ctypes.data, l.ctypes.data)
-    if l[0] != l[0]:
+    if math.isnan(l[0]):  # pw85.h: l is all NaN when A is not SPD.
         raise Error(ENOTPOSDEF, "_cholesky_decomp", "a = %r" % a)
     return l
 
@@ -521,9 +272,9 @@ def _f_neg(where, lambda_, r12, q1, q2):
     q2 = _vector("q2", q2, SYM)
     params = np.concatenate((r12, q1, q2))
     value = _c_f_neg(lambda_, params.ctypes.data)
-    if value - value != 0.0:  # NaN or infinite.
+    if not math.isfinite(value):
         _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
-        if value != value:
+        if math.isnan(value):
             raise Error(ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
                         "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
         raise Error(ERANGE, where, "f(%r) overflows" % lambda_)
@@ -534,9 +285,12 @@ def f(lambda_, r12, q1, q2):
     """Return f(λ) = λ(1−λ)·r12ᵀ·Q⁻¹·r12, with Q = (1−λ)·Q1 + λ·Q2.
 
     μ² is the maximum of f over [0, 1] (see `contact_function`). f is
-    evaluated through a Cholesky factorisation of Q (seed, chapter 4.1), in
-    plain double arithmetic: |r12|² and the entries of Q1, Q2 must stay
-    between about 1e-300 and 1e300.
+    evaluated with compensated (double-double) arithmetic, as pw85_f_neg in
+    pw85.h: accurate to about one ulp while the condition number of Q stays
+    below ~1e10 (every value of the reference dataset is correctly rounded).
+    There is no rescaling: intermediate values must stay within the range of
+    a double (r12ᵀ·r12 and the entries of Q1, Q2 between about 1e-150 and
+    1e150).
 
     Parameters
     ----------
@@ -593,8 +347,9 @@ def f_neg(lambda_, r12, q1, q2):
 def _residual(lambda_, r12, q1, q2, out=None):
     """Return f(λ), g(λ) = μ2²(λ) − μ1²(λ) and g′(λ).
 
-    Internal (exposed for testing; the residual of the Newton-Raphson
-    refinement, seed chapter 5); may change without notice.
+    Internal (exposed for testing; g is the residual of seed chapter 5,
+    whose sign the Newton steps of `contact_function` follow); may change
+    without notice.
 
     Parameters
     ----------
@@ -642,8 +397,20 @@ def contact_function(r12, q1, q2, out=None):
     μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
     (seed, chapter 3). μ is the common factor by which both ellipsoids must
     be scaled, their centres fixed, to be externally tangent: μ² < 1 means
-    they overlap, μ² > 1 that they are disjoint. λ is found by Brent's
-    method to `LAMBDA_ATOL`, then refined by Newton-Raphson steps.
+    they overlap, μ² > 1 that they are disjoint.
+
+    The search (docs, chapter "Optimisation"): the inputs are rescaled by
+    powers of two; λ starts from the sphere model's maximiser and is refined
+    by safeguarded Newton steps on ω(λ) = λρ − (1−λ), where ρ = √(P2/P1),
+    Pi = sᵀ·Qi·s and s = Q(λ)⁻¹·r12; ω has the sign of g = μ2² − μ1² and
+    the same root. GSL's Brent minimiser then certifies the maximum on a
+    narrow verified bracket, stopping at a width of `LAMBDA_ATOL` or after
+    `MAX_ITER` iterations; if that bracket does not confirm the first Newton
+    run, at most `NR_ITER` plain Newton steps restart from Brent's estimate.
+    A compensated (double-double) finish makes μ² correctly rounded (on the
+    reference dataset and on general pairs of aspect ratios to 1e4); μ² and
+    λ stay accurate while the condition numbers of Q1 and Q2 are below
+    ~1e16 (aspect ratios to 1e8; see pw85.h).
 
     Parameters
     ----------
@@ -709,7 +476,7 @@ def overlap(r12, q1, q2):
         −1 if they overlap (μ² < 1; also for coincident centres), +1 if
         they are disjoint (μ² > 1, including μ² beyond the range of a
         double), 0 if they are tangent to the resolution of double
-        arithmetic (|μ² − 1| ≤ 4 ulps of 1).
+        arithmetic (abs(μ² − 1) ≤ 4·ε, ε = 2⁻⁵² the machine epsilon).
 
     Raises
     ------

@@ -16,39 +16,29 @@ Importing this module raises `ImportError`, listing the places tried, when
 none works (for example when pw85 was configured with ``-Dlegacy=false``).
 """
 
-import ctypes
+import math
 
-from . import (
-    DIM, ENOTPOSDEF, SUCCESS, SYM, Error, _check_finite, _declare,
-    _load_library, _output, _paths, _real, _unaliased, _vector,
+from ._constants import DIM, ENOTPOSDEF, SUCCESS, SYM
+from ._constants import ENOCONV as _ENOCONV
+from ._convert import (
+    check_finite as _check_finite, output as _output, real as _real,
+    unaliased as _unaliased, vector as _vector,
 )
+from ._errors import Error
+from ._loader import load_library
+from ._symbols import LIBPW85_LEGACY, declare
 
 __all__ = [
     "ENOCONV", "contact_function1", "contact_function2", "f1", "f2",
 ]
 
 #: Status of `contact_function1` when Newton's method does not converge
-#: (PW85_ENOCONV of pw85.h).
-ENOCONV = 6
+#: (PW85_ENOCONV of pw85.h; the same value as `pypw85.ENOCONV`).
+ENOCONV = _ENOCONV
 
-_DOUBLE_P = ctypes.c_void_p
-
-_SYMBOLS = {
-    # name: (restype, argtypes), as declared in pw85_legacy.h.
-    "pw85_legacy__det_sym": (ctypes.c_double, [_DOUBLE_P]),
-    "pw85_legacy__xT_adjA_x": (ctypes.c_double, [_DOUBLE_P, _DOUBLE_P]),
-    "pw85_legacy__detQ_as_poly": (None, [_DOUBLE_P] * 5),
-    "pw85_legacy__rT_adjQ_r_as_poly": (None, [_DOUBLE_P] * 5),
-    "pw85_legacy_f1": (ctypes.c_double, [ctypes.c_double] + [_DOUBLE_P] * 4),
-    "pw85_legacy_f2": (ctypes.c_double, [ctypes.c_double] + [_DOUBLE_P] * 4),
-    "pw85_legacy_contact_function1": (ctypes.c_int, [_DOUBLE_P] * 4),
-    "pw85_legacy_contact_function2": (ctypes.c_int, [_DOUBLE_P] * 4),
-}
-
-_lib, _library_path = _load_library(
-    "pw85_legacy", "PW85_LEGACY_LIBRARY",
-    getattr(_paths, "LIBPW85_LEGACY", None), _SYMBOLS)
-_declare(_lib, _SYMBOLS)
+_lib, _library_path = load_library(
+    "pw85_legacy", "PW85_LEGACY_LIBRARY", "LIBPW85_LEGACY", LIBPW85_LEGACY)
+declare(_lib, LIBPW85_LEGACY)
 
 _c_det_sym = _lib.pw85_legacy__det_sym
 _c_xT_adjA_x = _lib.pw85_legacy__xT_adjA_x
@@ -220,7 +210,7 @@ def _f(where, c_function, size, lambda_, r12, q1, q2, out):
         out_p = out.ctypes.data
     value = c_function(lambda_, r12.ctypes.data, q1.ctypes.data,
                        q2.ctypes.data, out_p)
-    if value != value:
+    if math.isnan(value):
         _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
         raise Error(ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
                     "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
