@@ -21,6 +21,9 @@
  * state between calls. None prints, aborts, exits, allocates from the heap,
  * or changes process-wide state (in particular GSL's error handler is never
  * installed nor reached).
+ *
+ * Versions: what carries no `@since` is the C API of pw85 1.0, same names
+ * and argument order; `@since` marks what a later release added.
  */
 #ifndef PW85_H
 #define PW85_H
@@ -28,7 +31,8 @@
 #include "pw85_version.h"
 
 /** Marks the exported functions; define it before including this header to
- *  override (for example as empty, to link a static copy). */
+ *  override (for example as empty, to link a static copy).
+ *  @since 2.1.0 */
 #ifndef PW85_API
 #if defined(_WIN32) && defined(PW85_BUILDING_DLL)
 #define PW85_API __declspec(dllexport)
@@ -40,7 +44,8 @@
 #endif
 
 /** Exception specification of the functions below for C++ callers: none
- *  of them throws. */
+ *  of them throws.
+ *  @since 2.1.0 */
 #if defined(__cplusplus) && __cplusplus >= 201103L
 #define PW85_NOEXCEPT noexcept
 #else
@@ -56,27 +61,42 @@ extern "C" {
 /** The number of independent entries of a symmetric PW85_DIM×PW85_DIM
  *  matrix. */
 #define PW85_SYM 6
-/** The absolute tolerance on λ at which Brent's method stops. */
+/** @name Parameters of the search, as built
+ *  The values pw85_contact_function() was compiled with, for information:
+ *  defining them otherwise in a program changes nothing. The steps named
+ *  are those of "The algorithm" in the optimisation chapter of the docs.
+ *  @{ */
+/** Brent's method stops when its bracket on λ is narrower than this
+ *  (step 5); the first verified bracket handed to it is
+ *  0.98 × PW85_LAMBDA_ATOL wide, so that it already meets that test. */
 #define PW85_LAMBDA_ATOL 1e-6
-/** The maximum number of iterations of Brent's method. */
+/** The maximum number of iterations of Brent's method (step 5). */
 #define PW85_MAX_ITER 25
-/** The maximum number of Newton–Raphson steps that refine Brent's λ. */
+/** The maximum number of plain Newton steps on ω restarted from Brent's
+ *  estimate when the first Newton run did not converge or converged
+ *  outside Brent's bracket (step 6). */
 #define PW85_NR_ITER 3
+/** @} */
 
 /** @name Status codes
- *  Returned by the functions that return an int. Values never change once
- *  released; new codes are appended.
+ *  Returned by the functions that return an int (pw85 1.0 returned 0
+ *  always). Values never change once released; new codes are appended.
  *  @{ */
-#define PW85_SUCCESS 0     /**< success */
-#define PW85_EFAULT 1      /**< a pointer argument is NULL */
-#define PW85_EDOM 2        /**< an input is NaN or infinite */
-#define PW85_ENOTPOSDEF 3  /**< q1 or q2 is not positive definite */
-#define PW85_ERANGE 4      /**< μ² or the input's dynamic range exceeds the
-                                range of a double */
+#define PW85_SUCCESS 0     /**< success. @since 2.1.0 */
+#define PW85_EFAULT 1      /**< a pointer argument is NULL. @since 2.1.0 */
+#define PW85_EDOM 2        /**< an input is NaN or infinite.
+                                @since 2.1.0 */
+#define PW85_ENOTPOSDEF 3  /**< q1 or q2 is not positive definite.
+                                @since 2.1.0 */
+#define PW85_ERANGE 4      /**< μ², or the dynamic range of the input,
+                                exceeds the range of a double.
+                                @since 2.1.0 */
 #define PW85_ENOMEM 5      /**< the minimiser needs more working memory than
-                                pw85 reserves (not expected with any GSL) */
+                                pw85 reserves (not expected with any GSL).
+                                @since 2.1.0 */
 #define PW85_ENOCONV 6     /**< the method did not converge (legacy contact
-                                functions; out holds a lower bound of μ²) */
+                                functions; out holds a lower bound of μ²).
+                                @since 2.1.0 */
 /** @} */
 
 /**
@@ -84,6 +104,7 @@ extern "C" {
  * @param[in] status a value returned by a pw85 function.
  * @return a static, NUL-terminated English message (never NULL); an unknown
  *         code gets "unknown pw85 status".
+ * @since 2.1.0
  */
 PW85_API const char *pw85_strerror(int status) PW85_NOEXCEPT;
 
@@ -93,6 +114,7 @@ PW85_API const char *pw85_strerror(int status) PW85_NOEXCEPT;
  * Compare with PW85_VERSION (the headers' version) when the library is loaded
  * with dlopen.
  * @return a static string (never NULL).
+ * @since 2.1.0
  */
 PW85_API const char *pw85_version(void) PW85_NOEXCEPT;
 
@@ -141,19 +163,23 @@ PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
  * @brief Minus the function f of the contact problem:
  *        −f(λ) = −λ(1−λ) r12ᵀ·Q(λ)⁻¹·r12, Q(λ) = (1−λ)·Q1 + λ·Q2.
  *
- * The signature is that of a gsl_function, so that GSL's minimisers can
- * call it. Evaluated with compensated (double-double) arithmetic: accurate
+ * Shaped like GSL's gsl_function, as in pw85 1.0 (a double, then a
+ * pointer to the parameters); GSL takes `void *params`, so pass it to GSL
+ * through a wrapper function. Evaluated with compensated (double-double) arithmetic: accurate
  * to about one ulp while cond(Q(λ)) stays below ~1e10 (every value of the
  * reference dataset is correctly rounded). No rescaling: intermediate
  * values must stay within the range of a double (|r12|² and the entries of
  * Q1, Q2 between about 1e-150 and 1e150).
  * @param[in] lambda λ, normally in [0, 1].
- * @param[in] params 15 doubles: r12[3], then q1[6], then q2[6].
+ * @param[in] params PW85_DIM + 2·PW85_SYM = 15 doubles: r12[3], then
+ *                   q1[6], then q2[6].
  * @return −f(λ), a value ≤ 0 for λ in [0, 1]; NaN if params is NULL, if
  *         lambda or an entry of params is not finite, or if Q(λ) is not
  *         positive definite.
  */
-PW85_API double pw85_f_neg(double lambda, double const *params) PW85_NOEXCEPT;
+PW85_API double pw85_f_neg(double lambda,
+                           double const params[PW85_DIM + 2 * PW85_SYM])
+    PW85_NOEXCEPT;
 
 /**
  * @brief f(λ), the residual g(λ) = μ2²(λ) − μ1²(λ) and g′(λ) (internal,
@@ -184,8 +210,16 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  * accurate to ~1e-13 or better there. Accuracy holds while the condition
  * numbers of Q1 and Q2 stay below ~1e16 (aspect ratios to 1e8); beyond,
  * the answer is still finite, ≥ |r12|²/(√tr Q1 + √tr Q2)² > 0, with the
- * statuses below, but may be inaccurate. Brent's method (GSL) certifies the
- * maximum to PW85_LAMBDA_ATOL; Newton steps refine λ (see the docs).
+ * statuses below, but may be inaccurate.
+ *
+ * The method, step by step in the optimisation chapter of the docs: check
+ * the input; rescale it by powers of two; start from the maximiser for two
+ * spheres; take safeguarded Newton steps on ω(λ) = λ·ρ − (1−λ),
+ * ρ = √(P2/P1), Pi = sᵀ·Qi·s, s = Q(λ)⁻¹·r12, which has the sign of
+ * g = μ2² − μ1²; certify the maximum with GSL's Brent minimiser on a narrow
+ * bracket verified to enclose it; finish in compensated (double-double)
+ * arithmetic, so that μ² is correctly rounded; never return μ² below the
+ * bound above; scale back.
  *
  * @param[in] r12 the centre-to-centre vector c2 − c1 (any finite vector;
  *                r12 = 0 gives μ² = 0, λ = ½).
@@ -204,6 +238,7 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  *         the range of a double (ratio above about 1e600: out untouched);
  *         PW85_ENOMEM if GSL's minimiser would need more than the working
  *         memory reserved on the stack (out untouched; not expected).
+ *         (pw85 1.0 returned 0 always; these statuses since 2.1.0.)
  */
 PW85_API int pw85_contact_function(double const r12[PW85_DIM],
                                    double const q1[PW85_SYM],
@@ -230,6 +265,7 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  * @return the statuses of pw85_contact_function(), with the same meaning;
  *         *result is written on PW85_SUCCESS only (also when μ² would
  *         overflow: such ellipsoids are disjoint, *result = +1).
+ * @since 2.1.0
  */
 PW85_API int pw85_overlap(double const r12[PW85_DIM],
                           double const q1[PW85_SYM],

@@ -10,12 +10,14 @@
  * function applies here. Functions whose name starts with an underscore are
  * internal, exposed for testing. Every function is thread-safe and none
  * throws.
+ *
+ * C++ standard: C++11 for everything but pw85::metadata, which needs C++17
+ * (std::string_view, as in pw85 2.0) and is left out below C++17.
  */
 #ifndef PW85_HPP
 #define PW85_HPP
 
 #include <cstddef>
-#include <string_view>
 
 #include "pw85.h"
 
@@ -25,14 +27,91 @@ namespace pw85 {
 constexpr std::size_t dim = PW85_DIM;
 /** The number of entries of a symmetric matrix (PW85_SYM). */
 constexpr std::size_t sym = PW85_SYM;
-/** The absolute tolerance on λ of Brent's method (PW85_LAMBDA_ATOL). */
+/** Brent's method stops when its bracket on λ is narrower than this, as
+ *  built (PW85_LAMBDA_ATOL). */
 constexpr double lambda_atol = PW85_LAMBDA_ATOL;
-/** The maximum number of iterations of Brent's method (PW85_MAX_ITER). */
+/** The maximum number of iterations of Brent's method, as built
+ *  (PW85_MAX_ITER). */
 constexpr std::size_t max_iter = PW85_MAX_ITER;
-/** The maximum number of Newton–Raphson refinement steps (PW85_NR_ITER). */
+/** The maximum number of plain Newton steps restarted from Brent's
+ *  estimate, as built (PW85_NR_ITER). */
 constexpr std::size_t nr_iter = PW85_NR_ITER;
 
-/** Facts about this project, fixed at compile time from the headers. */
+/** The version of the library actually loaded (pw85_version()).
+ *  @since 2.1.0 */
+inline char const *library_version() noexcept { return pw85_version(); }
+
+/** The message of a status code (pw85_strerror()).
+ *  @since 2.1.0 */
+inline char const *strerror(int status) noexcept {
+  return pw85_strerror(status);
+}
+
+/** A = L·Lᵀ (pw85__cholesky_decomp()). */
+inline void _cholesky_decomp(double const a[sym], double l[sym]) noexcept {
+  pw85__cholesky_decomp(a, l);
+}
+
+/** Solves L·Lᵀ·x = b (pw85__cholesky_solve()). */
+inline void _cholesky_solve(double const l[sym], double const b[dim],
+                            double x[dim]) noexcept {
+  pw85__cholesky_solve(l, b, x);
+}
+
+/** The quadratic form of a spheroid (pw85_spheroid()). */
+inline void spheroid(double a, double c, double const n[dim],
+                     double q[sym]) noexcept {
+  pw85_spheroid(a, c, n, q);
+}
+
+/** −f(λ) (pw85_f_neg()), with r12, q1, q2 passed separately. NaN if a
+ *  pointer is NULL or an input is not finite. */
+inline double f_neg(double lambda, double const r12[dim],
+                    double const q1[sym], double const q2[sym]) noexcept {
+  if (r12 == nullptr || q1 == nullptr || q2 == nullptr)
+    return pw85_f_neg(lambda, nullptr);
+  double params[PW85_DIM + 2 * PW85_SYM];
+  for (std::size_t i = 0; i < dim; ++i) params[i] = r12[i];
+  for (std::size_t i = 0; i < sym; ++i) {
+    params[dim + i] = q1[i];
+    params[dim + sym + i] = q2[i];
+  }
+  return pw85_f_neg(lambda, params);
+}
+
+/** out = {f(λ), g(λ), g′(λ)} (pw85__residual()). */
+inline void _residual(double lambda, double const r12[dim],
+                      double const q1[sym], double const q2[sym],
+                      double out[3]) noexcept {
+  pw85__residual(lambda, r12, q1, q2, out);
+}
+
+/** out = {μ², λ}; returns a PW85_* status (pw85_contact_function()). */
+inline int contact_function(double const r12[dim], double const q1[sym],
+                            double const q2[sym], double out[2]) noexcept {
+  return pw85_contact_function(r12, q1, q2, out);
+}
+
+/** Certified overlap test (pw85_overlap()): *result = −1 overlap, +1
+ *  disjoint, 0 tangent within 4 ulps; returns a PW85_* status.
+ *  @since 2.1.0 */
+inline int overlap(double const r12[dim], double const q1[sym],
+                   double const q2[sym], int *result) noexcept {
+  return pw85_overlap(r12, q1, q2, result);
+}
+
+}  // namespace pw85
+
+// C++17 or later (MSVC reports its standard in _MSVC_LANG). Doxygen, which
+// defines no __cplusplus, documents this part too.
+#if !defined(__cplusplus) || __cplusplus >= 201703L || \
+    (defined(_MSVC_LANG) && _MSVC_LANG >= 201703L)
+#include <string_view>
+
+namespace pw85 {
+
+/** Facts about this project, fixed at compile time from the headers.
+ *  Needs C++17 (std::string_view). */
 namespace metadata {
 constexpr std::string_view name{"pw85"};
 /** The headers' version; pw85::library_version() gives the loaded one. */
@@ -50,64 +129,7 @@ constexpr std::string_view url{""};
 constexpr std::string_view year{"2026"};
 }  // namespace metadata
 
-/** The version of the library actually loaded (pw85_version()). */
-inline char const *library_version() noexcept { return pw85_version(); }
-
-/** The message of a status code (pw85_strerror()). */
-inline char const *strerror(int status) noexcept {
-  return pw85_strerror(status);
-}
-
-/** A = L·Lᵀ (pw85__cholesky_decomp()); a: double[6], l: double[6]. */
-inline void _cholesky_decomp(double const *a, double *l) noexcept {
-  pw85__cholesky_decomp(a, l);
-}
-
-/** Solves L·Lᵀ·x = b (pw85__cholesky_solve()). */
-inline void _cholesky_solve(double const *l, double const *b,
-                            double *x) noexcept {
-  pw85__cholesky_solve(l, b, x);
-}
-
-/** The quadratic form of a spheroid (pw85_spheroid()). */
-inline void spheroid(double a, double c, double const *n, double *q) noexcept {
-  pw85_spheroid(a, c, n, q);
-}
-
-/** −f(λ) (pw85_f_neg()), with r12, q1, q2 passed separately. NaN if a
- *  pointer is NULL or an input is not finite. */
-inline double f_neg(double lambda, double const *r12, double const *q1,
-                    double const *q2) noexcept {
-  if (r12 == nullptr || q1 == nullptr || q2 == nullptr)
-    return pw85_f_neg(lambda, nullptr);
-  double params[PW85_DIM + 2 * PW85_SYM];
-  for (std::size_t i = 0; i < dim; ++i) params[i] = r12[i];
-  for (std::size_t i = 0; i < sym; ++i) {
-    params[dim + i] = q1[i];
-    params[dim + sym + i] = q2[i];
-  }
-  return pw85_f_neg(lambda, params);
-}
-
-/** out = {f(λ), g(λ), g′(λ)} (pw85__residual()). */
-inline void _residual(double lambda, double const *r12, double const *q1,
-                      double const *q2, double *out) noexcept {
-  pw85__residual(lambda, r12, q1, q2, out);
-}
-
-/** out = {μ², λ}; returns a PW85_* status (pw85_contact_function()). */
-inline int contact_function(double const *r12, double const *q1,
-                            double const *q2, double *out) noexcept {
-  return pw85_contact_function(r12, q1, q2, out);
-}
-
-/** Certified overlap test (pw85_overlap()): *result = −1 overlap, +1
- *  disjoint, 0 tangent within 4 ulps; returns a PW85_* status. */
-inline int overlap(double const *r12, double const *q1, double const *q2,
-                   int *result) noexcept {
-  return pw85_overlap(r12, q1, q2, result);
-}
-
 }  // namespace pw85
+#endif  // C++17
 
 #endif  // PW85_HPP

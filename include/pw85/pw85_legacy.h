@@ -14,6 +14,9 @@
  * Thread safety: every function is reentrant and thread-safe; none keeps
  * state between calls. None prints, aborts, exits, allocates from the heap,
  * or changes process-wide state.
+ *
+ * Versions: what carries no `@since` is the legacy C API of pw85 1.0;
+ * `@since` marks what a later release added.
  */
 #ifndef PW85_LEGACY_H
 #define PW85_LEGACY_H
@@ -21,7 +24,8 @@
 #include "pw85.h"
 
 /** Marks a deprecated spelling; define it (for example as empty) before
- *  including this header to override. */
+ *  including this header to override.
+ *  @since 2.1.0 */
 #ifndef PW85_LEGACY_DEPRECATED
 #if defined(__GNUC__) && \
     (__GNUC__ > 4 || (__GNUC__ == 4 && __GNUC_MINOR__ >= 5))
@@ -87,6 +91,7 @@ PW85_API void pw85_legacy__detQ_as_poly(double const q1[PW85_SYM],
  * @param[in] q2 the matrix Q2.
  * @param[in] q3 the matrix 2·Q1 − Q2.
  * @param[out] a the coefficients a0, a1, a2.
+ * @since 2.1.0 (pw85 1.0 spelt it pw85__rT_adjQ_r_as_poly())
  */
 PW85_API void pw85_legacy__rT_adjQ_r_as_poly(double const r[PW85_DIM],
                                              double const q1[PW85_SYM],
@@ -122,7 +127,7 @@ void pw85__rT_adjQ_r_as_poly(double const r[PW85_DIM],
  * @param[in] r12 the centre-to-centre vector c2 − c1.
  * @param[in] q1 the quadratic form of the first ellipsoid.
  * @param[in] q2 the quadratic form of the second ellipsoid.
- * @param[out] out NULL, or a `double[3]` that receives out[0] = f(λ),
+ * @param[out] out NULL, or 3 doubles that receive out[0] = f(λ),
  *                 out[1] = f′(λ), out[2] = f″(λ); NaN in each entry when
  *                 the function returns NaN.
  * @return f(λ); NaN if r12, q1 or q2 is NULL, if an input is not finite, or
@@ -131,7 +136,7 @@ void pw85__rT_adjQ_r_as_poly(double const r[PW85_DIM],
 PW85_API double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
                                double const q1[PW85_SYM],
                                double const q2[PW85_SYM],
-                               double *out) PW85_NOEXCEPT;
+                               double out[3]) PW85_NOEXCEPT;
 
 /**
  * @brief Implementation #2 of f(λ): the rational fraction
@@ -145,7 +150,7 @@ PW85_API double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
  * @param[in] r12 the centre-to-centre vector c2 − c1.
  * @param[in] q1 the quadratic form of the first ellipsoid.
  * @param[in] q2 the quadratic form of the second ellipsoid.
- * @param[out] out NULL, or a `double[1]` that receives f(λ) (NaN when the
+ * @param[out] out NULL, or 1 double that receives f(λ) (NaN when the
  *                 function returns NaN).
  * @return f(λ); NaN if r12, q1 or q2 is NULL, if an input is not finite,
  *         if Q(λ) is not positive definite, or if the computed b(λ) is 0
@@ -154,7 +159,7 @@ PW85_API double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
 PW85_API double pw85_legacy_f2(double lambda, double const r12[PW85_DIM],
                                double const q1[PW85_SYM],
                                double const q2[PW85_SYM],
-                               double *out) PW85_NOEXCEPT;
+                               double out[1]) PW85_NOEXCEPT;
 
 /**
  * @brief The contact function by Newton–Raphson iterations on f′(λ) = 0
@@ -183,6 +188,7 @@ PW85_API double pw85_legacy_f2(double lambda, double const r12[PW85_DIM],
  *         PW85_ENOCONV if Newton's method failed: out[0] = the largest f(λ)
  *         met at an iterate λ in [0, 1] (≤ μ²; the first iterate is ½),
  *         out[1] = that λ.
+ *         (pw85 1.0 returned 0 always; these statuses since 2.1.0.)
  */
 PW85_API int pw85_legacy_contact_function1(double const r12[PW85_DIM],
                                            double const q1[PW85_SYM],
@@ -218,6 +224,7 @@ PW85_API int pw85_legacy_contact_function1(double const r12[PW85_DIM],
  *         PW85_ENOCONV if bisection ended on λ = 0 or 1, or if a(λ), b(λ)
  *         or f(λ) came out non-positive or not finite: out[0] = 0 (the only
  *         lower bound of μ² known), out[1] = λ.
+ *         (pw85 1.0 returned 0 always; these statuses since 2.1.0.)
  */
 PW85_API int pw85_legacy_contact_function2(double const r12[PW85_DIM],
                                            double const q1[PW85_SYM],
