@@ -44,8 +44,8 @@ const char *pw85_strerror(int status) noexcept {
     case PW85_ENOTPOSDEF:
       return "a quadratic form is not positive definite";
     case PW85_ERANGE:
-      return "a result or an intermediate value is out of the range of a "
-             "double";
+      return "the result, or the dynamic range of the input, exceeds the "
+             "range of a double";
     case PW85_ENOMEM:
       return "the minimiser needs more working memory than reserved";
     case PW85_ENOCONV:

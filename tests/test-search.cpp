@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The search for μ² stage by stage, through the core's static library, as
+// GSL's min/test.c tests its minimisers: the invariants of each stage at
+// every iteration (the bracket holds the maximiser and narrows, the iterate
+// stays inside it), not only the final value. Maximisers λ* and μ² come
+// from data/pw85_general_pairs.h5 (exact references, data/README.md).
+#include <glib.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <vector>
+
+#include "brent_certify.hpp"
+#include "compensated.hpp"
+#include "contact.hpp"
+#include "evaluate.hpp"
+#include "f.hpp"
+#include "finish.hpp"
+#include "newton.hpp"
+#include "problem.hpp"
+#include "tolerances.hpp"
+#include "warm_start.hpp"
+
+extern "C" {
+#include "refdata.h"
+#include "testutil.h"
+}
+
+namespace {
+
+namespace core = pw85::detail;
+
+GeneralPairs pairs;
+
+// The prepared problem of general pair n (rescaled: λ* is unchanged, μ² is
+// scaled by 2^−shift).
+core::Problem problem(size_t n) {
+  core::Problem p;
+  g_assert_true(core::prepare(pairs.r12 + 3 * n, pairs.q1 + 6 * n,
+                              pairs.q2 + 6 * n, &p) == core::Status::success);
+  g_assert_false(p.r_is_zero);
+  return p;
+}
+
+template <bool Fast>
+core::NewtonResult newton(core::Problem const &p, double lambda, int steps) {
+  return core::newton_on_omega<Fast>(p, lambda, steps);
+}
+
+// How far outside a bracket [lo, hi] the maximiser may lie because the
+// signs of the plain ω that set it are rounding noise within about
+// κ̄(Q(λ))·ε of the root (eq. (5.6): ω′ ≥ 1, so an error δ in ω moves its
+// root by at most δ). The general pairs have κ̄ up to about 1e9; measured
+// worst excess: printed by the test.
+constexpr double sign_noise = 1e-6;
+
+// Newton on ω (step 4), step by step: a run of k steps is the prefix of a
+// run of k + 1 (the iteration is deterministic), so the state after each
+// step is that of newton_on_omega(p, λ0, k). At every step: the iterate
+// lies strictly inside the bracket, the bracket only narrows, and it holds
+// λ* up to the noise of the plain signs; once stopped for convergence, the
+// estimate is within 1e-8 of λ*.
+void test_newton_invariants() {
+  double worst_excess = 0.0, worst_converged = 0.0;
+  int checked = 0;
+  for (size_t n = 0; n < pairs.count; n++) {
+    core::Problem const p = problem(n);
+    double const star = pairs.LAMBDA[n];
+    double const start = core::warm_start(p);
+    core::Bracket prev;
+    for (int k = 1; k <= core::warm_newton_iter; k++) {
+      core::NewtonResult const r = p.moderate ? newton<true>(p, start, k)
+                                              : newton<false>(p, start, k);
+      core::Bracket const &b = r.bracket;
+      if (!(b.lo >= prev.lo && b.hi <= prev.hi && b.lo < b.hi))
+        g_test_fail_printf("pair %zu, step %d: bracket [%.17g, %.17g] after "
+                           "[%.17g, %.17g]", n, k, b.lo, b.hi, prev.lo, prev.hi);
+      if (r.stop == core::NewtonStop::step_limit && !b.contains(r.lambda))
+        g_test_fail_printf("pair %zu, step %d: iterate %.17g outside "
+                           "[%.17g, %.17g]", n, k, r.lambda, b.lo, b.hi);
+      double const excess = std::max(b.lo - star, star - b.hi);
+      worst_excess = std::max(worst_excess, excess);
+      if (excess > sign_noise)
+        g_test_fail_printf("pair %zu, step %d: lambda* = %.17g outside "
+                           "[%.17g, %.17g]", n, k, star, b.lo, b.hi);
+      checked++;
+      prev = b;
+      if (r.stop != core::NewtonStop::step_limit) {
+        if (r.converged()) {
+          double const e = std::fabs(r.lambda - star);
+          worst_converged = std::max(worst_converged, e);
+          if (!(e <= 1e-8))
+            g_test_fail_printf("pair %zu: converged (stop %d) at %.17g, "
+                               "lambda* = %.17g", n, int(r.stop), r.lambda,
+                               star);
+        }
+        break;
+      }
+    }
+  }
+  g_test_message("%d Newton states: worst excess of lambda* over the bracket "
+                 "%.3g, worst |lambda - lambda*| at convergence %.3g",
+                 checked, worst_excess, worst_converged);
+}
+
+template <bool Fast>
+void brent_at(core::Problem const &p, double centre, int iter,
+              core::BrentResult *out) {
+  double const neg_f = core::neg_f_or_zero<Fast>(centre, p);
+  g_assert_true(core::certify_with_brent<Fast>(p, centre, neg_f, iter, out) ==
+                core::Status::success);
+}
+
+template <bool Fast>
+double cond_at(core::Problem const &p, double lambda) {
+  core::PlainPoint pt;
+  core::PlainBounds b;
+  if (!core::evaluate_plain<Fast>(lambda, p, &pt) || !core::plain_bounds(pt, &b))
+    return HUGE_VAL;
+  return b.cond;
+}
+
+// How far from λ* comparisons of the plain f can be fooled by its rounding
+// noise η = plain_form_margin·κ̄(Q)·f (the bound tolerances.hpp derives):
+// f is flat to within η over |λ − λ*| ≤ δ = √(2η/|f″|), f″ = −g′ (seed
+// ch. 5, eq. (5)); and a bracket of width w about a point at distance d
+// from λ* passes the check of step 5 when the difference of f across it,
+// about |f″|·d·w, is below η, that is up to d = η/(|f″|·w), w the width of
+// the first bracket.
+template <bool Fast>
+double noise_zone(core::Problem const &p, double star) {
+  double res[3];
+  core::residual(star, p.r, p.q1, p.q2, res);
+  double const eta = core::plain_form_margin * cond_at<Fast>(p, star) * res[0];
+  double const f2 = std::fabs(res[2]);
+  return std::sqrt(2.0 * eta / f2) + eta / (f2 * core::first_bracket_width);
+}
+
+// Brent's certification (step 5) after 0, 1, 2, ... iterations, from a
+// centre 1e-3·min(λ*, 1 − λ*) off λ* (so that the first brackets fail
+// their check and widen, and Brent must move): lower ≤ estimate ≤ upper,
+// the bracket narrows and holds λ* to within the noise zone of the plain f,
+// and −f at the estimate never exceeds −f at the centre it started from
+// (Brent keeps the best point).
+void test_brent_invariants() {
+  int checked = 0;
+  double worst = 0.0;  // excess of λ* over the bracket / noise zone
+  for (size_t n = 0; n < pairs.count; n++) {
+    core::Problem const p = problem(n);
+    double const star = pairs.LAMBDA[n];
+    double const zone = p.moderate ? noise_zone<true>(p, star)
+                                   : noise_zone<false>(p, star);
+    double const offset = 1e-3 * std::min(star, 1.0 - star);
+    double const centre = n % 2 ? star - offset : star + offset;
+    double const f_centre = p.moderate ? core::neg_f_or_zero<true>(centre, p)
+                                       : core::neg_f_or_zero<false>(centre, p);
+    double prev_width = 2.0;
+    for (int iter = 0; iter <= core::brent_max_iter; iter++) {
+      core::BrentResult b;
+      if (p.moderate)
+        brent_at<true>(p, centre, iter, &b);
+      else
+        brent_at<false>(p, centre, iter, &b);
+      double const width = b.upper - b.lower;
+      if (!(b.lower <= b.estimate && b.estimate <= b.upper))
+        g_test_fail_printf("pair %zu, %d iterations: estimate %.17g outside "
+                           "[%.17g, %.17g]", n, iter, b.estimate, b.lower,
+                           b.upper);
+      double const excess = std::max(b.lower - star, star - b.upper);
+      worst = std::max(worst, excess / zone);
+      if (!(excess <= zone))
+        g_test_fail_printf("pair %zu, %d iterations: lambda* = %.17g outside "
+                           "[%.17g, %.17g] by %.3g, noise zone %.3g", n, iter,
+                           star, b.lower, b.upper, excess, zone);
+      if (!(width <= prev_width))
+        g_test_fail_printf("pair %zu, %d iterations: width %.3g after %.3g", n,
+                           iter, width, prev_width);
+      double const f_est = p.moderate
+                               ? core::neg_f_or_zero<true>(b.estimate, p)
+                               : core::neg_f_or_zero<false>(b.estimate, p);
+      if (!(f_est <= f_centre))
+        g_test_fail_printf("pair %zu, %d iterations: -f(estimate) %.17g > "
+                           "-f(centre) %.17g", n, iter, f_est, f_centre);
+      prev_width = width;
+      checked++;
+      if (width < core::lambda_atol) break;
+    }
+    if (!(prev_width < core::lambda_atol))
+      g_test_fail_printf("pair %zu: Brent's bracket still %.3g wide", n,
+                         prev_width);
+  }
+  g_test_message("%d Brent states checked: worst excess of lambda* over the "
+                 "bracket %.3g of the noise zone", checked, worst);
+}
+
+// The compensated f at λ, f(λ) ≤ μ² in exact arithmetic.
+double f_compensated(core::Problem const &p, double lambda) {
+  core::Compensated a;
+  if (!core::evaluate_compensated<false>(lambda, p.r, p.q1, p.q2, false, &a))
+    return -HUGE_VAL;
+  return a.f;
+}
+
+// The μ² that the search returns is at least every f it evaluated: at
+// every Newton iterate and at Brent's estimate. Rounding is monotone, so a
+// correctly rounded μ² is at least the correctly rounded f(λ) for every λ;
+// the compensated f is within about an ulp of the latter (pw85.h), hence
+// the one-ulp allowance. Also, the returned μ² is the reference.
+void test_result_bounds_every_f() {
+  int checked = 0;
+  for (size_t n = 0; n < pairs.count; n++) {
+    core::Problem const p = problem(n);
+    double out[2];
+    g_assert_true((p.moderate ? core::solve<true>(p, out)
+                              : core::solve<false>(p, out)) ==
+                  core::Status::success);
+    double const mu2 = out[0];
+    double const expected = std::ldexp(pairs.MU2[n], -p.shift);
+    if (mu2 != expected)
+      g_test_fail_printf("pair %zu: mu^2 %.17g, expected %.17g", n, mu2,
+                         expected);
+    double const allowance = std::nextafter(mu2, HUGE_VAL) - mu2;
+    std::vector<double> points;
+    double const start = core::warm_start(p);
+    points.push_back(start);
+    for (int k = 1; k <= core::warm_newton_iter; k++) {
+      core::NewtonResult const r = p.moderate ? newton<true>(p, start, k)
+                                              : newton<false>(p, start, k);
+      points.push_back(r.last.lambda);
+      points.push_back(r.lambda);
+      if (r.stop != core::NewtonStop::step_limit) break;
+    }
+    core::BrentResult b;
+    if (p.moderate)
+      brent_at<true>(p, points.back(), core::brent_max_iter, &b);
+    else
+      brent_at<false>(p, points.back(), core::brent_max_iter, &b);
+    points.push_back(b.estimate);
+    for (double lambda : points) {
+      if (!(lambda > 0.0 && lambda < 1.0)) continue;
+      double const f = f_compensated(p, lambda);
+      if (!(mu2 + allowance >= f))
+        g_test_fail_printf("pair %zu: mu^2 %.17g below f(%.17g) = %.17g", n,
+                           mu2, lambda, f);
+      checked++;
+    }
+  }
+  g_test_message("%d evaluated points checked", checked);
+}
+
+// The safeguard of Newton's iteration (step 4), on its own.
+void test_safeguard() {
+  auto const no_end_step = [](bool) { return NAN; };
+  // A Newton iterate inside the narrowed bracket is kept.
+  {
+    core::Bracket b;
+    core::EndStepsTried tried;
+    double const next = core::safeguard(0.5, -0.1, 0.6, 1.0, &b, &tried,
+                                        no_end_step);
+    g_assert_cmpfloat(next, ==, 0.6);
+    g_assert_cmpfloat(b.lo, ==, 0.5);
+    g_assert_cmpfloat(b.hi, ==, 1.0);
+  }
+  // Outside: Newton's step from the end on the root's side, once; then the
+  // sphere model's 1/(1 + ρ); then bisection.
+  {
+    core::Bracket b;
+    core::EndStepsTried tried;
+    int calls = 0;
+    auto const end_step = [&calls](bool from_zero) {
+      calls++;
+      g_assert_true(from_zero);  // ω > 0: the root lies below λ
+      return 0.25;
+    };
+    double next = core::safeguard(0.5, 0.3, -2.0, 1.0, &b, &tried, end_step);
+    g_assert_cmpfloat(next, ==, 0.25);
+    g_assert_cmpfloat(b.hi, ==, 0.5);
+    g_assert_true(tried.from_zero);
+    next = core::safeguard(0.4, 0.1, 7.0, 3.0, &b, &tried, end_step);
+    g_assert_cmpint(calls, ==, 1);
+    g_assert_cmpfloat(next, ==, 1.0 / (1.0 + 3.0));  // 0.25 < 0.4 = hi
+    next = core::safeguard(0.3, 0.1, 7.0, 1.0, &b, &tried, end_step);
+    g_assert_cmpfloat(next, ==, 0.5 * (0.0 + 0.3));  // 1/(1+1) > hi
+  }
+  // A step onto 1 goes to the largest double below 1.
+  {
+    core::Bracket b;
+    core::EndStepsTried tried{true, true};
+    double const next =
+        core::safeguard(0.9, -0.1, 1.5, 0.0, &b, &tried, no_end_step);
+    g_assert_cmpfloat(next, ==, core::below_one);
+  }
+  // No double strictly inside the bracket: NaN.
+  {
+    double const lo = 0.5, hi = std::nextafter(0.5, 1.0);
+    core::Bracket b{lo, 1.0};
+    core::EndStepsTried tried{true, true};
+    double const next =
+        core::safeguard(hi, 0.2, 2.0, 0.0, &b, &tried, no_end_step);
+    g_assert_true(std::isnan(next));
+  }
+}
+
+template <bool Fast>
+double plain_slope(core::Problem const &p, double lambda) {
+  core::PlainPoint pt;
+  core::NewtonStep step;
+  g_assert_true(core::evaluate_plain<Fast>(lambda, p, &pt));
+  g_assert_true(core::newton_step(pt, &step));
+  return step.domega;
+}
+
+// The compensated finish (step 7) from λ*·(1 ± 1e-9), with the plain ω′
+// there as its first slope (as the search starts it): it lands within
+// 1e-12 of λ*, returns the reference μ², and never less than the
+// compensated f at its start.
+void test_finish() {
+  double worst = 0.0;
+  for (size_t n = 0; n < pairs.count; n++) {
+    core::Problem const p = problem(n);
+    double const star = pairs.LAMBDA[n];
+    double const start = star + (n % 2 ? 1e-9 : -1e-9) * std::min(star, 1 - star);
+    double const slope = p.moderate ? plain_slope<true>(p, start)
+                                    : plain_slope<false>(p, start);
+    core::FinishStart const s{start, slope, nullptr};
+    core::Finished out;
+    g_assert_true(core::finish(p, s, &out));
+    double const expected = std::ldexp(pairs.MU2[n], -p.shift);
+    if (out.mu2 != expected)
+      g_test_fail_printf("pair %zu: finish gives %.17g, expected %.17g", n,
+                         out.mu2, expected);
+    if (!(out.mu2 >= f_compensated(p, start)))
+      g_test_fail_printf("pair %zu: finish below its start", n);
+    worst = std::max(worst, std::fabs(out.lambda - star));
+  }
+  g_test_message("worst |lambda - lambda*| after the finish: %.3g", worst);
+  g_assert_cmpfloat(worst, <=, 1e-12);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, nullptr);
+  install_failing_gsl_handler();
+  general_pairs_load_or_fail(&pairs);
+  g_test_add_func("/search/safeguard", test_safeguard);
+  g_test_add_func("/search/newton/invariants", test_newton_invariants);
+  g_test_add_func("/search/brent/invariants", test_brent_invariants);
+  g_test_add_func("/search/finish", test_finish);
+  g_test_add_func("/search/result-bounds-every-f", test_result_bounds_every_f);
+  int const status = g_test_run();
+  general_pairs_clear(&pairs);
+  return status;
+}
