@@ -17,15 +17,28 @@ namespace core = pw85::detail;
 
 using core::Scaled;
 
-// core::rescale(), for input that passed core::check_input(): Status::out_of_range
-// when the diagonals of Q1 and Q2 together span more than the range of a
-// double (the rescaled forms are then no longer positive definite).
-Status rescale_checked(double const r[dim], double const q1[sym],
-                       double const q2[sym], Scaled *p) noexcept {
+// The start of both contact functions, for input that passed
+// core::check_input(): core::rescale(), then the answers that need no
+// search. Returns true when *status (and out) is already the answer:
+// Status::out_of_range when the diagonals of Q1 and Q2 together span more
+// than the range of a double (the rescaled forms are then no longer
+// positive definite); for coincident centres, μ² = 0 and λ = ½ (f ≡ 0, λ
+// is arbitrary), as pw85_contact_function answers.
+bool answered_before_search(double const r[dim], double const q1[sym],
+                            double const q2[sym], Scaled *p, double out[2],
+                            Status *status) noexcept {
   if (!core::rescale(r, q1, q2, p) || !core::is_positive_definite(p->q1) ||
-      !core::is_positive_definite(p->q2))
-    return Status::out_of_range;
-  return Status::success;
+      !core::is_positive_definite(p->q2)) {
+    *status = Status::out_of_range;
+    return true;
+  }
+  if (p->r_is_zero) {
+    out[0] = 0.0;
+    out[1] = 0.5;
+    *status = Status::success;
+    return true;
+  }
+  return false;
 }
 
 // out = {μ², λ} from the rescaled problem's f; Status::out_of_range when μ²
@@ -42,14 +55,6 @@ Status unscale(Scaled const &p, double f, double lambda, Status status,
   return status;
 }
 
-// Coincident centres: f ≡ 0, μ² = 0 and λ is arbitrary (½), as
-// pw85_contact_function answers.
-Status coincident(double out[2]) noexcept {
-  out[0] = 0.0;
-  out[1] = 0.5;
-  return Status::success;
-}
-
 // Horner's scheme for p[0] + p[1]·x + ... + p[n−1]·x^(n−1).
 template <int n>
 double horner(double const (&p)[n], double x) noexcept {
@@ -63,10 +68,8 @@ double horner(double const (&p)[n], double x) noexcept {
 Status contact_function1(double const r[dim], double const q1[sym],
                          double const q2[sym], double out[2]) noexcept {
   Scaled p;
-  if (Status const status = rescale_checked(r, q1, q2, &p);
-      status != Status::success)
+  if (Status status; answered_before_search(r, q1, q2, &p, out, &status))
     return status;
-  if (p.r_is_zero) return coincident(out);
 
   // Plain Newton–Raphson on f′(λ) = 0 from λ = ½: λ ← λ − f′(λ)/f″(λ), f′
   // and f″ from seed ch. 4, eqs. (6) and (9), with no safeguard. Seed ch. 5
@@ -109,10 +112,8 @@ Status contact_function1(double const r[dim], double const q1[sym],
 Status contact_function2(double const r[dim], double const q1[sym],
                          double const q2[sym], double out[2]) noexcept {
   Scaled p;
-  if (Status const status = rescale_checked(r, q1, q2, &p);
-      status != Status::success)
+  if (Status status; answered_before_search(r, q1, q2, &p, out, &status))
     return status;
-  if (p.r_is_zero) return coincident(out);
 
   double q3[sym];
   double q4[sym];
