@@ -165,11 +165,11 @@ PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
  *
  * Shaped like GSL's gsl_function, as in pw85 1.0 (a double, then a
  * pointer to the parameters); GSL takes `void *params`, so pass it to GSL
- * through a wrapper function. Evaluated with compensated (double-double) arithmetic: accurate
- * to about one ulp while cond(Q(λ)) stays below ~1e10 (every value of the
- * reference dataset is correctly rounded). No rescaling: intermediate
- * values must stay within the range of a double (|r12|² and the entries of
- * Q1, Q2 between about 1e-150 and 1e150).
+ * through a wrapper function. Evaluated with compensated (double-double)
+ * arithmetic: accurate to about one ulp while cond(Q(λ)) stays below ~1e10
+ * (every value of the reference dataset is correctly rounded). No
+ * rescaling: intermediate values must stay within the range of a double
+ * (|r12|² and the entries of Q1, Q2 between about 1e-150 and 1e150).
  * @param[in] lambda λ, normally in [0, 1].
  * @param[in] params PW85_DIM + 2·PW85_SYM = 15 doubles: r12[3], then
  *                   q1[6], then q2[6].
