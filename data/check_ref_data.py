@@ -6,7 +6,8 @@ Usage:  /usr/bin/python3 data/check_ref_data.py [DATA_DIR] [--seed N]
 DATA_DIR defaults to the folder of this script.  The small data sets
 (radii, directions, spheroids, lambdas, distances) are recomputed and
 compared exactly; a deterministic random sample of F, MU2/LAMBDA and of the
-general pairs is recomputed with the exact/certified routines of
+general pairs, and every finish pair (inputs regenerated from the seed), is
+recomputed with the exact/certified routines of
 gen_ref_data.py (same folder) and compared bit for bit, and a smaller sample
 with the independent mpmath route.  Exit status: 0 if everything matches,
 1 on any mismatch, 77 (meson's "skipped") if numpy/h5py/mpmath are missing.
@@ -37,6 +38,7 @@ N_GENERAL = 2000
 N_F_MP = 500
 N_MU_MP = 100
 N_GENERAL_MP = 50
+N_FINISH_MP = 50
 
 
 class Checker:
@@ -174,6 +176,46 @@ def main(argv=None):
                                 % (c, stored, list(mp)))
     print("  general pairs: %d random cases recomputed (%d also with "
           "mpmath): %d mismatches" % (N_GENERAL, N_GENERAL_MP, bad))
+
+    path = os.path.join(args.datadir, gen.FINISH_FILE)
+    print("checking %s" % path)
+    with h5py.File(path, "r") as f:
+        g = {k: f[k][...] for k in f}
+        candidates = [int(k) for k in f.attrs["candidates"]]
+    n = len(gen.FINISH_CASES)
+    before = ck.failures
+    ck.check(candidates == list(gen.FINISH_CASES),
+             "finish pairs: attribute candidates differs from FINISH_CASES")
+    for k, shp in (("r12", (n, 3)), ("q1", (n, 6)), ("q2", (n, 6)),
+                   ("MU2", (n,)), ("LAMBDA", (n,)), ("MU2_MINUS_1", (n,)),
+                   ("delta", (n,))):
+        ck.check(k in g and g[k].shape == shp and g[k].dtype == np.float64,
+                 "finish pairs dataset %s: expected float64 %s" % (k, shp))
+    if ck.failures > before:
+        return 1
+    # every case: the inputs regenerated from the seed, the references
+    # recomputed; a sample also with mpmath
+    bad = 0
+    mp_cases = set(int(c) for c in rng.permutation(n)[:N_FINISH_MP])
+    for c, k in enumerate(gen.FINISH_CASES):
+        q1, q2, r, dl, _ = gen.finish_inputs(k)
+        bad += not ck.check(
+            same(list(r) + list(q1) + list(q2) + [dl],
+                 np.concatenate([g["r12"][c], g["q1"][c], g["q2"][c],
+                                 [g["delta"][c]]])),
+            "finish pair %d: inputs differ from candidate %d" % (c, k))
+        res = gen.contact(gen.Pair(q1, q2), r)
+        stored = [g["MU2"][c], g["LAMBDA"][c], g["MU2_MINUS_1"][c]]
+        bad += not ck.check(same([res.mu2, res.lam, res.mu2m1], stored),
+                            "finish pair %d: stored %r, recomputed %r"
+                            % (c, stored, [res.mu2, res.lam, res.mu2m1]))
+        if c in mp_cases:
+            mp = gen.contact_mp(r, q1, q2, dps=100)
+            bad += not ck.check(same(list(mp), stored),
+                                "finish pair %d: stored %r, mpmath %r"
+                                % (c, stored, list(mp)))
+    print("  finish pairs: all %d cases regenerated and recomputed (%d also "
+          "with mpmath): %d mismatches" % (n, N_FINISH_MP, bad))
     print("%s (%.1f s)" % ("FAILED: %d mismatches" % ck.failures
                            if ck.failures else "all checks passed",
                            time.time() - t0))

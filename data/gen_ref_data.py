@@ -6,7 +6,9 @@ Writes, next to this script (or in --outdir):
 * pw85_ref_data.h5      radii, directions, spheroids, lambdas, F,
                         distances, MU2, LAMBDA;
 * pw85_general_pairs.h5 seeded random triaxial pairs (generic and
-                        near-tangent) with MU2, LAMBDA, MU2_MINUS_1.
+                        near-tangent) with MU2, LAMBDA, MU2_MINUS_1;
+* pw85_finish_pairs.h5  seeded random triaxial pairs on which the
+                        compensated finish decides mu^2 (same layout).
 
 Every reference value is computed from the double-precision inputs exactly
 as they are stored in the files, and is the correctly rounded double of the
@@ -40,6 +42,7 @@ chapter 5, eq. (4)-(5)).
 
 Usage (from the repository root):
     /usr/bin/python3 data/gen_ref_data.py [--outdir DIR] [--jobs N]
+                                          [--only ref|general|finish]
 """
 
 import argparse
@@ -988,6 +991,216 @@ def generate_general(outdir, log):
     log("wrote %s (%.0f s)" % (path, time.time() - t0))
 
 
+# Finish pairs -------------------------------------------------------------------
+#
+# Inputs on which the last step of the search, the compensated finish
+# (src/finish.cpp), decides the last bit of mu^2.  Candidate k is drawn from
+# its own stream np.random.default_rng([FINISH_SEED, k]) by finish_candidate;
+# FINISH_CASES lists the candidates kept, in increasing order.  They were
+# chosen (data/README.md) as the candidates on which at least one of three
+# mutants of the library (M_gain, M_carry, M_step) returns a mu^2 different
+# from the unmutated library's, which is correctly rounded on all of them.
+# Only the choice of indices used the library; every input is regenerated
+# here from the seed, and every reference is computed by contact().
+
+FINISH_SEED = 1207
+FINISH_FILE = "pw85_finish_pairs.h5"
+FINISH_SCANNED = 4000  # candidates 0 .. FINISH_SCANNED - 1 were tried
+FINISH_CASES = (
+    6, 9, 10, 28, 34, 57, 65, 66, 71, 96, 104, 125, 128, 130, 135, 136,
+    137, 148, 149, 154, 169, 170, 171, 174, 177, 193, 198, 213, 223, 225,
+    228, 234, 236, 240, 242, 243, 260, 284, 295, 308, 313, 316, 333, 337,
+    342, 350, 356, 359, 362, 363, 366, 377, 378, 387, 389, 393, 403, 418,
+    433, 437, 440, 473, 480, 487, 491, 520, 526, 532, 534, 539, 549, 557,
+    566, 580, 584, 586, 600, 610, 613, 638, 653, 661, 662, 667, 668, 669,
+    674, 686, 687, 688, 698, 699, 709, 721, 730, 731, 748, 754, 758, 764,
+    771, 775, 785, 788, 794, 798, 808, 813, 820, 825, 828, 835, 837, 838,
+    842, 848, 849, 865, 871, 876, 877, 885, 887, 888, 889, 893, 898, 905,
+    906, 928, 931, 933, 936, 943, 958, 971, 997, 1011, 1012, 1023, 1038,
+    1057, 1059, 1060, 1067, 1076, 1080, 1097, 1111, 1117, 1130, 1151, 1154,
+    1163, 1176, 1185, 1193, 1208, 1228, 1229, 1230, 1232, 1237, 1238, 1259,
+    1262, 1289, 1293, 1295, 1300, 1308, 1309, 1316, 1326, 1332, 1340, 1344,
+    1370, 1373, 1380, 1381, 1384, 1389, 1395, 1399, 1402, 1420, 1430, 1435,
+    1437, 1448, 1465, 1467, 1471, 1476, 1485, 1501, 1507, 1510, 1512, 1516,
+    1517, 1519, 1538, 1545, 1552, 1553, 1563, 1567, 1585, 1586, 1599, 1601,
+    1604, 1607, 1617, 1622, 1625, 1626, 1638, 1645, 1657, 1686, 1688, 1704,
+    1720, 1721, 1732, 1736, 1737, 1739, 1767, 1774, 1790, 1798, 1836, 1843,
+    1849, 1862, 1864, 1869, 1870, 1872, 1875, 1885, 1889, 1890, 1914, 1922,
+    1923, 1932, 1936, 1946, 1948, 1956, 1979, 1981, 1985, 1991, 1993, 1994,
+    1996, 2004, 2005, 2021, 2058, 2060, 2061, 2063, 2088, 2092, 2093, 2094,
+    2103, 2104, 2119, 2123, 2133, 2141, 2143, 2144, 2148, 2151, 2152, 2156,
+    2164, 2170, 2178, 2182, 2216, 2225, 2228, 2238, 2242, 2251, 2256, 2258,
+    2274, 2278, 2284, 2285, 2289, 2291, 2303, 2311, 2319, 2328, 2334, 2337,
+    2345, 2350, 2360, 2362, 2371, 2375, 2383, 2387, 2407, 2415, 2417, 2422,
+    2424, 2430, 2431, 2438, 2439, 2449, 2454, 2456, 2464, 2466, 2481, 2486,
+    2500, 2509, 2511, 2512, 2516, 2526, 2534, 2562, 2567, 2568, 2570, 2581,
+    2584, 2585, 2600, 2608, 2620, 2621, 2640, 2642, 2682, 2688, 2690, 2695,
+    2699, 2718, 2746, 2747, 2748, 2763, 2776, 2779, 2784, 2803, 2805, 2806,
+    2815, 2816, 2824, 2826, 2833, 2845, 2853, 2857, 2864, 2868, 2874, 2878,
+    2879, 2885, 2888, 2905, 2923, 2930, 2932, 2945, 2968, 2978, 2982, 2983,
+    2989, 3009, 3015, 3017, 3023, 3025, 3026, 3027, 3048, 3051, 3052, 3053,
+    3054, 3058, 3061, 3065, 3067, 3070, 3078, 3083, 3086, 3095, 3100, 3105,
+    3125, 3127, 3149, 3150, 3158, 3159, 3170, 3174, 3184, 3186, 3188, 3191,
+    3192, 3205, 3224, 3228, 3231, 3233, 3239, 3240, 3242, 3244, 3246, 3275,
+    3282, 3285, 3293, 3297, 3307, 3309, 3340, 3346, 3352, 3358, 3366, 3372,
+    3373, 3375, 3383, 3384, 3392, 3397, 3398, 3413, 3417, 3419, 3425, 3432,
+    3440, 3441, 3460, 3468, 3472, 3476, 3479, 3484, 3501, 3503, 3505, 3509,
+    3515, 3525, 3534, 3539, 3540, 3543, 3544, 3569, 3574, 3588, 3597, 3619,
+    3652, 3656, 3657, 3675, 3686, 3688, 3689, 3700, 3702, 3704, 3706, 3713,
+    3715, 3729, 3736, 3749, 3753, 3754, 3758, 3760, 3767, 3771, 3774, 3776,
+    3788, 3808, 3822, 3823, 3835, 3843, 3844, 3845, 3848, 3853, 3855, 3868,
+    3872, 3910, 3913, 3917, 3936, 3949, 3961, 3975, 3992, 3996, 3997,)
+
+
+def _quaternion_product(a, b):
+    w1, x1, y1, z1 = a
+    w2, x2, y2, z2 = b
+    return [w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2]
+
+
+def _finish_axes(rng, centre, log_ar):
+    """Semi-axes 10**e, aspect ratio 10**log_ar about 10**centre."""
+    lo, hi = centre - log_ar / 2, centre + log_ar / 2
+    shape = int(rng.integers(0, 3))
+    if shape == 0:  # needle
+        e = [hi, lo, lo + rng.uniform(0.0, 1.0)]
+    elif shape == 1:  # disc
+        e = [hi, hi - rng.uniform(0.0, 1.0), lo]
+    else:  # triaxial
+        e = [hi, rng.uniform(lo, hi), lo]
+    return [float(x) for x in 10.0**np.array(e)[rng.permutation(3)]]
+
+
+def finish_candidate(k):
+    """Candidate k: (q1, q2, u, target, delta, family).
+
+    family 0: the second rotation is the first times a small rotation (angle
+    10**U(-8, -1) about a random axis), so Q(lambda) keeps the thin
+    directions both share and is ill-conditioned; 1: random rotations, the
+    second ellipsoid 10**U(1.5, 3) times larger or smaller (lambda* near 0
+    or 1); 2: random rotations; in families 0-2 the aspect ratio of each
+    ellipsoid is 10**U(2, 6); 3: aspect ratios 10**U(0, 4), random
+    rotations, as in the general pairs.  Sizes 10**U(-1, 1) about which the
+    axes spread.  Target mu^2: 10**U(-2, 2) (delta = 0) or 1 + delta with
+    delta = +-10**U(-14, -3)."""
+    import mpmath
+    rng = np.random.default_rng([FINISH_SEED, k])
+    family = int(rng.integers(0, 4))
+    rot1 = rng.normal(size=4)
+    rot1 /= np.linalg.norm(rot1)
+    if family == 0:
+        axis = rng.normal(size=3)
+        axis /= np.linalg.norm(axis)
+        angle = 10.0**rng.uniform(-8.0, -1.0)
+        rot2 = _quaternion_product(
+            rot1, [math.cos(angle / 2)] + [math.sin(angle / 2) * x
+                                           for x in axis])
+    else:
+        rot2 = rng.normal(size=4)
+        rot2 /= np.linalg.norm(rot2)
+    qs = []
+    for i, rot in enumerate((rot1, rot2)):
+        log_ar = rng.uniform(2.0, 6.0) if family != 3 else \
+            rng.uniform(0.0, 4.0)
+        centre = rng.uniform(-1.0, 1.0)
+        if family == 1 and i == 1:
+            centre += rng.choice([-1, 1]) * rng.uniform(1.5, 3.0)
+        axes = _finish_axes(rng, centre, log_ar)
+        qs.append(triaxial_exact(axes, rotation_from_quaternion(rot)))
+    u = rng.normal(size=3)
+    u = [float(x) for x in u / np.linalg.norm(u)]
+    if rng.uniform() < 0.5:
+        delta = 0.0
+        target = mpmath.mpf(10) ** mpmath.mpf(float(rng.uniform(-2.0, 2.0)))
+    else:
+        delta = float(rng.choice([-1, 1]) * 10.0**rng.uniform(-14.0, -3.0))
+        target = 1 + mpmath.mpf(delta)
+    return qs[0], qs[1], u, target, delta, family
+
+
+def finish_inputs(k, stats=None):
+    """(q1, q2, r12, delta, family) of candidate k: r12 = u*sqrt(target/mu0^2)
+    at 120 digits (mu0^2 for r = u, by contact()), rounded to doubles."""
+    import mpmath
+    q1, q2, u, target, delta, family = finish_candidate(k)
+    if not (positive_definite_exact(q1) and positive_definite_exact(q2)):
+        return None
+    res0 = contact(Pair(q1, q2), u, P_BITS, stats)
+    with mpmath.workdps(120):
+        mu0 = (mpmath.mpf(res0.mu2_num) / res0.mu2_den
+               * mpmath.ldexp(1, res0.mu2_exp))
+        s = mpmath.sqrt(target / mu0)
+        r = [float(mpmath.mpf(x) * s) for x in u]
+    return q1, q2, r, delta, family
+
+
+def generate_finish(outdir, log):
+    """pw85_finish_pairs.h5: the FINISH_CASES candidates, general pairs'
+    layout (data/README.md)."""
+    t0 = time.time()
+    n = len(FINISH_CASES)
+    assert n > 0 and list(FINISH_CASES) == sorted(set(FINISH_CASES))
+    r12 = np.empty((n, 3))
+    q1 = np.empty((n, 6))
+    q2 = np.empty((n, 6))
+    MU2 = np.empty(n)
+    LAM = np.empty(n)
+    M1 = np.empty(n)
+    kind = np.zeros(n, dtype=np.int32)
+    delta = np.zeros(n)
+    family = np.empty(n, dtype=np.int32)
+    stats = RootStats()
+    for c, k in enumerate(FINISH_CASES):
+        inputs = finish_inputs(k, stats)
+        assert inputs is not None, "finish candidate %d not positive " \
+            "definite" % k
+        e1, e2, r, dl, fam = inputs
+        res = contact(Pair(e1, e2), r, P_BITS, stats)
+        r12[c], q1[c], q2[c] = r, e1, e2
+        MU2[c], LAM[c], M1[c] = res.mu2, res.lam, res.mu2m1
+        kind[c], delta[c], family[c] = dl != 0.0, dl, fam
+    log("  " + stats.summary())
+    # self-checks: every case at higher precision and with mpmath
+    for c in range(n):
+        res = contact(Pair(q1[c], q2[c]), r12[c], P_CHECK)
+        assert (res.mu2, res.lam, res.mu2m1) == (MU2[c], LAM[c], M1[c]), c
+        mu2, lam, m1 = contact_mp(r12[c], q1[c], q2[c], dps=100)
+        assert (mu2, lam, m1) == (MU2[c], LAM[c], M1[c]), c
+    log("  finish pairs: all %d cases identical with %d fractional bits "
+        "and with mpmath at 100 digits (MU2, LAMBDA, MU2_MINUS_1)"
+        % (n, P_CHECK))
+    near = kind == 1
+    log("  %d cases, families %s, %d near-tangent (max |MU2_MINUS_1 - "
+        "delta| = %.3g), MU2 in [%.3g, %.3g], LAMBDA in [%.3g, 1-%.3g]"
+        % (n, np.bincount(family, minlength=4).tolist(), near.sum(),
+           np.abs(M1[near] - delta[near]).max(), MU2.min(), MU2.max(),
+           LAM.min(), 1 - LAM.max()))
+    data = dict(r12=r12, q1=q1, q2=q2, MU2=MU2, LAMBDA=LAM,
+                MU2_MINUS_1=M1, kind=kind, delta=delta)
+    recipe = (
+        "pw85 finish pairs, generated by data/gen_ref_data.py with numpy "
+        "%s. Case c is candidate k = attribute candidates[c], drawn from "
+        "np.random.default_rng([%d, k]) by finish_candidate(k) (family in "
+        "attribute family), with r12 = u * sqrt(target / mu0^2) at 120 "
+        "digits rounded to doubles. The candidates were chosen as those "
+        "among the first %d on which a mutant of the library's compensated "
+        "finish (M_gain: no quadratic-model gain; M_carry: no f_lo carry; "
+        "M_step: no compensated step) returned another mu^2 than the "
+        "unmutated library (data/README.md). kind 1: target 1 + delta; "
+        "kind 0: target 10**U(-2, 2). MU2, LAMBDA, MU2_MINUS_1 are "
+        "correctly rounded for the stored doubles r12, q1, q2." % (
+            np.__version__, FINISH_SEED, FINISH_SCANNED))
+    path = os.path.join(outdir, FINISH_FILE)
+    write_h5(path, data, {k: None for k in data},
+             {"description": recipe, "seed": FINISH_SEED,
+              "candidates": np.array(FINISH_CASES, dtype=np.int64),
+              "family": family})
+    log("wrote %s (%.0f s)" % (path, time.time() - t0))
+
+
 def sha256(path):
     h = hashlib.sha256()
     with open(path, "rb") as f:
@@ -1003,8 +1216,8 @@ def main(argv=None):
                     help="output directory (default: the script's folder)")
     ap.add_argument("--jobs", type=int, default=2,
                     help="worker processes (default 2)")
-    ap.add_argument("--only", choices=("ref", "general"), default=None,
-                    help="generate only one of the two files")
+    ap.add_argument("--only", choices=("ref", "general", "finish"),
+                    default=None, help="generate only one of the files")
     args = ap.parse_args(argv)
     t0 = time.time()
 
@@ -1016,7 +1229,9 @@ def main(argv=None):
         generate_ref(args.outdir, max(args.jobs, 1), log)
     if args.only in (None, "general"):
         generate_general(args.outdir, log)
-    for name in (REF_FILE, GENERAL_FILE):
+    if args.only in (None, "finish"):
+        generate_finish(args.outdir, log)
+    for name in (REF_FILE, GENERAL_FILE, FINISH_FILE):
         p = os.path.join(args.outdir, name)
         if os.path.exists(p):
             log("%s  %s  (%d bytes)" % (sha256(p), name, os.path.getsize(p)))
