@@ -216,13 +216,13 @@ static void test_random_overlap(void) {
     int result = 42;
     g_assert_cmpint(pw85_overlap(r, q1, q2, &result), ==, PW85_SUCCESS);
     if (out[0] < 1. - 4. * DBL_EPSILON && result != -1)
-      g_test_fail_printf("case %d: mu^2 = %.17g but pw85_overlap gives %d, "
-                         "expected -1",
-                         n, out[0], result);
+      test_mismatch("case %d: mu^2 = %.17g but pw85_overlap gives %d, "
+                    "expected -1",
+                    n, out[0], result);
     if (out[0] > 1. + 4. * DBL_EPSILON && result != 1)
-      g_test_fail_printf("case %d: mu^2 = %.17g but pw85_overlap gives %d, "
-                         "expected 1",
-                         n, out[0], result);
+      test_mismatch("case %d: mu^2 = %.17g but pw85_overlap gives %d, "
+                    "expected 1",
+                    n, out[0], result);
     checked++;
   }
   g_test_message("%d random pairs checked", checked);

@@ -11,9 +11,10 @@
 #include "worst.h"
 
 /* Compares act with exp: on a relative error (tests/worst.h) above tol
- * (or NaN), fails the running test with a message naming the case (what,
- * a printf format whose arguments follow tol), the actual and expected
- * values and the error, and returns FALSE. The test goes on: with `-k`
+ * (or NaN), reports the mismatch (test_mismatch: printed, and the running
+ * test failed with g_test_fail_printf) naming the case (what, a printf
+ * format whose arguments follow tol), the actual and expected values and
+ * the error, and returns FALSE. The test goes on: with `-k`
  * (tests/meson.build) one failure hides nothing. */
 static inline gboolean assert_close(const char *what, double act, double exp,
                                     double tol, ...) G_GNUC_PRINTF(1, 5);
@@ -25,9 +26,8 @@ static inline gboolean assert_close(const char *what, double act, double exp,
   va_start(args, tol);
   char *name = g_strdup_vprintf(what, args);
   va_end(args);
-  g_test_fail_printf("%s: actual %.17g, expected %.17g, relative error %.3g "
-                     "> %.3g",
-                     name, act, exp, err, tol);
+  test_mismatch("%s: actual %.17g, expected %.17g, relative error %.3g > %.3g",
+                name, act, exp, err, tol);
   g_free(name);
   return FALSE;
 }
