@@ -36,6 +36,15 @@ static inline void contract_assert_untouched(double const out[2]) {
                   sizeof contract_sentinel);
 }
 
+/* A successful call: status PW85_SUCCESS, μ² finite and ≥ 0, λ in [0, 1]. */
+static inline void contract_assert_valid(int status, double const out[2]) {
+  g_assert_cmpint(status, ==, PW85_SUCCESS);
+  g_assert_true(isfinite(out[0]));
+  g_assert_cmpfloat(out[0], >=, 0.);
+  g_assert_cmpfloat(out[1], >=, 0.);
+  g_assert_cmpfloat(out[1], <=, 1.);
+}
+
 static inline void contract_check_null(ContactFn fn) {
   double const *r = contract_r, *q1 = contract_q1, *q2 = contract_q2;
   double out[2];

@@ -21,7 +21,7 @@ static void test_decomp_diagonal(void) {
   pw85__cholesky_decomp(a, l);
   double const expected[PW85_SYM] = {3., 0., 0., 0.5, 0., 1e-150};
   for (int i = 0; i < PW85_SYM; i++)
-    assert_close("diagonal factor", l[i], expected[i], 0.0);
+    assert_close("diagonal factor, l[%d]", l[i], expected[i], 0.0, i);
 }
 
 static void test_decomp_in_place(void) {
@@ -73,10 +73,10 @@ static void test_roundtrip(void) {
   double l[PW85_SYM], x[PW85_DIM];
   pw85__cholesky_decomp(a, l);
   for (int i = 0; i < PW85_SYM; i++)
-    assert_close("factor", l[i], l0[i], 8.9e-16);
+    assert_close("factor, l[%d]", l[i], l0[i], 8.9e-16, i);
   pw85__cholesky_solve(l, b, x);
   for (int i = 0; i < PW85_DIM; i++)
-    assert_close("solution", x[i], x0[i], 8.9e-16);
+    assert_close("solution, x[%d]", x[i], x0[i], 8.9e-16, i);
 }
 
 int main(int argc, char **argv) {

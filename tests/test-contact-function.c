@@ -67,8 +67,8 @@ static void test_f_spheres(void) {
     for (int l = 0; l <= 10; l++) {
       double const lambda = l / 10.;
       /* Both sides round a handful of operations (measured: 4.4e-16). */
-      assert_close("f, spheres", -pw85_f_neg(lambda, params),
-                   sphere_f(s, lambda), 1.1e-15);
+      assert_close("f, spheres %zu, lambda %g", -pw85_f_neg(lambda, params),
+                   sphere_f(s, lambda), 1.1e-15, k, lambda);
     }
   }
 }
@@ -84,7 +84,8 @@ static void test_residual_spheres(void) {
       pw85__residual(lambda, s->r, q1, q2, out);
       /* f from rᵀ·s against f from |L⁻¹r|²: two roundings apart
        * (measured: 2.2e-16). */
-      assert_close("residual f", out[0], -pw85_f_neg(lambda, params), 4.5e-16);
+      assert_close("residual f, spheres %zu, lambda %g", out[0],
+                   -pw85_f_neg(lambda, params), 4.5e-16, k, lambda);
       /* g = −f′ (seed ch. 5, eq. (4) and ch. 4, eq. (6)); absolute error
        * relative to the size of the terms, R/d (measured: 1.3e-15). */
       double const scale = norm2(s->r) / fmin(s->a1 * s->a1, s->a2 * s->a2);
@@ -109,8 +110,9 @@ static void test_contact_spheres(void) {
                     PW85_SUCCESS);
     double const sum = s->a1 + s->a2;
     /* Measured worst: 4.4e-16 (μ²), 1.1e-16 (λ). */
-    assert_close("mu2, spheres", out[0], norm2(s->r) / (sum * sum), 1.1e-15);
-    assert_close("lambda, spheres", out[1], s->a1 / sum, 1e-12);
+    assert_close("mu2, spheres %zu", out[0], norm2(s->r) / (sum * sum),
+                 1.1e-15, k);
+    assert_close("lambda, spheres %zu", out[1], s->a1 / sum, 1e-12, k);
   }
 }
 

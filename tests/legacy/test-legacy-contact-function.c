@@ -6,7 +6,7 @@
  * and where it occurred; tolerances are at most 10× the measured worst. */
 #include <pw85_legacy.h>
 
-#include "legacy-testutil.h"
+#include "worst.h"
 #include "refdata.h"
 
 static RefData data;
@@ -65,9 +65,9 @@ static void replay(gconstpointer user_data) {
             continue;
           }
           worst_check(&wm, n, out[0], data.MU2[n],
-                      legacy_rel_err(out[0], data.MU2[n]));
+                      rel_err(out[0], data.MU2[n]));
           worst_check(&wl, n, out[1], data.LAMBDA[n],
-                      legacy_rel_err(out[1], data.LAMBDA[n]));
+                      rel_err(out[1], data.LAMBDA[n]));
         }
   worst_report(&wm);
   worst_report(&wl);

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "contract.h"
-#include "legacy-testutil.h"
+#include "worst.h"
 
 
 /* A contact function and its measured accuracy on two tests below. */
@@ -91,9 +91,9 @@ static void test_spheres(gconstpointer p) {
       continue;
     }
     g_assert_cmpint(status, ==, PW85_SUCCESS);
-    worst_check(&wm, k, out[0], mu2, legacy_rel_err(out[0], mu2));
+    worst_check(&wm, k, out[0], mu2, rel_err(out[0], mu2));
     worst_check(&wl, k, out[1], a1 / (a1 + a2),
-                legacy_rel_err(out[1], a1 / (a1 + a2)));
+                rel_err(out[1], a1 / (a1 + a2)));
   }
   worst_report(&wm);
   worst_report(&wl);
@@ -119,7 +119,7 @@ static void test_scale_invariance(gconstpointer p) {
     double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
     contract_scaled(t, r0, q1_0, q2_0, r, q1, q2);
     g_assert_cmpint(call(impl, r, q1, q2, out), ==, PW85_SUCCESS);
-    worst_check(&w, k, out[0], ref[0], legacy_rel_err(out[0], ref[0]));
+    worst_check(&w, k, out[0], ref[0], rel_err(out[0], ref[0]));
   }
   worst_report(&w);
 }
@@ -248,8 +248,8 @@ static void test_f_agree(void) {
     double const f = -pw85_f_neg(lambda, params);
     double const f1 = pw85_legacy_f1(lambda, r_ok, q1_ok, q2_ok, NULL);
     double const f2 = pw85_legacy_f2(lambda, r_ok, q1_ok, q2_ok, NULL);
-    worst_check(&w1, (size_t)l, f1, f, legacy_rel_err(f1, f));
-    worst_check(&w2, (size_t)l, f2, f, legacy_rel_err(f2, f));
+    worst_check(&w1, (size_t)l, f1, f, rel_err(f1, f));
+    worst_check(&w2, (size_t)l, f2, f, rel_err(f2, f));
   }
   worst_report(&w1);
   worst_report(&w2);

@@ -7,7 +7,7 @@
 #include <pw85_legacy.h>
 #include <string.h>
 
-#include "legacy-testutil.h"
+#include "worst.h"
 #include "refdata.h"
 
 static RefData data;
@@ -48,7 +48,7 @@ static void replay_f(FFunc func, Worst *w, size_t *num_nan) {
             }
             continue;
           }
-          worst_check(w, n, act, exp, legacy_rel_err(act, exp));
+          worst_check(w, n, act, exp, rel_err(act, exp));
         }
   worst_report(w);
   g_test_message("%s: %zu NaN results", w->what, *num_nan);
@@ -161,7 +161,7 @@ static void test_f1_derivatives_closed_form(void) {
           double exp[3], act[3], scale[3];
           coaxial_f(lambda, rs[c], p, q, exp, scale);
           pw85_legacy_f1(lambda, rs[c], q1, q2, act);
-          worst_check(&w0, n, act[0], exp[0], legacy_rel_err(act[0], exp[0]));
+          worst_check(&w0, n, act[0], exp[0], rel_err(act[0], exp[0]));
           worst_check(&w1, n, act[1], exp[1], fabs(act[1] - exp[1]) / scale[1]);
           worst_check(&w2, n, act[2], exp[2], fabs(act[2] - exp[2]) / scale[2]);
         }

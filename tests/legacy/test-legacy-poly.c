@@ -7,7 +7,7 @@
 #include <pw85_legacy.h>
 #include <string.h>
 
-#include "legacy-testutil.h"
+#include "worst.h"
 
 /* A symmetric matrix stored as in pw85.h (in long double), expanded to
  * 3×3. */

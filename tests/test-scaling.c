@@ -1,0 +1,142 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* Invariance of pw85_contact_function, pw85_overlap and pw85_f_neg under a
+ * change of unit of length: r → t·r, Q → t²·Q leaves μ² and λ unchanged,
+ * exactly when t is a power of two (the library rescales by powers of two
+ * itself), to a few ulps otherwise; and pairs whose sizes differ by up to
+ * 2^1000. (The input contract: test-input-contract.c.) */
+#include <float.h>
+#include <pw85.h>
+
+#include "contract.h"
+#include "testutil.h"
+
+/* The valid input of tests/contract.h: the tutorial's pair. */
+#define r_ok contract_r
+#define q1_ok contract_q1
+#define q2_ok contract_q2
+
+static int call(double const *r, double const *q1, double const *q2,
+                double out[2]) {
+  return contract_call(pw85_contact_function, r, q1, q2, out);
+}
+
+/* μ²(t·r, t²·Q1, t²·Q2) = μ²(r, Q1, Q2). t is not a power of two, so the
+ * scaled inputs are rounded: the results agree to a few ulps (measured:
+ * 2.6e-16). */
+static void test_scale_invariance(void) {
+  double ref[2];
+  g_assert_cmpint(call(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
+  double const scales[] = {1e-150, 1e-100, 1e-10, 1e10, 1e100, 1e150};
+  for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
+    double const t = scales[k];
+    double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
+    contract_scaled(t, r_ok, q1_ok, q2_ok, r, q1, q2);
+    int const status = call(r, q1, q2, out);
+    contract_assert_valid(status, out);
+    assert_close("mu2, scaled by %g", out[0], ref[0], 1e-14, t);
+    assert_close("lambda, scaled by %g", out[1], ref[1], 1e-9, t);
+  }
+}
+
+/* Scaling by exact powers of two changes nothing at all: the library
+ * rescales by powers of two itself. */
+static void test_scale_power_of_two(void) {
+  double ref[2];
+  int ref_overlap = 0;
+  g_assert_cmpint(call(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_overlap(r_ok, q1_ok, q2_ok, &ref_overlap), ==,
+                  PW85_SUCCESS);
+  int const exps[] = {-500, -250, -1, 1, 250, 500};
+  for (size_t k = 0; k < G_N_ELEMENTS(exps); k++) {
+    double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
+    for (int i = 0; i < PW85_DIM; i++) r[i] = ldexp(r_ok[i], exps[k]);
+    for (int i = 0; i < PW85_SYM; i++) {
+      q1[i] = ldexp(q1_ok[i], 2 * exps[k]);
+      q2[i] = ldexp(q2_ok[i], 2 * exps[k]);
+    }
+    g_assert_cmpint(call(r, q1, q2, out), ==, PW85_SUCCESS);
+    g_assert_cmpfloat(out[0], ==, ref[0]);
+    g_assert_cmpfloat(out[1], ==, ref[1]);
+    int result = 42;
+    g_assert_cmpint(pw85_overlap(r, q1, q2, &result), ==, PW85_SUCCESS);
+    g_assert_cmpint(result, ==, ref_overlap);
+  }
+}
+
+/* Ellipsoids of one shape and orientation whose sizes differ by 2^m
+ * (Q2 = 4^m·Q1), up to 2^1000: μ² = rᵀQ1⁻¹r/(1 + 2^m)² and λ = 1/(1 + 2^m)
+ * exactly (an affine map makes them two spheres). rᵀQ1⁻¹r is computed here
+ * in long double from the construction Q1 = R·D·Rᵀ; rounding Q1 to double
+ * moves μ² by 2.2e-17 relative (measured), so μ² is checked to one ulp.
+ * Beyond m ≈ 512, rᵀQ1⁻¹r / rᵀQ2⁻¹r overflows: a warm start formed from
+ * that ratio fell back to λ = ½, and μ² came out 3e-6 off. */
+static void test_size_ratio(void) {
+  long double const rot[3][3] = {{0.36L, 0.48L, -0.8L},
+                                 {-0.8L, 0.6L, 0.0L},
+                                 {0.48L, 0.64L, 0.6L}};
+  long double const d[3] = {1.0L, 2.0L, 3.0L};
+  for (int m = 100; m <= 1000; m += 100) {
+    double const s = ldexp(1., -m);
+    double q1[PW85_SYM], q2[PW85_SYM];
+    int k = 0;
+    for (int i = 0; i < 3; i++)
+      for (int j = i; j < 3; j++, k++) {
+        long double t = 0.0L;
+        for (int n = 0; n < 3; n++) t += rot[i][n] * d[n] * rot[j][n];
+        q1[k] = (double)(t * s);
+        q2[k] = ldexp(q1[k], 2 * m);
+      }
+    double const r[PW85_DIM] = {ldexp(0.3, m), ldexp(0.2, m), ldexp(0.1, m)};
+    long double a = 0.0L;
+    for (int n = 0; n < 3; n++) {
+      long double c = 0.0L;
+      for (int i = 0; i < 3; i++) c += rot[i][n] * r[i];
+      a += c * c / (d[n] * s);
+    }
+    long double const den = 1.0L + ldexpl(1.0L, m);
+    double out[2];
+    contract_assert_valid(call(r, q1, q2, out), out);
+    assert_close("mu2, size ratio 2^%d", out[0], (double)(a / (den * den)),
+                 DBL_EPSILON, m);
+    assert_close("lambda, size ratio 2^%d", out[1], (double)(1.0L / den),
+                 DBL_EPSILON, m);
+  }
+}
+
+/* pw85_f_neg works on its input as given, unscaled: scaling r by 2^k and the
+ * forms by 2^2k changes no rounding of f = λ(1−λ)·rᵀQ⁻¹r while no
+ * intermediate leaves the normal range, so the value must not change at
+ * all. 2^±800 in the forms is where a product of two entries of Q(λ), were
+ * it formed, would overflow or underflow; a factorisation that forms one
+ * must notice. */
+static void test_f_neg_scale(void) {
+  /* r, then two forms with off-diagonal entries (diagonally dominant). */
+  double const params[15] = {0.7, -0.7, 1.1,
+                             4., 1., 0.5, 3., 0.25, 2.,
+                             1., -0.3, 0.2, 2., 0.1, 5.};
+  double const lambdas[] = {0.1, 0.5, 0.9};
+  int const exps[] = {-400, -200, 200, 400};
+  for (size_t l = 0; l < G_N_ELEMENTS(lambdas); l++) {
+    double const ref = pw85_f_neg(lambdas[l], params);
+    g_assert_true(isfinite(ref) && ref < 0.);
+    for (size_t k = 0; k < G_N_ELEMENTS(exps); k++) {
+      double scaled[15];
+      for (int i = 0; i < 15; i++)
+        scaled[i] = ldexp(params[i], i < 3 ? exps[k] : 2 * exps[k]);
+      g_assert_cmpfloat(pw85_f_neg(lambdas[l], scaled), ==, ref);
+    }
+  }
+}
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, NULL);
+  install_failing_gsl_handler();
+  g_test_add_func("/pw85/scaling/contact_function/any-factor",
+                  test_scale_invariance);
+  g_test_add_func("/pw85/scaling/contact_function/power-of-two",
+                  test_scale_power_of_two);
+  g_test_add_func("/pw85/scaling/contact_function/size-ratio",
+                  test_size_ratio);
+  g_test_add_func("/pw85/scaling/f_neg/power-of-two", test_f_neg_scale);
+  return g_test_run();
+}
