@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cholesky.hpp"
+#include "ldl.hpp"
 #include "scaling.hpp"
 
 namespace pw85::detail {
@@ -25,13 +26,11 @@ Status check_pointers_and_finite(double const *r, double const *q1,
   return Status::success;
 }
 
-bool is_positive_definite(double const q[sym]) noexcept {
-  // Symmetric diagonal scaling by powers of two, D·Q·D with D = diag(2^-hᵢ)
-  // and Qᵢᵢ ≈ 4^hᵢ: exact, preserves definiteness, and brings the diagonal
-  // to [1/4, 1) so that no square overflows or underflows however widely
-  // the diagonal entries range.
+namespace {
+
+// The factors of the rule: ldl_decomp() of D·Q·D, D = diag(2^−h[i]).
+bool scaled_ldl(double const q[sym], Ldl *f, int h[dim]) noexcept {
   if (!all_finite<sym>(q)) return false;
-  int h[dim];
   for (int i = 0; i < dim; ++i) {
     if (!(q[diag_of[i]] > 0.0)) return false;
     h[i] = exponent(q[diag_of[i]]) / 2;
@@ -39,8 +38,32 @@ bool is_positive_definite(double const q[sym]) noexcept {
   double scaled[sym];
   for (int k = 0; k < sym; ++k)
     scaled[k] = std::ldexp(q[k], -(h[row_of[k]] + h[col_of[k]]));
-  double l[sym];
-  return cholesky_decomp(scaled, l);
+  return ldl_decomp(scaled, f);
+}
+
+}  // namespace
+
+bool is_positive_definite(double const q[sym]) noexcept {
+  Ldl f;
+  int h[dim];
+  return scaled_ldl(q, &f, h);
+}
+
+bool cholesky_by_rule(double const q[sym], double l[sym]) noexcept {
+  Ldl f;
+  int h[dim];
+  if (!scaled_ldl(q, &f, h)) return false;
+  if (cholesky_decomp(q, l)) return true;
+  // Q = D⁻¹·L̃·diag(d)·L̃ᵀ·D⁻¹, so L = D⁻¹·L̃·diag(√d): column j of L̃
+  // times √dⱼ, row i divided by Dᵢ = 2^−hᵢ.
+  double root_d[dim];
+  for (int j = 0; j < dim; ++j) root_d[j] = std::sqrt(1.0 / f.inv_d[j]);
+  double const unit_lower[sym] = {1.0, f.l10, f.l20, 1.0, f.l21, 1.0};
+  int const row[sym] = {0, 1, 2, 1, 2, 2};  // storage of cholesky.hpp:
+  int const col[sym] = {0, 0, 0, 1, 1, 2};  // column by column
+  for (int k = 0; k < sym; ++k)
+    l[k] = std::ldexp(unit_lower[k] * root_d[col[k]], h[row[k]]);
+  return true;
 }
 
 Status check_input(double const *r, double const *q1, double const *q2,

@@ -32,10 +32,21 @@ bool valid_f_input(double lambda, double const *r, double const *q1,
 Status check_pointers_and_finite(double const *r, double const *q1,
                                  double const *q2, void const *out) noexcept;
 
-// True when the stored matrix is positive definite to the resolution of a
-// double Cholesky factorisation, after an exact power-of-two rescaling of
-// its rows and columns. False for a non-finite entry.
+// The definiteness rule of both libraries (pw85.h): q is positive definite
+// when the L·D·Lᵀ factorisation (ldl_decomp()) of D·Q·D has positive
+// pivots, D = diag(2^−hᵢ) the exact power-of-two scaling that brings the
+// diagonal of Q to [1/4, 1). Such a scaling changes none of the roundings
+// of the factorisation (barring underflow), so the rule decides as the
+// factorisation of Q itself, or of Q scaled by any power of two, would
+// (prepare() in problem.cpp), and no square overflows or underflows however
+// widely the diagonal entries range. False for a non-finite entry.
 bool is_positive_definite(double const q[sym]) noexcept;
+
+// The Cholesky factor of q (storage of cholesky.hpp) when q is positive
+// definite by the rule above, else false: cholesky_decomp(), or, where one
+// of its pivots rounds to ≤ 0 although the rule accepts q, L̃·√D/D from the
+// rule's factors (so that the two never disagree).
+bool cholesky_by_rule(double const q[sym], double l[sym]) noexcept;
 
 // check_pointers_and_finite(), then Status::not_positive_definite if q1 or
 // q2 is not positive definite: the input contract of the legacy contact

@@ -10,8 +10,8 @@ namespace pw85::detail {
 
 // f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4, eqs. (1)–(4)), compensated
 // (compensated.hpp): accurate to about one ulp while cond(Q(λ)) is below
-// ~1e10. Returns false when Q(λ) is not positive definite to the
-// resolution of its factorisation.
+// ~1e10; never below 0 for λ in [0, 1]. Returns false when Q(λ) is not
+// positive definite to the resolution of its factorisation.
 bool f_compensated(double lambda, double const r[dim], double const q1[sym],
                    double const q2[sym], double *f) noexcept;
 

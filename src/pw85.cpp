@@ -59,9 +59,9 @@ const char *pw85_version(void) noexcept { return PW85_VERSION; }
 
 void pw85__cholesky_decomp(double const a[PW85_SYM],
                            double l[PW85_SYM]) noexcept {
-  // No status in the original signature: a failed factorisation is
-  // reported as NaN in every entry.
-  if (!core::cholesky_decomp(a, l))
+  // No status in the original signature: a form that is not positive
+  // definite (the rule of pw85.h) is reported as NaN in every entry.
+  if (!core::cholesky_by_rule(a, l))
     for (int i = 0; i < PW85_SYM; ++i) l[i] = NAN;
 }
 

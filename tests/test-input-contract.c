@@ -353,6 +353,40 @@ static void test_f_neg_contract(void) {
   g_assert_true(isnan(pw85_f_neg(0., params)));
 }
 
+/* −f(λ) ≤ 0 on [0, 1] (or NaN), also where Q(λ) is so ill-conditioned
+ * that the computed f may round below 0: Q1 and Q2 share their principal
+ * directions, with a thin one (eigenvalues 1, u, 10^−19..−14 and u′, 1,
+ * 10^−19..−14: cond 1e14 to 1e19), and r12 is random. */
+static void test_f_neg_sign(void) {
+  GRand *rng = g_rand_new_with_seed(1613);
+  int positive = 0, finite = 0;
+  int const count = 100000;
+  for (int n = 0; n < count; n++) {
+    double const e1[3] = {1., g_rand_double_range(rng, 1e-3, 1.),
+                          pow(10., g_rand_double_range(rng, -19., -14.))};
+    double const e2[3] = {g_rand_double_range(rng, 1e-3, 1.), 1.,
+                          pow(10., g_rand_double_range(rng, -19., -14.))};
+    double params[15];
+    GRand *same = g_rand_copy(rng);
+    random_form_with_eigenvalues(rng, e1, params + 3);
+    random_form_with_eigenvalues(same, e2, params + 9); /* same rotation */
+    g_rand_free(same);
+    for (int c = 0; c < 3; c++) params[c] = g_rand_double_range(rng, -1., 1.);
+    double const lambda = g_rand_double(rng);
+    double const v = pw85_f_neg(lambda, params);
+    if (isfinite(v)) finite++;
+    if (v > 0.) {
+      if (positive++ < 5)
+        test_mismatch("pw85_f_neg(%a) = %.3g > 0", lambda, v);
+    }
+  }
+  g_test_message("%d of %d values finite, %d positive", finite, count,
+                 positive);
+  g_assert_cmpint(finite, >, count / 2);
+  g_assert_cmpint(positive, ==, 0);
+  g_rand_free(rng);
+}
+
 /* The handler installed by these tests does fail a test that reaches it:
  * provoke GSL's error in a subprocess, on purpose. */
 static void test_gsl_handler_detects(void) {
@@ -413,6 +447,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/contract/overlap/statuses", test_overlap_contract);
   g_test_add_func("/pw85/contract/overlap/random-pairs", test_random_overlap);
   g_test_add_func("/pw85/contract/f_neg", test_f_neg_contract);
+  g_test_add_func("/pw85/contract/f_neg/sign", test_f_neg_sign);
   g_test_add_func("/pw85/contract/strerror", test_strerror);
   g_test_add_func("/pw85/contract/version", test_version);
   g_test_add_func("/pw85/contract/gsl-handler-detects",

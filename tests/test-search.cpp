@@ -304,10 +304,13 @@ void test_safeguard() {
 
 template <bool Fast>
 double plain_slope(core::Problem const &p, double lambda) {
-  core::PlainPoint pt;
-  core::NewtonStep step;
-  g_assert_true(core::evaluate_plain<Fast>(lambda, p, &pt));
-  g_assert_true(core::newton_step(pt, &step));
+  core::PlainPoint pt{};
+  core::NewtonStep step{};
+  if (!core::evaluate_plain<Fast>(lambda, p, &pt) ||
+      !core::newton_step(pt, &step)) {
+    g_test_fail_printf("no Newton step at %.17g", lambda);
+    return 1.0;
+  }
   return step.domega;
 }
 

@@ -17,6 +17,14 @@
  * is symmetric positive definite; Q = Σ aᵢ² vᵢ vᵢᵀ for semi-axes aᵢ along
  * unit vectors vᵢ. Q has the dimension of a squared length.
  *
+ * Positive definite, as stored: every function of pw85 and pw85_legacy
+ * applies one rule. The entries are finite, the diagonal positive, and
+ * the L·D·Lᵀ factorisation in double of D·Q·D, D = diag(2^−hᵢ) the exact
+ * power-of-two scaling that brings the diagonal to [1/4, 1), has positive
+ * pivots. (The scaling changes no rounding: the rule decides as the
+ * factorisation of Q itself would, barring underflow or overflow.) A form
+ * with cond(Q) far below 1/ε passes; one nearly singular may pass or not.
+ *
  * Thread safety: every function is reentrant and thread-safe; none keeps
  * state between calls. None prints, aborts, exits, allocates from the heap,
  * or changes process-wide state (in particular GSL's error handler is never
@@ -122,9 +130,11 @@ PW85_API const char *pw85_version(void) PW85_NOEXCEPT;
  * @brief Cholesky factorisation A = L·Lᵀ of a symmetric positive definite
  *        3×3 matrix (internal, exposed for testing).
  *
- * Preconditions, not checked: a and l are valid pointers, the entries of
- * a finite. If a pivot is not positive (A not positive definite to the
- * resolution of the factorisation), every entry of l is set to NaN.
+ * Precondition, not checked: a and l are valid pointers. If A is not
+ * positive definite by the rule above (a NaN or infinite entry included),
+ * every entry of l is set to NaN; otherwise l holds the factor (should the
+ * usual algorithm meet a pivot ≤ 0 on a form that the rule accepts, L is
+ * formed from the rule's L·D·Lᵀ factors instead).
  * @param[in] a the matrix A (upper triangle, see the file description).
  * @param[out] l the lower-triangular factor L (see the file description).
  */
@@ -173,9 +183,11 @@ PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
  * @param[in] lambda λ, normally in [0, 1].
  * @param[in] params PW85_DIM + 2·PW85_SYM = 15 doubles: r12[3], then
  *                   q1[6], then q2[6].
- * @return −f(λ), a value ≤ 0 for λ in [0, 1]; NaN if params is NULL, if
- *         lambda or an entry of params is not finite, or if Q(λ) is not
- *         positive definite.
+ * @return −f(λ), a value ≤ 0 for λ in [0, 1] (−0 where rounding, with
+ *         cond(Q(λ)) beyond ~1e14, would make f negative); NaN if params
+ *         is NULL, if lambda or an entry of params is not finite, or if
+ *         Q(λ) is not positive definite to the resolution of its
+ *         factorisation.
  */
 PW85_API double pw85_f_neg(double lambda,
                            double const params[PW85_DIM + 2 * PW85_SYM])
@@ -231,8 +243,7 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  *         PW85_EFAULT if a pointer is NULL (out untouched);
  *         PW85_EDOM if an input is NaN or infinite (out untouched);
  *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite as stored,
- *         to the resolution of a double Cholesky factorisation (out
- *         untouched);
+ *         by the rule above (out untouched);
  *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity, out[1] = λ;
  *         or if the diagonal entries of q1 and q2 together span more than
  *         the range of a double (ratio above about 1e600: out untouched);

@@ -180,7 +180,8 @@ PW85_API double pw85_legacy_f2(double lambda, double const r12[PW85_DIM],
  * @return PW85_SUCCESS;
  *         PW85_EFAULT if a pointer is NULL (out untouched);
  *         PW85_EDOM if an input is NaN or infinite (out untouched);
- *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite (out
+ *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite by the
+ *         rule of pw85.h, the same as pw85_contact_function's (out
  *         untouched);
  *         PW85_ERANGE if μ² exceeds DBL_MAX (out[0] = +infinity, out[1] =
  *         λ), or if the diagonals of q1 and q2 together span more than the
@@ -215,7 +216,8 @@ PW85_API int pw85_legacy_contact_function1(double const r12[PW85_DIM],
  * @return PW85_SUCCESS;
  *         PW85_EFAULT if a pointer is NULL (out untouched);
  *         PW85_EDOM if an input is NaN or infinite (out untouched);
- *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite (out
+ *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite by the
+ *         rule of pw85.h, the same as pw85_contact_function's (out
  *         untouched);
  *         PW85_ERANGE if μ² exceeds DBL_MAX (out[0] = +infinity, out[1] =
  *         λ), or if the input's dynamic range is too wide for the

@@ -61,7 +61,7 @@ double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
                       double *out) noexcept {
   double f = NAN;
   if (!core::valid_f_input(lambda, r12, q1, q2) ||
-      !legacy::f1(lambda, r12, q1, q2, &f, out)) {
+      !legacy::f1(lambda, r12, q1, q2, &f, out) || std::isnan(f)) {
     if (out != nullptr) out[0] = out[1] = out[2] = NAN;
     return NAN;
   }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "contract.h"
+#include "testutil.h"
 #include "worst.h"
 
 
@@ -255,6 +256,61 @@ static void test_f_agree(void) {
   worst_report(&w2);
 }
 
+/* pw85_legacy_f1 returns NaN with NaN in every entry of out, also where
+ * the computation overflows: at λ = 0 with r12 of 1e160, rᵀQ⁻¹r = ∞ and
+ * f = 0·∞, while f′ and f″ would be ±∞ (Q1 = Q2, so that sᵀ(Q2 − Q1)s = 0
+ * stays finite). */
+static void test_f1_nan_everywhere(void) {
+  double const r[PW85_DIM] = {1e160, -1e160, 1e160};
+  double out[3] = {1., 2., 3.};
+  double const f = pw85_legacy_f1(0., r, q1_ok, q1_ok, out);
+  g_assert_true(isnan(f));
+  for (int i = 0; i < 3; i++)
+    if (!isnan(out[i])) test_mismatch("out[%d] = %g, not NaN", i, out[i]);
+}
+
+/* One definiteness rule (pw85.h): pw85_contact_function, both legacy
+ * contact functions and pw85__cholesky_decomp accept or reject the same
+ * forms, here forms R·diag(1, e1, e2)·Rᵀ whose smallest eigenvalue e2 lies
+ * about the resolution of a factorisation in double (±10^−19..−14), where
+ * rounding decides. */
+static void test_one_definiteness_rule(void) {
+  GRand *rng = g_rand_new_with_seed(85);
+  int rejected = 0, disagree = 0;
+  int const count = 20000;
+  for (int n = 0; n < count; n++) {
+    double const e2 = (g_rand_boolean(rng) ? 1. : -1.) *
+                      pow(10., g_rand_double_range(rng, -19., -14.));
+    double const e[3] = {1., g_rand_double_range(rng, 0.5, 2.), e2};
+    double q[PW85_SYM], l[PW85_SYM], out[2];
+    random_form_with_eigenvalues(rng, e, q);
+    gboolean const main1 =
+        pw85_contact_function(r_ok, q, q2_ok, out) == PW85_ENOTPOSDEF;
+    gboolean const main2 =
+        pw85_contact_function(r_ok, q2_ok, q, out) == PW85_ENOTPOSDEF;
+    gboolean const leg1 =
+        pw85_legacy_contact_function1(r_ok, q, q2_ok, out) == PW85_ENOTPOSDEF;
+    gboolean const leg2 =
+        pw85_legacy_contact_function2(r_ok, q2_ok, q, out) == PW85_ENOTPOSDEF;
+    pw85__cholesky_decomp(q, l);
+    gboolean const chol = isnan(l[0]);
+    if (main1) rejected++;
+    if (main1 != main2 || main1 != leg1 || main1 != leg2 || main1 != chol) {
+      if (disagree++ < 5)
+        test_mismatch("form %d (e2 = %.3g): rejected by contact_function "
+                      "%d/%d, legacy 1 %d, legacy 2 %d, cholesky %d",
+                      n, e2, main1, main2, leg1, leg2, chol);
+    }
+  }
+  g_test_message("%d forms, %d rejected, %d disagreements", count, rejected,
+                 disagree);
+  /* Both answers occur, so that the rule is exercised where it decides. */
+  g_assert_cmpint(rejected, >, count / 10);
+  g_assert_cmpint(rejected, <, count - count / 10);
+  g_assert_cmpint(disagree, ==, 0);
+  g_rand_free(rng);
+}
+
 static void add_contact_tests(Impl const *impl) {
   struct {
     const char *path;
@@ -284,5 +340,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85_legacy/f1/contract", test_f1_contract);
   g_test_add_func("/pw85_legacy/f2/contract", test_f2_contract);
   g_test_add_func("/pw85_legacy/f/agree", test_f_agree);
+  g_test_add_func("/pw85_legacy/f1/nan-everywhere", test_f1_nan_everywhere);
+  g_test_add_func("/pw85_legacy/definiteness/one-rule",
+                  test_one_definiteness_rule);
   return g_test_run();
 }
