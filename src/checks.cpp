@@ -17,15 +17,6 @@ bool valid_f_input(double lambda, double const *r, double const *q1,
          all_finite<sym>(q2);
 }
 
-Status check_pointers_and_finite(double const *r, double const *q1,
-                                 double const *q2, void const *out) noexcept {
-  if (r == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
-    return Status::null_pointer;
-  if (!(all_finite<dim>(r) && all_finite<sym>(q1) && all_finite<sym>(q2)))
-    return Status::not_finite;
-  return Status::success;
-}
-
 namespace {
 
 // The factors of the rule: ldl_decomp() of D·Q·D, D = diag(2^−h[i]).

@@ -28,9 +28,16 @@ bool valid_f_input(double lambda, double const *r, double const *q1,
 
 // Status::null_pointer if a pointer is NULL, Status::not_finite if an entry
 // of r (3), q1 or q2 (6 each) is not finite, Status::success otherwise.
-// out is only tested against NULL.
-Status check_pointers_and_finite(double const *r, double const *q1,
-                                 double const *q2, void const *out) noexcept;
+// out is only tested against NULL. Inline: it runs on every call.
+inline Status check_pointers_and_finite(double const *r, double const *q1,
+                                        double const *q2,
+                                        void const *out) noexcept {
+  if (r == nullptr || q1 == nullptr || q2 == nullptr || out == nullptr)
+    return Status::null_pointer;
+  if (!(all_finite<dim>(r) && all_finite<sym>(q1) && all_finite<sym>(q2)))
+    return Status::not_finite;
+  return Status::success;
+}
 
 // The definiteness rule of both libraries (pw85.h): q is positive definite
 // when the L·D·Lᵀ factorisation (ldl_decomp()) of D·Q·D has positive

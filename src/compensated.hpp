@@ -142,20 +142,6 @@ PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
   return true;
 }
 
-// The same, reusing the plain factors and solution already computed at this
-// λ (by evaluate_plain()): they are those evaluate_compensated() would
-// compute, since hi is Q(λ) as combine() rounds it.
-template <bool WithP>
-PW85_INLINE void evaluate_compensated(double lambda, double const r[dim],
-                                      double const q1[sym],
-                                      double const q2[sym],
-                                      LdlSolution const &plain,
-                                      Compensated *out) noexcept {
-  double hi[sym], lo[sym];
-  combine_dd(lambda, q1, q2, hi, lo);
-  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, plain, out);
-}
-
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_COMPENSATED_HPP

@@ -29,6 +29,24 @@ PW85_INLINE double model_gain(double lambda, Compensated const &a,
   return 0.5 * root_p1 * omega * sum_mu * step;
 }
 
+// The compensated evaluation at λ (with P1, P2), reusing the plain factors
+// and solution at λ where plain holds them: written once, so that the
+// kernels are inlined once (code size counts in this hot loop).
+PW85_INLINE bool evaluate_at(double lambda, Problem const &p,
+                             LdlSolution const *plain,
+                             Compensated *a) noexcept {
+  double hi[sym], lo[sym];
+  combine_dd(lambda, p.q1, p.q2, hi, lo);
+  LdlSolution fresh;
+  if (plain == nullptr) {
+    if (!ldl_decomp_q(hi, &fresh.fac, p.moderate)) return false;
+    ldl_solve(fresh.fac, p.r, fresh.s);
+    plain = &fresh;
+  }
+  compensated_from<true>(lambda, p.r, p.q1, p.q2, hi, lo, *plain, a);
+  return true;
+}
+
 // The largest compensated f seen, and where.
 struct Best {
   double f = 0.0;
@@ -47,15 +65,14 @@ bool finish(Problem const &p, FinishStart const &start,
             Finished *out) noexcept {
   double lambda = start.lambda;
   double domega = start.domega;
-  Compensated a;
-  if (start.plain != nullptr)
-    evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, *start.plain, &a);
-  else if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
-                                       &a))
-    return false;
+  // The plain factors and solution at the current λ, where known: those
+  // of the start, if given, until λ moves.
+  LdlSolution const *plain = start.plain;
   Best best;
   double prev_lambda = 0.0, prev_omega = 0.0;
-  for (int evaluations = 1;; ++evaluations) {
+  for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
+    Compensated a;
+    if (!evaluate_at(lambda, p, plain, &a)) break;
     best.see(a.f, lambda);
     double const omega = omega_of(lambda, a);
     // The slope: the secant through the previous point once there is one
@@ -80,10 +97,9 @@ bool finish(Problem const &p, FinishStart const &start,
     prev_lambda = lambda;
     prev_omega = omega;
     lambda = next;
-    if (evaluations == finish_iter ||
-        !evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate, &a))
-      break;
+    plain = nullptr;
   }
+  if (!best.any) return false;
   out->lambda = best.lambda;
   out->mu2 = best.f;
   return true;

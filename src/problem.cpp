@@ -6,11 +6,7 @@
 
 namespace pw85::detail {
 
-Status prepare(double const r[dim], double const q1[sym], double const q2[sym],
-               Problem *p) noexcept {
-  if (rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
-      ldl_decomp(p->q2, &p->f2))
-    return Status::success;
+Status why_unprepared(double const q1[sym], double const q2[sym]) noexcept {
   // Not definite, or definite but out of range once rescaled together.
   if (!is_positive_definite(q1) || !is_positive_definite(q2))
     return Status::not_positive_definite;

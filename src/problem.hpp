@@ -18,12 +18,22 @@ struct Problem : Scaled {
   Ldl f2;  // Q2 = L·D·Lᵀ
 };
 
+// Why prepare() failed, from the input forms (problem.cpp):
+// Status::not_positive_definite, or Status::out_of_range when they are
+// definite but their diagonals span more than the range of a double.
+Status why_unprepared(double const q1[sym], double const q2[sym]) noexcept;
+
 // rescale(), then the factorisations of Q1 and Q2, which decide their
-// definiteness. Input: finite. Returns Status::success,
-// Status::not_positive_definite, or Status::out_of_range when the
-// diagonals span more than the range of a double.
-Status prepare(double const r[dim], double const q1[sym], double const q2[sym],
-               Problem *p) noexcept;
+// definiteness (the rule of checks.hpp, applied to Q scaled by a power of
+// two). Input: finite. Returns Status::success, or the status of
+// why_unprepared(). Inline: it runs on every call.
+inline Status prepare(double const r[dim], double const q1[sym],
+                      double const q2[sym], Problem *p) noexcept {
+  if (rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
+      ldl_decomp(p->q2, &p->f2))
+    return Status::success;
+  return why_unprepared(q1, q2);
+}
 
 // A lower bound of μ² valid for every input: each ellipsoid lies in the
 // sphere of radius √λmax(Qᵢ) ≤ √tr(Qᵢ) about its centre, and those spheres
