@@ -9,7 +9,9 @@ compared exactly; a deterministic random sample of F, MU2/LAMBDA and of the
 general pairs, and every finish pair (inputs regenerated from the seed), is
 recomputed with the exact/certified routines of
 gen_ref_data.py (same folder) and compared bit for bit, and a smaller sample
-with the independent mpmath route.  Exit status: 0 if everything matches,
+with the independent mpmath route.  Every hard pair (pw85_hard_pairs.h5) is
+recomputed and certified with gen_hard_set.py, and a sample is regenerated
+from the seed.  Exit status: 0 if everything matches,
 1 on any mismatch, 77 (meson's "skipped") if numpy/h5py/mpmath are missing.
 """
 
@@ -31,6 +33,7 @@ except ImportError as exc:  # pragma: no cover
     sys.exit(77)
 
 import gen_ref_data as gen  # noqa: E402
+import gen_hard_set as hard  # noqa: E402
 
 N_F = 20000
 N_MU = 3000
@@ -39,6 +42,8 @@ N_F_MP = 500
 N_MU_MP = 100
 N_GENERAL_MP = 50
 N_FINISH_MP = 50
+N_HARD_REGEN = 150
+N_HARD_COND = 300
 
 
 class Checker:
@@ -216,10 +221,90 @@ def main(argv=None):
                                 % (c, stored, list(mp)))
     print("  finish pairs: all %d cases regenerated and recomputed (%d also "
           "with mpmath): %d mismatches" % (n, N_FINISH_MP, bad))
+    check_hard(args.datadir, ck, rng)
     print("%s (%.1f s)" % ("FAILED: %d mismatches" % ck.failures
                            if ck.failures else "all checks passed",
                            time.time() - t0))
     return 1 if ck.failures else 0
+
+
+def check_hard(datadir, ck, rng):
+    """pw85_hard_pairs.h5: shapes, classes, every reference recomputed and
+    certified, the reproducers against issue 13's hex floats, a sample of
+    records regenerated from the seed (inputs, references, cond, mpmath)."""
+    path = os.path.join(datadir, hard.HARD_FILE)
+    print("checking %s" % path)
+    with h5py.File(path, "r") as f:
+        g = {k: f[k][...] for k in f}
+        names = f.attrs["class_names"].decode().split(",")
+        candidates = [int(k) for k in f.attrs["candidates"]]
+    n = sum(c for _, c in hard.CLASSES)
+    before = ck.failures
+    ck.check(names == list(hard.CLASS_NAMES),
+             "hard pairs: class_names %r" % names)
+    for k, shp in (("r12", (n, 3)), ("q1", (n, 6)), ("q2", (n, 6)),
+                   ("MU2", (n,)), ("LAMBDA", (n,)), ("MU2_MINUS_1", (n,)),
+                   ("cond1", (n,)), ("cond2", (n,))):
+        ck.check(k in g and g[k].shape == shp and g[k].dtype == np.float64,
+                 "hard pairs dataset %s: expected float64 %s" % (k, shp))
+    ck.check("class" in g and g["class"].shape == (n,)
+             and g["class"].dtype == np.int32, "hard pairs dataset class")
+    ck.check(len(candidates) == n, "hard pairs: attribute candidates")
+    if ck.failures > before:
+        return
+    expected = np.repeat(np.arange(len(hard.CLASSES), dtype=np.int32),
+                         [c for _, c in hard.CLASSES])
+    ck.check(same(g["class"].astype(np.float64), expected.astype(np.float64)),
+             "hard pairs: class counts differ from CLASSES")
+    for i, (r, q1, q2) in enumerate(hard.REPRODUCERS):
+        ck.check(same([float.fromhex(x) for x in r + q1 + q2],
+                      np.concatenate([g["r12"][i], g["q1"][i],
+                                      g["q2"][i]])),
+                 "hard pair %d: not issue 13's reproducer %d" % (i, i))
+    # every pair: exact positive definiteness, references recomputed and
+    # certified (sign change of f' across lambda* +- 1e-50 min(...))
+    bad = 0
+    for c in range(n):
+        r, q1, q2 = list(g["r12"][c]), list(g["q1"][c]), list(g["q2"][c])
+        ok = gen.positive_definite_exact(q1) and \
+            gen.positive_definite_exact(q2)
+        pair = gen.Pair(q1, q2)
+        res = gen.contact(pair, r)
+        stored = [g["MU2"][c], g["LAMBDA"][c], g["MU2_MINUS_1"][c]]
+        ok = ok and same([res.mu2, res.lam, res.mu2m1], stored)
+        try:
+            hard.certify(pair, r, res)
+        except AssertionError:
+            ok = False
+        bad += not ck.check(ok, "hard pair %d: stored %r, recomputed %r"
+                            % (c, stored, [res.mu2, res.lam, res.mu2m1]))
+    print("  hard pairs: all %d references recomputed and certified: %d "
+          "mismatches" % (n, bad))
+    bad = 0
+    for c in rng.permutation(n)[:N_HARD_COND]:
+        conds = [hard.cond_mp(list(g["q1"][c])), hard.cond_mp(list(g["q2"][c]))]
+        bad += not ck.check(same(conds, [g["cond1"][c], g["cond2"][c]]),
+                            "hard pair %d: cond %r" % (c, conds))
+    print("  hard pairs: cond1, cond2 of %d random pairs recomputed: %d "
+          "mismatches" % (N_HARD_COND, bad))
+    bad = 0
+    for c in sorted(int(x) for x in rng.permutation(n)[:N_HARD_REGEN]):
+        out = hard.candidate((int(g["class"][c]), candidates[c]))
+        ok = isinstance(out, dict)
+        if ok:
+            mine = out["r"] + out["q1"] + out["q2"] + [
+                out["mu2"], out["lam"], out["m1"], out["cond1"],
+                out["cond2"]]
+            ok = same(mine, np.concatenate([
+                g["r12"][c], g["q1"][c], g["q2"][c],
+                [g["MU2"][c], g["LAMBDA"][c], g["MU2_MINUS_1"][c],
+                 g["cond1"][c], g["cond2"][c]]])) and \
+                out["mp"] == (out["mu2"], out["lam"], out["m1"])
+        bad += not ck.check(ok, "hard pair %d: regenerated from candidate "
+                            "%d differs" % (c, candidates[c]))
+    print("  hard pairs: %d random pairs regenerated from the seed (inputs, "
+          "references, cond, mpmath route): %d mismatches"
+          % (N_HARD_REGEN, bad))
 
 
 if __name__ == "__main__":

@@ -152,3 +152,65 @@ void general_pairs_load_or_fail(GeneralPairs *g) {
     g_error("general pairs: %s", error->message);
   g_assert_cmpuint(g->count, >, 0);
 }
+
+const char *hard_pairs_path(void) { return g_getenv("PW85_HARD_PAIRS"); }
+
+gboolean hard_pairs_load(const char *path, HardPairs *h, GError **error) {
+  memset(h, 0, sizeof *h);
+  if (path == NULL) {
+    g_set_error(error, REF_DATA_ERROR, 3, "PW85_HARD_PAIRS is not set");
+    return FALSE;
+  }
+  if (!general_pairs_load(path, &h->pairs, error)) return FALSE;
+  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
+    general_pairs_clear(&h->pairs);
+    return FALSE;
+  }
+  size_t const n = h->pairs.count;
+  hsize_t dims[1];
+  int rank = -1;
+  H5T_class_t type_class;
+  size_t type_size = 0;
+  char *names = NULL;
+  gboolean ok =
+      read_dataset(file, "/cond1", 1, dims, &h->cond1, error) &&
+      expect(dims[0] == n, "cond1", error) &&
+      read_dataset(file, "/cond2", 1, dims, &h->cond2, error) &&
+      expect(dims[0] == n, "cond2", error) &&
+      expect(H5LTget_dataset_ndims(file, "/class", &rank) >= 0 && rank == 1 &&
+                 H5LTget_dataset_info(file, "/class", dims, NULL, NULL) >= 0 &&
+                 dims[0] == n,
+             "class", error) &&
+      (h->klass = g_new(int, n), TRUE) &&
+      expect(H5LTread_dataset_int(file, "/class", h->klass) >= 0, "class",
+             error) &&
+      expect(H5LTget_attribute_info(file, "/", "class_names", dims,
+                                    &type_class, &type_size) >= 0 &&
+                 type_class == H5T_STRING,
+             "attribute class_names", error) &&
+      (names = g_malloc0(type_size + 1), TRUE) &&
+      expect(H5LTget_attribute_string(file, "/", "class_names", names) >= 0,
+             "attribute class_names", error);
+  H5Fclose(file);
+  if (ok) {
+    h->class_names = g_strsplit(names, ",", -1);
+    h->num_classes = g_strv_length(h->class_names);
+    for (size_t i = 0; ok && i < n; i++)
+      ok = expect(h->klass[i] >= 0 && (size_t)h->klass[i] < h->num_classes,
+                  "class out of range", error);
+  }
+  g_free(names);
+  if (!ok) hard_pairs_clear(h);
+  return ok;
+}
+
+void hard_pairs_clear(HardPairs *h) {
+  general_pairs_clear(&h->pairs);
+  g_free(h->klass);
+  g_free(h->cond1);
+  g_free(h->cond2);
+  g_strfreev(h->class_names);
+  memset(h, 0, sizeof *h);
+}

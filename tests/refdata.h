@@ -50,6 +50,25 @@ gboolean general_pairs_load(const char *path, GeneralPairs *pairs,
 void general_pairs_clear(GeneralPairs *pairs);
 void general_pairs_load_or_fail(GeneralPairs *pairs);
 
+/* The hard pairs of data/pw85_hard_pairs.h5 (data/README.md): the general
+ * pairs' datasets plus the class of each case (class[n] indexes
+ * class_names, read from the file attribute class_names) and cond(Q1),
+ * cond(Q2) computed at high precision. */
+typedef struct {
+  GeneralPairs pairs;
+  int *klass;         /* [pairs.count] */
+  double *cond1, *cond2; /* [pairs.count] */
+  gchar **class_names; /* NULL-terminated */
+  size_t num_classes;
+} HardPairs;
+
+/* The path of the hard pairs: the environment variable PW85_HARD_PAIRS.
+ * NULL when unset. */
+const char *hard_pairs_path(void);
+
+gboolean hard_pairs_load(const char *path, HardPairs *hard, GError **error);
+void hard_pairs_clear(HardPairs *hard);
+
 /* Index of F[i][j][k][l] and of MU2[i][j][k][m] / LAMBDA[i][j][k][m]. */
 static inline size_t ref_data_f_index(RefData const *d, size_t i, size_t j,
                                       size_t k, size_t l) {
