@@ -60,6 +60,20 @@ PW85_INLINE dd dd_add(dd a, double b) noexcept {
 
 PW85_INLINE double dd_round(dd a) noexcept { return a.hi + a.lo; }
 
+PW85_INLINE dd dd_sub(dd a, dd b) noexcept { return dd_add(a, dd_neg(b)); }
+
+// a/b for b ≠ 0, to about 2⁻¹⁰⁴ relative: the quotient of the leading parts
+// and two corrections from the remainder a − q·b, computed in
+// double-double.
+PW85_INLINE dd dd_div(dd a, dd b) noexcept {
+  double const q1 = a.hi / b.hi;
+  dd r = dd_sub(a, dd_mul(b, q1));
+  double const q2 = r.hi / b.hi;
+  r = dd_sub(r, dd_mul(b, q2));
+  double const q3 = r.hi / b.hi;
+  return dd_add(two_sum(q1, q2), q3);
+}
+
 // Compensated accumulation (Ogita, Rump and Oishi, SIAM J. Sci. Comput. 26,
 // 2005, algorithm Dot2): the result is as accurate as if computed in twice
 // the working precision, then rounded.

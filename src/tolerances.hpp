@@ -82,6 +82,11 @@ constexpr double max_model_gain = 1e-10;
 // The compensated f is refined once (s += Q⁻¹ρ) when κ̄(Q(λ)) exceeds this:
 // below, its error O((κ̄·ε)²) is under an ulp already.
 constexpr double refine_cond = 1e6;
+// Beyond κ̄(Q(λ)) = factor_dd_cond, Q(λ) is factorised in double-double
+// (κ̄·2⁻¹⁰⁴ relative error): one refinement from the double factors leaves
+// errors of order κ̄²(κ̄·ε)⁴, above an ulp from about κ̄ = 1e12 (measured:
+// 45 of 158 random f not correctly rounded at cond 1e12–1e13).
+constexpr double factor_dd_cond = 1e10;
 
 }  // namespace pw85::detail
 
