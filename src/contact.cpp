@@ -82,6 +82,7 @@ Status contact_function(double const r[dim], double const q1[sym],
     out[1] = 0.5;
     return Status::success;
   }
+  orient(&p);
   // 3.–7.
   double res[2];
   status = p.moderate ? solve<true>(p, res) : solve<false>(p, res);
@@ -96,9 +97,9 @@ Status contact_function(double const r[dim], double const q1[sym],
     double const floor = sphere_lower_bound(p);
     mu2 = mu2 > floor ? mu2 : floor;  // also when mu2 is NaN
   }
-  // 9. Scaling back.
+  // 9. Scaling back, and λ of the input's orientation.
   mu2 = times_pow2(mu2, p.shift);
-  out[1] = res[1];
+  out[1] = p.swapped ? 1.0 - res[1] : res[1];
   if (std::isinf(mu2)) {
     out[0] = HUGE_VAL;
     return Status::out_of_range;

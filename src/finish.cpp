@@ -70,11 +70,17 @@ bool finish(Problem const &p, FinishStart const &start,
   LdlSolution const *plain = start.plain;
   Best best;
   double prev_lambda = 0.0, prev_omega = 0.0;
+  // The root of the compensated ω lies in (lo, hi): narrowed by the sign of
+  // every ω computed here, which is reliable (unlike that of the plain ω
+  // when Q(λ) is ill-conditioned).
+  double lo = 0.0, hi = 1.0;
   for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
     Compensated a;
     if (!evaluate_at(lambda, p, plain, &a)) break;
     best.see(a.f, lambda);
     double const omega = omega_of(lambda, a);
+    if (omega < 0.0) lo = std::max(lo, lambda);
+    if (omega > 0.0) hi = std::min(hi, lambda);
     // The slope: the secant through the previous point once there is one
     // (and it is positive, as ω′ is), else the plain ω′.
     if (evaluations > 1 && lambda != prev_lambda) {
@@ -83,8 +89,21 @@ bool finish(Problem const &p, FinishStart const &start,
     }
     if (!(domega > 0.0)) break;
     double const step = omega / domega;
-    double const next = lambda - step;
-    if (!(next > 0.0 && next < 1.0)) break;
+    double next = lambda - step;
+    if (!(next > 0.0 && next < 1.0)) {
+      // Newton's step leaves [0, 1] (a start far from a root near an end):
+      // a step into the bracket instead, by a factor 2^10 towards the end
+      // it lies at, or to the middle of a bracket away from both ends.
+      next = lo == 0.0 ? hi * 0x1p-10
+                       : (hi == 1.0 ? 1.0 - (1.0 - lo) * 0x1p-10
+                                    : 0.5 * (lo + hi));
+      if (!(next > lo && next < hi)) break;
+      prev_lambda = lambda;
+      prev_omega = omega;
+      lambda = next;
+      plain = nullptr;
+      continue;
+    }
     if (std::fabs(step) <= finish_accept * std::min(lambda, 1.0 - lambda)) {
       double const gain = model_gain(lambda, a, omega, step);
       if (gain >= 0.0 && gain <= max_model_gain * a.f) {

@@ -127,11 +127,16 @@ Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
                       one,
                       ldl_cond_bound(p.q1, p.f1),
                       ldl_cond_bound(p.q2, p.f2),
-                      ldl_quad_inverse(p.f1, p.r),
-                      ldl_quad_inverse(p.f2, p.r)};
+                      p.a1,
+                      p.a2};
     d = centre_filter(s);
     if (d == Decision::undecided) {
-      status = p.moderate ? decide<true>(s, &d) : decide<false>(s, &d);
+      // The remaining stages in the problem's canonical orientation, so
+      // that both argument orders take the same steps. (The filters above
+      // are symmetric in Q1 and Q2 as they stand.)
+      orient(&p);
+      Filtering const t{p, one, s.cond1, s.cond2, p.a1, p.a2};
+      status = p.moderate ? decide<true>(t, &d) : decide<false>(t, &d);
       if (status != Status::success) return status;
     }
   }

@@ -14,9 +14,44 @@
 namespace pw85::detail {
 
 struct Problem : Scaled {
-  Ldl f1;  // Q1 = L·D·Lᵀ
-  Ldl f2;  // Q2 = L·D·Lᵀ
+  Ldl f1;      // Q1 = L·D·Lᵀ
+  Ldl f2;      // Q2 = L·D·Lᵀ
+  double a1;   // rᵀ·Q1⁻¹·r
+  double a2;   // rᵀ·Q2⁻¹·r
+  // Q1 and Q2 (with their factors and aᵢ) were exchanged by orient(): the
+  // problem's λ is then 1 − λ of the input (f(λ; Q1, Q2) = f(1−λ; Q2, Q1)).
+  bool swapped;
 };
+
+// Puts the problem in its canonical orientation, the one whose sphere-model
+// maximiser (eq. (5.9)) is at most ½: a1 ≥ a2, ties broken by the stored
+// entries. Both argument orders of the input, (r, Q1, Q2) and (−r, Q2, Q1),
+// then give the same problem bit for bit (aᵢ and the rescaling are even in
+// r and symmetric in Q1, Q2), hence the same μ², and λ ↔ 1 − λ; and a
+// maximiser near 1 is computed as one near 0, in the variable that keeps
+// its digits (1 − λ* may not be representable as 1 − a double, but it is
+// as a double).
+inline void orient(Problem *p) noexcept {
+  bool swap = p->a1 < p->a2;
+  if (p->a1 == p->a2) {  // the first entry that differs decides
+    int k = 0;
+    while (k < sym && p->q1[k] == p->q2[k]) ++k;
+    swap = k < sym && p->q2[k] < p->q1[k];
+  }
+  p->swapped = swap;
+  if (!swap) return;
+  for (int k = 0; k < sym; ++k) {
+    double const t = p->q1[k];
+    p->q1[k] = p->q2[k];
+    p->q2[k] = t;
+  }
+  Ldl const f = p->f1;
+  p->f1 = p->f2;
+  p->f2 = f;
+  double const a = p->a1;
+  p->a1 = p->a2;
+  p->a2 = a;
+}
 
 // Why prepare() failed, from the input forms (problem.cpp):
 // Status::not_positive_definite, or Status::out_of_range when they are
@@ -25,14 +60,18 @@ Status why_unprepared(double const q1[sym], double const q2[sym]) noexcept;
 
 // rescale(), then the factorisations of Q1 and Q2, which decide their
 // definiteness (the rule of checks.hpp, applied to Q scaled by a power of
-// two). Input: finite. Returns Status::success, or the status of
-// why_unprepared(). Inline: it runs on every call.
+// two), and aᵢ; the problem is not yet oriented (orient()). Input: finite.
+// Returns Status::success, or the status of why_unprepared(). Inline: it
+// runs on every call.
 inline Status prepare(double const r[dim], double const q1[sym],
                       double const q2[sym], Problem *p) noexcept {
-  if (rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
-      ldl_decomp(p->q2, &p->f2))
-    return Status::success;
-  return why_unprepared(q1, q2);
+  if (!(rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
+        ldl_decomp(p->q2, &p->f2)))
+    return why_unprepared(q1, q2);
+  p->a1 = ldl_quad_inverse(p->f1, p->r);
+  p->a2 = ldl_quad_inverse(p->f2, p->r);
+  p->swapped = false;
+  return Status::success;
 }
 
 // A lower bound of μ² valid for every input: each ellipsoid lies in the

@@ -68,8 +68,11 @@ constexpr double brent_reuse_fraction = 0.125;
 // the first compensated step is then as small, and leaves λ off by its
 // square.
 constexpr double finish_reuse = 1e-8;
-// At most this many compensated evaluations.
-constexpr int finish_iter = 3;
+// At most this many compensated evaluations. Well-conditioned problems
+// need one or two; ill-conditioned ones, on which the plain search of
+// steps 4 to 6 may end far from λ* (its ω is then rounding noise), take
+// the steps they need, up to the resolution of the compensated ω.
+constexpr int finish_iter = 40;
 // A compensated Newton step of relative size h leaves λ off by O(h²) and
 // the quadratic model's μ² (eq. (5.10)) off by O(h³) relative: at
 // h ≤ finish_accept both are below the rounding of a double, so the step is

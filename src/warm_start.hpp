@@ -34,7 +34,7 @@ inline double warm_start(double a1, double a2) noexcept {
 }
 
 inline double warm_start(Problem const &p) noexcept {
-  return warm_start(ldl_quad_inverse(p.f1, p.r), ldl_quad_inverse(p.f2, p.r));
+  return warm_start(p.a1, p.a2);
 }
 
 // Newton's step on ω from an end of [0, 1]. At λ = 0, ω = −1 and

@@ -33,14 +33,22 @@ namespace core = pw85::detail;
 
 GeneralPairs pairs;
 
-// The prepared problem of general pair n (rescaled: λ* is unchanged, μ² is
-// scaled by 2^−shift).
+// The prepared and oriented problem of general pair n (rescaled: λ* is
+// unchanged, or 1 − λ* if oriented the other way; μ² is scaled by
+// 2^−shift).
 core::Problem problem(size_t n) {
   core::Problem p;
   g_assert_true(core::prepare(pairs.r12 + 3 * n, pairs.q1 + 6 * n,
                               pairs.q2 + 6 * n, &p) == core::Status::success);
   g_assert_false(p.r_is_zero);
+  core::orient(&p);  // as the contact function does
   return p;
+}
+
+// λ* of the problem, in its orientation (orient() may have exchanged Q1
+// and Q2; 1 − λ* is exact for λ* ≥ ½).
+double star_of(core::Problem const &p, size_t n) {
+  return p.swapped ? 1.0 - pairs.LAMBDA[n] : pairs.LAMBDA[n];
 }
 
 template <bool Fast>
@@ -66,7 +74,7 @@ void test_newton_invariants() {
   int checked = 0;
   for (size_t n = 0; n < pairs.count; n++) {
     core::Problem const p = problem(n);
-    double const star = pairs.LAMBDA[n];
+    double const star = star_of(p, n);
     double const start = core::warm_start(p);
     core::Bracket prev;
     for (int k = 1; k <= core::warm_newton_iter; k++) {
@@ -148,7 +156,7 @@ void test_brent_invariants() {
   double worst = 0.0;  // excess of λ* over the bracket / noise zone
   for (size_t n = 0; n < pairs.count; n++) {
     core::Problem const p = problem(n);
-    double const star = pairs.LAMBDA[n];
+    double const star = star_of(p, n);
     double const zone = p.moderate ? noise_zone<true>(p, star)
                                    : noise_zone<false>(p, star);
     double const offset = 1e-3 * std::min(star, 1.0 - star);
@@ -322,7 +330,7 @@ void test_finish() {
   double worst = 0.0;
   for (size_t n = 0; n < pairs.count; n++) {
     core::Problem const p = problem(n);
-    double const star = pairs.LAMBDA[n];
+    double const star = star_of(p, n);
     double const start = star + (n % 2 ? 1e-9 : -1e-9) * std::min(star, 1 - star);
     double const slope = p.moderate ? plain_slope<true>(p, start)
                                     : plain_slope<false>(p, start);
