@@ -244,6 +244,16 @@ def decade(cond):
     return int(math.floor(math.log10(cond)))
 
 
+def candidate(K, cls, k):
+    """The inputs (q1, q2, lambda, r12, r12 mode) of candidate k of decade K
+    and class cls."""
+    rng = np.random.default_rng([SEED, K, cls, k])
+    t = K + rng.uniform(0, 1)
+    q1, q2, lam = make_forms(rng, cls, t)
+    r, mode = make_r12(rng, q1, q2, lam)
+    return q1, q2, lam, r, mode
+
+
 def make_cell(task):
     """The first COUNT accepted cases of decade K and class cls."""
     K, cls = task
@@ -252,10 +262,7 @@ def make_cell(task):
     while len(out) < COUNT:
         if k >= MAX_CANDIDATES:
             raise AssertionError("decade %d class %d: too few" % (K, cls))
-        rng = np.random.default_rng([SEED, K, cls, k])
-        t = K + rng.uniform(0, 1)
-        q1, q2, lam = make_forms(rng, cls, t)
-        r, mode = make_r12(rng, q1, q2, lam)
+        q1, q2, lam, r, mode = candidate(K, cls, k)
         k += 1
         if not (0 < lam < 1 and positive_definite(frac6(q1))
                 and positive_definite(frac6(q2))
