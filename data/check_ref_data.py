@@ -34,6 +34,7 @@ except ImportError as exc:  # pragma: no cover
 
 import gen_ref_data as gen  # noqa: E402
 import gen_hard_set as hard  # noqa: E402
+import gen_f_cases as fcases  # noqa: E402
 
 N_F = 20000
 N_MU = 3000
@@ -44,6 +45,8 @@ N_GENERAL_MP = 50
 N_FINISH_MP = 50
 N_HARD_REGEN = 150
 N_HARD_COND = 300
+N_F_CASES_MP = 300
+N_F_CASES_REGEN = 150
 
 
 class Checker:
@@ -222,6 +225,7 @@ def main(argv=None):
     print("  finish pairs: all %d cases regenerated and recomputed (%d also "
           "with mpmath): %d mismatches" % (n, N_FINISH_MP, bad))
     check_hard(args.datadir, ck, rng)
+    check_f_cases(args.datadir, ck, rng)
     print("%s (%.1f s)" % ("FAILED: %d mismatches" % ck.failures
                            if ck.failures else "all checks passed",
                            time.time() - t0))
@@ -305,6 +309,69 @@ def check_hard(datadir, ck, rng):
     print("  hard pairs: %d random pairs regenerated from the seed (inputs, "
           "references, cond, mpmath route): %d mismatches"
           % (N_HARD_REGEN, bad))
+
+
+def check_f_cases(datadir, ck, rng):
+    """pw85_f_cases.h5: shapes, classes and decades, every F recomputed in
+    exact rationals with positive definiteness, a sample of F and COND by
+    mpmath, a sample of records regenerated from the seed."""
+    path = os.path.join(datadir, fcases.F_FILE)
+    print("checking %s" % path)
+    with h5py.File(path, "r") as f:
+        g = {k: f[k][...] for k in f}
+        names = f.attrs["class_names"].decode().split(",")
+        candidates = [int(k) for k in f.attrs["candidates"]]
+    nc = len(fcases.CLASS_NAMES)
+    n = fcases.DECADES * nc * fcases.COUNT
+    ck.check(names == list(fcases.CLASS_NAMES),
+             "f cases: class_names %r" % names)
+    for k, shp in (("r12", (n, 3)), ("q1", (n, 6)), ("q2", (n, 6)),
+                   ("lambda", (n,)), ("F", (n,)), ("COND", (n,))):
+        ck.check(g[k].shape == shp and g[k].dtype == np.float64,
+                 "f cases dataset %s: expected float64 %s" % (k, shp))
+    ck.check(g["class"].shape == (n,) and g["class"].dtype == np.int32,
+             "f cases dataset class")
+    ck.check(len(candidates) == n, "f cases: attribute candidates")
+    cell = np.arange(n) // fcases.COUNT  # records ordered by decade, class
+    ck.check(np.array_equal(g["class"], (cell % nc).astype(np.int32)),
+             "f cases: classes not in the documented order")
+    decades = np.array([fcases.decade(c) for c in g["COND"]])
+    ck.check(np.array_equal(decades, cell // nc),
+             "f cases: COND not in the decade of its record")
+
+    def inputs(c):
+        return (list(g["r12"][c]), list(g["q1"][c]), list(g["q2"][c]),
+                float(g["lambda"][c]))
+    bad = 0
+    for c in range(n):
+        r, q1, q2, lam = inputs(c)
+        ok = (fcases.positive_definite(fcases.frac6(q1))
+              and fcases.positive_definite(fcases.frac6(q2))
+              and fcases.positive_definite(
+                  fcases.q_lambda_exact(q1, q2, lam))
+              and same([fcases.f_exact(r, q1, q2, lam)], [g["F"][c]]))
+        bad += not ck.check(ok, "f case %d: F %r or positive definiteness"
+                            % (c, g["F"][c]))
+    print("  f cases: all %d F recomputed in exact rationals, forms and "
+          "Q(lambda) positive definite: %d mismatches" % (n, bad))
+    bad = 0
+    for c in sorted(rng.choice(n, N_F_CASES_MP, replace=False)):
+        r, q1, q2, lam = inputs(c)
+        ok = same([fcases.f_mp(r, q1, q2, lam), fcases.cond_mp(q1, q2, lam)],
+                  [g["F"][c], g["COND"][c]])
+        bad += not ck.check(ok, "f case %d: mpmath F or COND differs" % c)
+    print("  f cases: F and COND of %d random cases recomputed with mpmath: "
+          "%d mismatches" % (N_F_CASES_MP, bad))
+    bad = 0
+    for c in sorted(rng.choice(n, N_F_CASES_REGEN, replace=False)):
+        q1, q2, lam, r, _ = fcases.candidate(int(cell[c] // nc),
+                                             int(cell[c] % nc), candidates[c])
+        ok = same(r + q1 + q2 + [lam], list(g["r12"][c]) + list(g["q1"][c])
+                  + list(g["q2"][c]) + [g["lambda"][c]])
+        bad += not ck.check(ok, "f case %d: regenerated from candidate %d "
+                            "differs" % (c, candidates[c]))
+    print("  f cases: %d random cases regenerated from the seed: %d "
+          "mismatches" % (N_F_CASES_REGEN, bad))
 
 
 if __name__ == "__main__":

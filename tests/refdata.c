@@ -214,3 +214,74 @@ void hard_pairs_clear(HardPairs *h) {
   g_strfreev(h->class_names);
   memset(h, 0, sizeof *h);
 }
+
+const char *f_cases_path(void) { return g_getenv("PW85_F_CASES"); }
+
+gboolean f_cases_load(const char *path, FCases *c, GError **error) {
+  memset(c, 0, sizeof *c);
+  if (path == NULL) {
+    g_set_error(error, REF_DATA_ERROR, 3, "PW85_F_CASES is not set");
+    return FALSE;
+  }
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
+    return FALSE;
+  }
+  hsize_t dims[2];
+  int rank = -1;
+  H5T_class_t type_class;
+  size_t type_size = 0;
+  char *names = NULL;
+  gboolean ok =
+      read_dataset(file, "/F", 1, dims, &c->F, error) &&
+      (c->count = dims[0], TRUE) &&
+      read_dataset(file, "/lambda", 1, dims, &c->lambda, error) &&
+      expect(dims[0] == c->count, "lambda", error) &&
+      read_dataset(file, "/COND", 1, dims, &c->COND, error) &&
+      expect(dims[0] == c->count, "COND", error) &&
+      read_dataset(file, "/r12", 2, dims, &c->r12, error) &&
+      expect(dims[0] == c->count && dims[1] == 3, "r12", error) &&
+      read_dataset(file, "/q1", 2, dims, &c->q1, error) &&
+      expect(dims[0] == c->count && dims[1] == 6, "q1", error) &&
+      read_dataset(file, "/q2", 2, dims, &c->q2, error) &&
+      expect(dims[0] == c->count && dims[1] == 6, "q2", error) &&
+      expect(H5LTget_dataset_ndims(file, "/class", &rank) >= 0 && rank == 1 &&
+                 H5LTget_dataset_info(file, "/class", dims, NULL, NULL) >= 0 &&
+                 dims[0] == c->count,
+             "class", error) &&
+      (c->klass = g_new(int, c->count), TRUE) &&
+      expect(H5LTread_dataset_int(file, "/class", c->klass) >= 0, "class",
+             error) &&
+      expect(H5LTget_attribute_info(file, "/", "class_names", dims,
+                                    &type_class, &type_size) >= 0 &&
+                 type_class == H5T_STRING,
+             "attribute class_names", error) &&
+      (names = g_malloc0(type_size + 1), TRUE) &&
+      expect(H5LTget_attribute_string(file, "/", "class_names", names) >= 0,
+             "attribute class_names", error);
+  H5Fclose(file);
+  if (ok) {
+    c->class_names = g_strsplit(names, ",", -1);
+    c->num_classes = g_strv_length(c->class_names);
+    for (size_t i = 0; ok && i < c->count; i++)
+      ok = expect(c->klass[i] >= 0 && (size_t)c->klass[i] < c->num_classes,
+                  "class out of range", error);
+  }
+  g_free(names);
+  if (!ok) f_cases_clear(c);
+  return ok;
+}
+
+void f_cases_clear(FCases *c) {
+  g_free(c->r12);
+  g_free(c->q1);
+  g_free(c->q2);
+  g_free(c->lambda);
+  g_free(c->F);
+  g_free(c->COND);
+  g_free(c->klass);
+  g_strfreev(c->class_names);
+  memset(c, 0, sizeof *c);
+}

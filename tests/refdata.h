@@ -69,6 +69,26 @@ const char *hard_pairs_path(void);
 gboolean hard_pairs_load(const char *path, HardPairs *hard, GError **error);
 void hard_pairs_clear(HardPairs *hard);
 
+/* The accuracy cases of f of data/pw85_f_cases.h5 (data/README.md): case
+ * n is lambda[n], r12[n][3], q1[n][6], q2[n][6], with F[n] = f(λ)
+ * correctly rounded, COND[n] = cond₂(Q(λ)) at high precision, and its
+ * class klass[n] (an index into class_names, read from the file attribute
+ * class_names). */
+typedef struct {
+  size_t count;
+  double *r12, *q1, *q2, *lambda, *F, *COND;
+  int *klass;          /* [count] */
+  gchar **class_names; /* NULL-terminated */
+  size_t num_classes;
+} FCases;
+
+/* The path of the f cases: the environment variable PW85_F_CASES, which
+ * meson sets. NULL when unset. */
+const char *f_cases_path(void);
+
+gboolean f_cases_load(const char *path, FCases *cases, GError **error);
+void f_cases_clear(FCases *cases);
+
 /* Index of F[i][j][k][l] and of MU2[i][j][k][m] / LAMBDA[i][j][k][m]. */
 static inline size_t ref_data_f_index(RefData const *d, size_t i, size_t j,
                                       size_t k, size_t l) {
