@@ -77,48 +77,6 @@ PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
   return two_sum(acc.sum, acc.err);
 }
 
-// Q = L·D·Lᵀ in double-double (the algorithm of ldl_decomp()), for Q(λ)
-// too ill-conditioned for a double factorisation: its backward error is of
-// order κ(Q)·2⁻¹⁰⁴ relative instead of κ(Q)·ε.
-struct LdlDd {
-  dd l10, l20, l21;  // L = [[1, 0, 0], [l10, 1, 0], [l20, l21, 1]]
-  dd d[dim];         // D = diag(d0, d1, d2)
-};
-
-// Returns false when a pivot is not > 0.
-PW85_INLINE bool ldl_decomp_dd(dd const a[sym], LdlDd *f) noexcept {
-  f->d[0] = a[0];
-  if (!(a[0].hi > 0.0)) return false;
-  f->l10 = dd_div(a[1], a[0]);
-  f->l20 = dd_div(a[2], a[0]);
-  f->d[1] = dd_sub(a[3], dd_mul(f->l10, a[1]));
-  if (!(f->d[1].hi > 0.0)) return false;
-  dd const e = dd_sub(a[4], dd_mul(f->l10, a[2]));  // L21·d1
-  f->l21 = dd_div(e, f->d[1]);
-  f->d[2] = dd_sub(dd_sub(a[5], dd_mul(f->l20, a[2])), dd_mul(f->l21, e));
-  return f->d[2].hi > 0.0;
-}
-
-// rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ (a sum of non-negative terms) and s = Q⁻¹·r rounded
-// to double, from z = L⁻¹·r, all in double-double.
-PW85_INLINE dd ldl_solve_quad_dd(LdlDd const &f, double const r[dim],
-                                 double s[dim]) noexcept {
-  dd const z0{r[0], 0.0};
-  dd const z1 = dd_sub(dd{r[1], 0.0}, dd_mul(f.l10, z0));
-  dd const z2 =
-      dd_sub(dd_sub(dd{r[2], 0.0}, dd_mul(f.l20, z0)), dd_mul(f.l21, z1));
-  dd const y0 = dd_div(z0, f.d[0]);
-  dd const y1 = dd_div(z1, f.d[1]);
-  dd const y2 = dd_div(z2, f.d[2]);
-  dd const x2 = y2;
-  dd const x1 = dd_sub(y1, dd_mul(f.l21, x2));
-  dd const x0 = dd_sub(dd_sub(y0, dd_mul(f.l10, x1)), dd_mul(f.l20, x2));
-  s[0] = dd_round(x0);
-  s[1] = dd_round(x1);
-  s[2] = dd_round(x2);
-  return dd_add(dd_add(dd_mul(z0, y0), dd_mul(z1, y1)), dd_mul(z2, y2));
-}
-
 // The compensated evaluation at λ. With s = Q(λ)⁻¹·r in plain double,
 // e = Q⁻¹r − s its error (relative size cond·ε) and the residual
 // ρ = r − Q(λ)·s (compensated_residual(), Q(λ) kept as hi + lo):
@@ -133,6 +91,20 @@ struct Compensated {
   double p2;    // P2, when asked for
 };
 
+// The evaluation from Q(λ) = hi + lo factorised in double-double, for Q(λ)
+// too ill-conditioned for the double factors (compensated_dd.cpp; out of
+// line, as it is rare and large). Returns false when that factorisation
+// fails (a pivot not > 0); *out is then unchanged.
+// Q(λ) is passed by value, so that the callers' hi and lo, whose address
+// is then never taken, stay in registers on the common path.
+struct QDd {
+  double hi[sym];
+  double lo[sym];
+};
+bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
+                    double const q2[sym], QDd q, bool with_p,
+                    Compensated *out) noexcept;
+
 // The evaluation from Q(λ) as hi + lo and its plain factors and solution.
 // WithP: also P1 and P2.
 template <bool WithP>
@@ -142,37 +114,35 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
                                   LdlSolution const &plain,
                                   Compensated *out) noexcept {
   Ldl const &fac = plain.fac;
-  double s[dim], rho[dim], ds[dim];
+  double s[dim], rho[dim], ds[dim] = {0.0, 0.0, 0.0};
   double const cond = ldl_cond_bound(hi, fac);
-  if (cond > factor_dd_cond) {
-    // Beyond what refinement from the double factors repairs: Q(λ)
-    // factorised in double-double; f = λ(1−λ)·rᵀQ⁻¹r from its factors,
-    // Pᵢ from s rounded to double (first order in its error, which is
-    // κ·2⁻¹⁰⁴ relative, far below what the steps on ω need).
-    dd a[sym];
+  if (__builtin_expect(cond > factor_dd_cond, 0)) {
+    QDd q;
     PW85_UNROLL
-    for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
-    LdlDd fdd;
-    if (ldl_decomp_dd(a, &fdd)) {
-      dd const quad = ldl_solve_quad_dd(fdd, r, s);
-      dd const value = dd_mul(dd_mul(two_sum(1.0, -lambda), lambda), quad);
-      out->f = value.hi;
-      out->f_lo = value.lo;
-      if (WithP) {
-        out->p1 = quad_form_dd(q1, s);
-        out->p2 = quad_form_dd(q2, s);
-      }
-      return;
-    }
+    for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];
+    if (compensated_dd(lambda, r, q1, q2, q, WithP, out)) return;
   }
   PW85_UNROLL
   for (int i = 0; i < dim; ++i) s[i] = plain.s[i];
   compensated_residual(hi, lo, r, s, rho);
   bool const refine = cond > refine_cond;
-  if (refine || WithP) {
+  // The refined s is ds + ds_lo; ds_lo is kept where it may matter, when
+  // Q(λ) is ill-conditioned (below p_carry_cond, Pᵢ from ds alone moves λ
+  // by less than the tolerances of the tests measure).
+  bool const carry = cond > p_carry_cond;
+  double ds_lo[dim];
+  if (carry) {
     ldl_solve(fac, rho, ds);
     PW85_UNROLL
-    for (int i = 0; i < dim; ++i) ds[i] += s[i];  // the refined s
+    for (int i = 0; i < dim; ++i) {
+      dd const t = two_sum(s[i], ds[i]);
+      ds[i] = t.hi;
+      ds_lo[i] = t.lo;
+    }
+  } else if (refine || WithP) {
+    ldl_solve(fac, rho, ds);
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) ds[i] += s[i];
   }
   if (refine) {
     PW85_UNROLL
@@ -187,6 +157,16 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   if (WithP) {
     out->p1 = quad_form_dd(q1, ds);
     out->p2 = quad_form_dd(q2, ds);
+    if (carry) {
+      // Pᵢ = sᵀQᵢs for s = ds + ds_lo, to second order in ds_lo: ds
+      // rounded alone would leave Pᵢ off by up to ε·√cond(Qᵢ) relative,
+      // and λ by as much.
+      double t1[dim], t2[dim];
+      sym_mul(q1, ds, t1);
+      sym_mul(q2, ds, t2);
+      out->p1 += 2.0 * dot(t1, ds_lo);
+      out->p2 += 2.0 * dot(t2, ds_lo);
+    }
   }
 }
 

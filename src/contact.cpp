@@ -44,7 +44,12 @@ Status solve(Problem const &p, double out[2]) noexcept {
   if (!newton.converged() || newton.lambda < brent.lower - lambda_atol ||
       newton.lambda > brent.upper + lambda_atol) {
     newton = newton_on_omega<Fast>(p, brent.estimate, restart_newton_iter);
-    if (!newton.converged()) newton.lambda = brent.estimate;
+    if (!newton.converged()) {
+      // The finish starts from Brent's estimate, where no slope is known
+      // (the last ω′ was computed elsewhere).
+      newton.lambda = brent.estimate;
+      newton.last.domega = NAN;
+    }
   }
 
   // 7. Compensated finish, from Newton's last point (whose factors it
@@ -82,6 +87,7 @@ Status contact_function(double const r[dim], double const q1[sym],
     out[1] = 0.5;
     return Status::success;
   }
+  quads(&p);
   orient(&p);
   // 3.–7.
   double res[2];

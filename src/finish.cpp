@@ -87,24 +87,11 @@ bool finish(Problem const &p, FinishStart const &start,
       double const secant = (omega - prev_omega) / (lambda - prev_lambda);
       if (secant > 0.0) domega = secant;
     }
-    if (!(domega > 0.0)) break;
-    double const step = omega / domega;
+    // Newton's step (NaN without a usable slope).
+    double const step = domega > 0.0 ? omega / domega : NAN;
     double next = lambda - step;
-    if (!(next > 0.0 && next < 1.0)) {
-      // Newton's step leaves [0, 1] (a start far from a root near an end):
-      // a step into the bracket instead, by a factor 2^10 towards the end
-      // it lies at, or to the middle of a bracket away from both ends.
-      next = lo == 0.0 ? hi * 0x1p-10
-                       : (hi == 1.0 ? 1.0 - (1.0 - lo) * 0x1p-10
-                                    : 0.5 * (lo + hi));
-      if (!(next > lo && next < hi)) break;
-      prev_lambda = lambda;
-      prev_omega = omega;
-      lambda = next;
-      plain = nullptr;
-      continue;
-    }
-    if (std::fabs(step) <= finish_accept * std::min(lambda, 1.0 - lambda)) {
+    if (next > 0.0 && next < 1.0 &&
+        std::fabs(step) <= finish_accept * std::min(lambda, 1.0 - lambda)) {
       double const gain = model_gain(lambda, a, omega, step);
       if (gain >= 0.0 && gain <= max_model_gain * a.f) {
         out->lambda = next;
@@ -112,6 +99,16 @@ bool finish(Problem const &p, FinishStart const &start,
         out->mu2 = std::max(a.f + (a.f_lo + gain), best.f);
         return true;
       }
+    }
+    if (!(next > lo && next < hi)) {
+      // Newton's step leaves the bracket (a start far from the root, with
+      // the slope of a plain ω′ that rounding made meaningless): a step
+      // into the bracket instead, by a factor 2^10 towards the end of
+      // [0, 1] it lies at, or to its middle away from both ends.
+      next = lo == 0.0 ? hi * 0x1p-10
+                       : (hi == 1.0 ? 1.0 - (1.0 - lo) * 0x1p-10
+                                    : 0.5 * (lo + hi));
+      if (!(next > lo && next < hi)) break;
     }
     prev_lambda = lambda;
     prev_omega = omega;

@@ -11,7 +11,8 @@ namespace pw85::detail {
 
 struct FinishStart {
   double lambda;  // where the compensated steps start
-  double domega;  // the plain ω′ there (or nearby): the first slope
+  double domega;  // the plain ω′ there (or nearby): the first slope; NaN
+                  // if none is known
   // The plain factors and solution at lambda, when the caller has them
   // (Newton's last point), else nullptr.
   LdlSolution const *plain;

@@ -123,6 +123,7 @@ Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
   double const one = pow2(-p.shift);
   Decision d = sphere_filter(p, one);
   if (d == Decision::undecided) {
+    quads(&p);
     Filtering const s{p,
                       one,
                       ldl_cond_bound(p.q1, p.f1),

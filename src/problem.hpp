@@ -23,7 +23,13 @@ struct Problem : Scaled {
   bool swapped;
 };
 
-// Puts the problem in its canonical orientation, the one whose sphere-model
+// aᵢ = rᵀ·Qᵢ⁻¹·r from the factors.
+inline void quads(Problem *p) noexcept {
+  p->a1 = ldl_quad_inverse(p->f1, p->r);
+  p->a2 = ldl_quad_inverse(p->f2, p->r);
+}
+
+// After quads(): puts the problem in its canonical orientation, the one whose sphere-model
 // maximiser (eq. (5.9)) is at most ½: a1 ≥ a2, ties broken by the stored
 // entries. Both argument orders of the input, (r, Q1, Q2) and (−r, Q2, Q1),
 // then give the same problem bit for bit (aᵢ and the rescaling are even in
@@ -60,7 +66,8 @@ Status why_unprepared(double const q1[sym], double const q2[sym]) noexcept;
 
 // rescale(), then the factorisations of Q1 and Q2, which decide their
 // definiteness (the rule of checks.hpp, applied to Q scaled by a power of
-// two), and aᵢ; the problem is not yet oriented (orient()). Input: finite.
+// two); aᵢ are not yet computed (quads()), nor the problem oriented
+// (orient()). Input: finite.
 // Returns Status::success, or the status of why_unprepared(). Inline: it
 // runs on every call.
 inline Status prepare(double const r[dim], double const q1[sym],
@@ -68,8 +75,6 @@ inline Status prepare(double const r[dim], double const q1[sym],
   if (!(rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
         ldl_decomp(p->q2, &p->f2)))
     return why_unprepared(q1, q2);
-  p->a1 = ldl_quad_inverse(p->f1, p->r);
-  p->a2 = ldl_quad_inverse(p->f2, p->r);
   p->swapped = false;
   return Status::success;
 }

@@ -90,6 +90,11 @@ constexpr double refine_cond = 1e6;
 // errors of order κ̄²(κ̄·ε)⁴, above an ulp from about κ̄ = 1e12 (measured:
 // 45 of 158 random f not correctly rounded at cond 1e12–1e13).
 constexpr double factor_dd_cond = 1e10;
+// Beyond κ̄(Q(λ)) = p_carry_cond, Pᵢ (for the compensated ω) are formed
+// from the refined s as a double-double, not rounded to double: rounded,
+// they are off by up to ε·√cond(Qᵢ) relative, which moved λ by up to
+// 4e-9·min(λ, 1 − λ) on the hard set (cond(Qᵢ) to 1e16).
+constexpr double p_carry_cond = 1e7;
 
 }  // namespace pw85::detail
 

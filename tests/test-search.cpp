@@ -41,7 +41,8 @@ core::Problem problem(size_t n) {
   g_assert_true(core::prepare(pairs.r12 + 3 * n, pairs.q1 + 6 * n,
                               pairs.q2 + 6 * n, &p) == core::Status::success);
   g_assert_false(p.r_is_zero);
-  core::orient(&p);  // as the contact function does
+  core::quads(&p);  // as the contact function does
+  core::orient(&p);
   return p;
 }
 
