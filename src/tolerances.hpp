@@ -79,8 +79,12 @@ constexpr int finish_iter = 40;
 // taken and the iteration stops.
 constexpr double finish_accept = 1e-7;
 // The quadratic model's gain ½·f′·Δλ is O(h²)·f ≤ 1e-14·f after such a
-// step; a gain above max_model_gain·f (or negative) means the model does
-// not hold there, and the largest f evaluated is returned instead.
+// step for a smooth maximum; a gain above max_model_gain·f (or negative)
+// means the model does not hold there (a sharp maximum: end-on needles,
+// nearly parallel needles or discs), and the iteration goes on. The rule
+// is thus one on μ²: the step is the last only when the error left in
+// μ² = f + gain, of order gain·h ≤ max_model_gain·finish_accept·f =
+// 1e-17·f, is below a tenth of an ulp of μ².
 constexpr double max_model_gain = 1e-10;
 // The compensated f is refined once (s += Q⁻¹ρ) when κ̄(Q(λ)) exceeds this:
 // below, its error O((κ̄·ε)²) is under an ulp already.
