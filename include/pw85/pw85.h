@@ -176,14 +176,19 @@ PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
  * Shaped like GSL's gsl_function, as in pw85 1.0 (a double, then a
  * pointer to the parameters); GSL takes `void *params`, so pass it to GSL
  * through a wrapper function. Evaluated with compensated (double-double)
- * arithmetic: accurate to about one ulp while cond(Q(λ)) stays below ~1e10
- * (every value of the reference dataset is correctly rounded). No
+ * arithmetic, Q(λ) factorised in double-double where the bound
+ * tr(Q)·tr(Q⁻¹) of cond(Q(λ)) exceeds 1e10. Measured: every value of the reference dataset is correctly
+ * rounded; on the 4800 cases of data/pw85_f_cases.h5 (300 per decade of
+ * cond(Q(λ)) from 1 to 1e16), every value with cond(Q(λ)) < 1e14 is
+ * correctly rounded, and every value up to 1e16 within one ulp (1 of 300
+ * one ulp off in [1e14, 1e15), 3 of 300 in [1e15, 1e16)). Beyond 1e16 the
+ * error grows with cond(Q(λ)) (not measured). No
  * rescaling: intermediate values must stay within the range of a double
  * (|r12|² and the entries of Q1, Q2 between about 1e-150 and 1e150).
  * @param[in] lambda λ, normally in [0, 1].
  * @param[in] params PW85_DIM + 2·PW85_SYM = 15 doubles: r12[3], then
  *                   q1[6], then q2[6].
- * @return −f(λ), a value ≤ 0 for λ in [0, 1] (−0 where rounding, with
+ * @return −f(λ), never positive for λ in [0, 1] (−0 where rounding, with
  *         cond(Q(λ)) beyond ~1e14, would make f negative); NaN if params
  *         is NULL, if lambda or an entry of params is not finite, or if
  *         Q(λ) is not positive definite to the resolution of its
@@ -217,21 +222,33 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  * μ² < 1 means they overlap, μ² > 1 that they are disjoint. μ² is
  * dimensionless and invariant under r12 → t·r12, Q → t²·Q; inputs are
  * rescaled internally by powers of two, so any finite input is accepted.
- * μ² is evaluated with compensated arithmetic and is correctly rounded on
- * the reference dataset and on general pairs of aspect ratios to 1e4; λ is
- * accurate to ~1e-13 or better there. Accuracy holds while the condition
- * numbers of Q1 and Q2 stay below ~1e16 (aspect ratios to 1e8); beyond,
- * the answer is still finite, ≥ |r12|²/(√tr Q1 + √tr Q2)² > 0, with the
- * statuses below, but may be inaccurate.
+ * Documented domain: cond(Q1), cond(Q2) < 1e16 (aspect ratios to 1e8).
+ * There μ² is evaluated with compensated arithmetic and is correctly
+ * rounded on every pair of the tests: the reference dataset, the general
+ * pairs (aspect ratios to 1e4), the finish pairs and the hard set
+ * (data/pw85_hard_pairs.h5: 3103 pairs with cond to just below 1e16,
+ * needles and discs side by side and end to end, λ* down to 2e-20 from 0
+ * or 1, |r12| down to 1e-100 of the sizes, |μ² − 1| down to 1e-15). λ is
+ * within 3e-13 of λ* on the first two, 1.2e-11 on the finish pairs, and
+ * within 6e-10·min(λ*, 1 − λ*) on the hard set, well inside the window
+ * where f(λ) is within an ulp of μ² (measured worst errors).
+ * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
+ * μ² bit for bit and λ → 1 − λ (rounded), for any input. Beyond the
+ * domain, the answer is still finite, ≥ |r12|²/(√tr Q1 + √tr Q2)² > 0,
+ * with the statuses below, but may be inaccurate.
  *
  * The method, step by step in the optimisation chapter of the docs: check
  * the input; rescale it by powers of two; start from the maximiser for two
  * spheres; take safeguarded Newton steps on ω(λ) = λ·ρ − (1−λ),
  * ρ = √(P2/P1), Pi = sᵀ·Qi·s, s = Q(λ)⁻¹·r12, which has the sign of
  * g = μ2² − μ1²; certify the maximum with GSL's Brent minimiser on a narrow
- * bracket verified to enclose it; finish in compensated (double-double)
- * arithmetic, so that μ² is correctly rounded; never return μ² below the
- * bound above; scale back.
+ * bracket verified to enclose it; finish with Newton steps on ω in
+ * compensated (double-double) arithmetic, safeguarded by a bracket, so
+ * that μ² is correctly rounded; never return μ² below the bound above;
+ * scale back. The search runs in a canonical orientation (Q1 and Q2
+ * exchanged, and λ → 1 − λ, when the two-sphere maximiser is above ½;
+ * ties broken by the stored entries),
+ * hence the swapping symmetry, and a λ* near 1 keeps its digits in 1 − λ*.
  *
  * @param[in] r12 the centre-to-centre vector c2 − c1 (any finite vector;
  *                r12 = 0 gives μ² = 0, λ = ½).
@@ -270,9 +287,14 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  * @param[out] result −1 if the ellipsoids overlap (μ² < 1), +1 if they are
  *             disjoint (μ² > 1), 0 if they are tangent to the resolution of
  *             double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON (4 ulps of 1).
- *             Coincident centres overlap. Certified while the condition
- *             numbers of Q1 and Q2 stay below ~1e16 (aspect ratios to
- *             1e8), like the accuracy of pw85_contact_function().
+ *             Coincident centres overlap. Inside the domain of
+ *             pw85_contact_function() (cond(Q1), cond(Q2) < 1e16), the
+ *             answer agrees with the correctly rounded μ² on every pair
+ *             of the tests outside that 4-ulp band (reference data,
+ *             general, finish and hard pairs, near tangency with cond up
+ *             to 1e16 included). Swapping the ellipsoids gives the same
+ *             answer. Beyond the domain: the statuses below; the answer
+ *             is not certified.
  * @return the statuses of pw85_contact_function(), with the same meaning;
  *         *result is written on PW85_SUCCESS only (also when μ² would
  *         overflow: such ellipsoids are disjoint, *result = +1).
