@@ -177,14 +177,15 @@ PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
  * pointer to the parameters); GSL takes `void *params`, so pass it to GSL
  * through a wrapper function. Evaluated with compensated (double-double)
  * arithmetic, Q(λ) factorised in double-double where the bound
- * tr(Q)·tr(Q⁻¹) of cond(Q(λ)) exceeds 1e10. Measured: every value of the reference dataset is correctly
- * rounded; on the 4800 cases of data/pw85_f_cases.h5 (300 per decade of
- * cond(Q(λ)) from 1 to 1e16), every value with cond(Q(λ)) < 1e14 is
- * correctly rounded, and every value up to 1e16 within one ulp (1 of 300
- * one ulp off in [1e14, 1e15), 3 of 300 in [1e15, 1e16)). Beyond 1e16 the
- * error grows with cond(Q(λ)) (not measured). No
- * rescaling: intermediate values must stay within the range of a double
- * (|r12|² and the entries of Q1, Q2 between about 1e-150 and 1e150).
+ * tr(Q)·tr(Q⁻¹) of cond(Q(λ)) exceeds 1e10. Measured: every value of the
+ * reference dataset is correctly rounded; on the 4800 cases of
+ * data/pw85_f_cases.h5 (300 per decade of cond(Q(λ)) from 1 to 1e16),
+ * every value with cond(Q(λ)) < 1e14 is correctly rounded, and every value
+ * up to 1e16 within one ulp (1 of 300 one ulp off in [1e14, 1e15), 3 of
+ * 300 in [1e15, 1e16)). Beyond 1e16 the error grows with cond(Q(λ)) (not
+ * measured). No rescaling: intermediate values must stay within the range
+ * of a double (|r12|² and the entries of Q1, Q2 between about 1e-150 and
+ * 1e150).
  * @param[in] lambda λ, normally in [0, 1].
  * @param[in] params PW85_DIM + 2·PW85_SYM = 15 doubles: r12[3], then
  *                   q1[6], then q2[6].
@@ -247,8 +248,8 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  * that μ² is correctly rounded; never return μ² below the bound above;
  * scale back. The search runs in a canonical orientation (Q1 and Q2
  * exchanged, and λ → 1 − λ, when the two-sphere maximiser is above ½;
- * ties broken by the stored entries),
- * hence the swapping symmetry, and a λ* near 1 keeps its digits in 1 − λ*.
+ * ties broken by the stored entries), hence the swapping symmetry, and a
+ * λ* near 1 keeps its digits in 1 − λ*.
  *
  * @param[in] r12 the centre-to-centre vector c2 − c1 (any finite vector;
  *                r12 = 0 gives μ² = 0, λ = ½).
