@@ -294,6 +294,24 @@ static void test_one_definiteness_rule(void) {
         pw85_legacy_contact_function2(r_ok, q2_ok, q, out) == PW85_ENOTPOSDEF;
     pw85__cholesky_decomp(q, l);
     gboolean const chol = isnan(l[0]);
+    if (!chol) {
+      /* The factor of an accepted form reproduces it: Cholesky is backward
+       * stable, |A − L·Lᵀ| ≤ 4ε|L||Lᵀ| ≈ 4ε max|A| (Higham, Thm 10.3); the
+       * fallback from the rule's factors adds a few roundings. 16ε. */
+      double const L[3][3] = {{l[0], 0., 0.}, {l[1], l[3], 0.},
+                              {l[2], l[4], l[5]}};
+      double worst = 0., size = 0.;
+      for (int k = 0; k < PW85_SYM; k++) size = fmax(size, fabs(q[k]));
+      for (int i = 0, k = 0; i < 3; i++)
+        for (int j = i; j < 3; j++, k++) {
+          double const a = L[i][0] * L[j][0] + L[i][1] * L[j][1] +
+                           L[i][2] * L[j][2];
+          worst = fmax(worst, fabs(a - q[k]));
+        }
+      if (!(worst <= 16. * DBL_EPSILON * size))
+        test_mismatch("form %d: |A - L L^T| = %.3g of max|A| %.3g", n, worst,
+                      size);
+    }
     if (main1) rejected++;
     if (main1 != main2 || main1 != leg1 || main1 != leg2 || main1 != chol) {
       if (disagree++ < 5)
