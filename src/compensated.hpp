@@ -170,8 +170,24 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   }
 }
 
+// Where Q(λ) rounded to double does not factorise (a form near the
+// resolution of a double, made indefinite by the rounding of Q(λ)), hi + lo
+// may still be definite: the double-double factorisation decides.
+PW85_INLINE bool factorise_dd_instead(double lambda, double const r[dim],
+                                      double const q1[sym],
+                                      double const q2[sym],
+                                      double const hi[sym],
+                                      double const lo[sym], bool with_p,
+                                      Compensated *out) noexcept {
+  QDd q;
+  PW85_UNROLL
+  for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];
+  return compensated_dd(lambda, r, q1, q2, q, with_p, out);
+}
+
 // The compensated evaluation at λ from scratch. Returns false when Q(λ)
-// does not factorise. fast: see ldl_decomp_q().
+// does not factorise, in double nor in double-double. fast: see
+// ldl_decomp_q().
 template <bool WithP>
 PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
                                       double const q1[sym],
@@ -180,7 +196,8 @@ PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
   double hi[sym], lo[sym];
   combine_dd(lambda, q1, q2, hi, lo);
   LdlSolution plain;
-  if (!ldl_decomp_q(hi, &plain.fac, fast)) return false;
+  if (!ldl_decomp_q(hi, &plain.fac, fast))
+    return factorise_dd_instead(lambda, r, q1, q2, hi, lo, WithP, out);
   ldl_solve(plain.fac, r, plain.s);
   compensated_from<WithP>(lambda, r, q1, q2, hi, lo, plain, out);
   return true;

@@ -39,7 +39,8 @@ PW85_INLINE bool evaluate_at(double lambda, Problem const &p,
   combine_dd(lambda, p.q1, p.q2, hi, lo);
   LdlSolution fresh;
   if (plain == nullptr) {
-    if (!ldl_decomp_q(hi, &fresh.fac, p.moderate)) return false;
+    if (!ldl_decomp_q(hi, &fresh.fac, p.moderate))
+      return factorise_dd_instead(lambda, p.r, p.q1, p.q2, hi, lo, true, a);
     ldl_solve(fresh.fac, p.r, fresh.s);
     plain = &fresh;
   }

@@ -387,6 +387,38 @@ static void test_f_neg_sign(void) {
   g_rand_free(rng);
 }
 
+/* Found by the fuzz target fuzz-contact-structured (issue 14): Q2's entries
+ * are about 2^−55 of Q1's (cond(Q1) 8.7e15, inside the documented domain),
+ * so Q(λ) rounded to double is not definite near λ* and μ² fell to the
+ * floor, 0.998 instead of 2.5e10. The reference is the correctly rounded μ²
+ * and λ* of the exact rational route of data/gen_ref_data.py (contact()),
+ * agreeing with its mpmath route at 100 digits. Both argument orders. */
+static void test_fuzz_regressions(void) {
+  double const r[PW85_DIM] = {0x1.909bca2077721p+66, -0x1.1df82d0ff2c15p+52,
+                              -0x1.1df82d0ff2c15p+52};
+  double const q1[PW85_SYM] = {0x1.fb356c26ea2abp+120, 0x1.b82a8402b8b5p+126,
+                               -0x1.5f7e9cea1d2c6p+126, 0x1.7f78e00e06b43p+132,
+                               -0x1.3238c35894b05p+132, 0x1.e91118248dba9p+131};
+  double const q2[PW85_SYM] = {0x1.72eb5ecf2f6c3p+76, 0x1.15aa70aca0f6dp+77,
+                               -0x1.a3793ecea37a4p+75, 0x1.a53584d8bf977p+77,
+                               -0x1.41fa3f2d319e5p+76, 0x1.f3166e3d458ffp+74};
+  double const mu2 = 0x1.7a69905f0f4e4p+34, lambda = 0x1.c49a9978be5dap-1;
+  double const minus_r[PW85_DIM] = {-r[0], -r[1], -r[2]};
+  double out[2];
+  g_assert_cmpint(pw85_contact_function(r, q1, q2, out), ==, PW85_SUCCESS);
+  if (out[0] != mu2 || !(fabs(out[1] - lambda) <= 1e-12))
+    test_mismatch("mu^2 %a, lambda %a; expected %a, %a", out[0], out[1], mu2,
+                  lambda);
+  g_assert_cmpint(pw85_contact_function(minus_r, q2, q1, out), ==,
+                  PW85_SUCCESS);
+  if (out[0] != mu2 || !(fabs(out[1] - (1. - lambda)) <= 1e-12))
+    test_mismatch("swapped: mu^2 %a, lambda %a; expected %a, %a", out[0],
+                  out[1], mu2, 1. - lambda);
+  int result = 0;
+  g_assert_cmpint(pw85_overlap(r, q1, q2, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 1);
+}
+
 /* The handler installed by these tests does fail a test that reaches it:
  * provoke GSL's error in a subprocess, on purpose. */
 static void test_gsl_handler_detects(void) {
@@ -448,6 +480,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/contract/overlap/random-pairs", test_random_overlap);
   g_test_add_func("/pw85/contract/f_neg", test_f_neg_contract);
   g_test_add_func("/pw85/contract/f_neg/sign", test_f_neg_sign);
+  g_test_add_func("/pw85/contract/contact_function/fuzz-regressions",
+                  test_fuzz_regressions);
   g_test_add_func("/pw85/contract/strerror", test_strerror);
   g_test_add_func("/pw85/contract/version", test_version);
   g_test_add_func("/pw85/contract/gsl-handler-detects",
