@@ -117,9 +117,28 @@ void check_contact(const double r12[3], const double q1[6],
   double sw[2];
   int const st3 = pw85_contact_function(rm, q2, q1, sw);
   CHECK_IN(st3 == PW85_SUCCESS, "swapped: status %d", st3);
-  CHECK_IN(same_bits(sw[0], mu2), "swapped: mu2 %a, not %a", sw[0], mu2);
-  CHECK_IN(std::fabs(sw[1] - (1 - lam)) <= 4 * eps,
-           "swapped: lambda %a, not 1 - %a", sw[1], lam);
+  // Bit for bit, and λ within 4 ulps of 1, where the internal rescaling
+  // by powers of two cannot push an entry out of the normal range (every
+  // non-zero entry between 2^-500 and 2^500) and μ² is normal. Beyond, the
+  // header promises no rounding (μ² "may round to a subnormal") and λ to
+  // ~1e-13: a subnormal μ² may differ by one unit of DBL_TRUE_MIN, λ by
+  // 1e-12 (fuzz-contact-raw met 20ε at a dynamic range of 2^2000).
+  bool tame = mu2 >= DBL_MIN;
+  for (int i = 0; i < 15; ++i) {
+    double const x = i < 3 ? r12[i] : i < 9 ? q1[i - 3] : q2[i - 9];
+    tame = tame && (x == 0 || (std::fabs(x) >= 0x1p-500 &&
+                               std::fabs(x) <= 0x1p500));
+  }
+  if (tame) {
+    CHECK_IN(same_bits(sw[0], mu2), "swapped: mu2 %a, not %a", sw[0], mu2);
+    CHECK_IN(std::fabs(sw[1] - (1 - lam)) <= 4 * eps,
+             "swapped: lambda %a, not 1 - %a", sw[1], lam);
+  } else {
+    CHECK_IN(std::fabs(sw[0] - mu2) <= 4 * eps * mu2 + DBL_TRUE_MIN,
+             "swapped: mu2 %a, not %a", sw[0], mu2);
+    CHECK_IN(std::fabs(sw[1] - (1 - lam)) <= 1e-12,
+             "swapped: lambda %a, not 1 - %a", sw[1], lam);
+  }
 
   // Every length times 2^k: mu2 and lambda unchanged, bit for bit.
   if (k == 0) return;
@@ -133,6 +152,7 @@ void check_contact(const double r12[3], const double q1[6],
   double sc[2];
   int const st4 = pw85_contact_function(rs, q1s, q2s, sc);
   CHECK_IN(st4 == PW85_SUCCESS, "scaled by 2^%d: status %d", k, st4);
+  if (!tame) return;
   CHECK_IN(same_bits(sc[0], mu2) && same_bits(sc[1], lam),
            "scaled by 2^%d: out {%a, %a}, not {%a, %a}", k, sc[0], sc[1], mu2,
            lam);
