@@ -14,3 +14,18 @@ meson test -C build --print-errorlogs
 ASAN_OPTIONS=halt_on_error=1:abort_on_error=1 \
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   meson test -C build-asan --print-errorlogs
+
+# ---- fuzz (issue 14, item 1) ------------------------------------------
+# When clang is present: the libFuzzer targets of tests/fuzz, built with
+# ASan and UBSan in build-fuzz/, each run for a short fixed number of
+# executions from a copy of the committed corpus (suite 'fuzz'). Long runs:
+# docs/testing.rst, "Fuzzing".
+if command -v clang >/dev/null 2>&1 && command -v clang++ >/dev/null 2>&1; then
+  [ -f build-fuzz/build.ninja ] ||
+    CC=clang CXX=clang++ meson setup build-fuzz -Dfuzz=enabled \
+      -Ddocs=disabled -Dpython=disabled -Dtests=enabled
+  meson test -C build-fuzz --suite fuzz --print-errorlogs
+else
+  echo "run-tests.sh: clang not found, fuzz targets not run"
+fi
+# ---- end fuzz ---------------------------------------------------------

@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The oracle of pw85_contact_function and pw85_overlap (include/pw85/pw85.h):
+// the documented contract on every input, and relations exact in
+// mathematics where the header promises accuracy (cond(Q1), cond(Q2) below
+// 1e16, bounded from above by fuzz::cond_bound). Shared by
+// fuzz-contact-raw and fuzz-contact-structured.
+#include "fuzz_common.h"
+
+namespace fuzz {
+namespace {
+
+const double eps = DBL_EPSILON;
+
+bool is_contact_status(int s) {
+  return s == PW85_SUCCESS || s == PW85_EDOM || s == PW85_ENOTPOSDEF ||
+         s == PW85_ERANGE || s == PW85_ENOMEM;
+}
+
+// x·2^e exactly, both x and the result normal or zero, or false.
+bool scale_exact(double x, int e, double *y) {
+  *y = std::ldexp(x, e);
+  if (x == 0) return true;
+  return std::isfinite(*y) && std::fabs(x) >= DBL_MIN &&
+         std::fabs(*y) >= DBL_MIN && std::ldexp(*y, -e) == x;
+}
+
+void print_input(const double r[3], const double q1[6], const double q2[6]) {
+  std::fprintf(stderr, "r12 = {%a, %a, %a}\n", r[0], r[1], r[2]);
+  std::fprintf(stderr, "q1 = {%a, %a, %a, %a, %a, %a}\n", q1[0], q1[1], q1[2],
+               q1[3], q1[4], q1[5]);
+  std::fprintf(stderr, "q2 = {%a, %a, %a, %a, %a, %a}\n", q2[0], q2[1], q2[2],
+               q2[3], q2[4], q2[5]);
+}
+
+#define CHECK_IN(cond, ...)                                      \
+  do {                                                           \
+    if (!(cond)) print_input(r12, q1, q2);                       \
+    CHECK(cond, __VA_ARGS__);                                    \
+  } while (0)
+
+}  // namespace
+
+void check_contact(const double r12[3], const double q1[6],
+                   const double q2[6], int k) {
+  double out[2];
+  fill_sentinel(out, sizeof out);
+  int const st = pw85_contact_function(r12, q1, q2, out);
+  bool const finite_in =
+      all_finite(r12, 3) && all_finite(q1, 6) && all_finite(q2, 6);
+  bool const untouched = is_sentinel(out, sizeof out);
+  CHECK_IN(is_contact_status(st), "status %d", st);
+  CHECK_IN(finite_in == (st != PW85_EDOM), "status %d, finite %d", st,
+           finite_in);
+  bool const erange_inf = st == PW85_ERANGE && !untouched;
+  if (st != PW85_SUCCESS && st != PW85_ERANGE)
+    CHECK_IN(untouched, "status %d wrote out", st);
+  if (erange_inf)
+    CHECK_IN(out[0] == INFINITY && out[1] >= 0 && out[1] <= 1,
+             "ERANGE: out = {%a, %a}", out[0], out[1]);
+
+  // The rule of positive definiteness is the same in every function: the
+  // Cholesky factor is NaN exactly for the forms the contact function
+  // rejects.
+  if (finite_in) {
+    double l1[6], l2[6];
+    pw85__cholesky_decomp(q1, l1);
+    pw85__cholesky_decomp(q2, l2);
+    bool const pd = !std::isnan(l1[0]) && !std::isnan(l2[0]);
+    if (st == PW85_ENOTPOSDEF) CHECK_IN(!pd, "ENOTPOSDEF, Cholesky accepts");
+    if (st == PW85_SUCCESS || erange_inf)
+      CHECK_IN(pd, "status %d, Cholesky rejects", st);
+    if (!pd)
+      CHECK_IN(st == PW85_ENOTPOSDEF || (st == PW85_ERANGE && untouched),
+               "Cholesky rejects, status %d", st);
+  }
+
+  double const mu2 = out[0], lam = out[1];
+  if (st == PW85_SUCCESS) {
+    CHECK_IN(std::isfinite(mu2) && mu2 >= 0, "mu2 = %a", mu2);
+    CHECK_IN(lam >= 0 && lam <= 1, "lambda = %a", lam);
+    if (r12[0] == 0 && r12[1] == 0 && r12[2] == 0)
+      CHECK_IN(mu2 == 0 && lam == 0.5, "r12 = 0: out = {%a, %a}", mu2, lam);
+    // The documented floor, at any condition number. The library floors
+    // at the bound computed in double times (1 - 16ε) (sphere_margin of
+    // src/tolerances.hpp, which makes it a certified lower bound), so
+    // μ² may sit up to 16ε below the exact bound the header states:
+    // 20ε admits that and no more.
+    long double const fl = mu2_floor(r12, q1, q2);
+    if (fl >= DBL_MIN && fl <= DBL_MAX)
+      CHECK_IN(mu2 >= (double)fl * (1 - 20 * eps), "mu2 = %a < floor %La",
+               mu2, fl);
+  }
+
+  // pw85_overlap: same statuses, and the sign of mu2 - 1 outside the band.
+  int res;
+  fill_sentinel(&res, sizeof res);
+  int const st2 = pw85_overlap(r12, q1, q2, &res);
+  bool const well = cond_bound(q1) < 1e16L && cond_bound(q2) < 1e16L;
+  if (st == PW85_SUCCESS) {
+    CHECK_IN(st2 == PW85_SUCCESS, "overlap status %d", st2);
+    CHECK_IN(res == -1 || res == 0 || res == 1, "overlap result %d", res);
+    if (mu2 == 0) CHECK_IN(res == -1, "mu2 = 0, overlap %d", res);
+    if (well && std::fabs(mu2 - 1) > 4 * eps)
+      CHECK_IN(res == (mu2 < 1 ? -1 : 1), "mu2 = %a, overlap %d", mu2, res);
+  } else if (erange_inf) {
+    CHECK_IN(st2 == PW85_SUCCESS && res == 1,
+             "mu2 overflows: overlap status %d result %d", st2, res);
+  } else {
+    CHECK_IN(st2 == st, "contact status %d, overlap status %d", st, st2);
+    CHECK_IN(is_sentinel(&res, sizeof res), "overlap wrote on error %d", st2);
+  }
+
+  if (st != PW85_SUCCESS || !well) return;
+
+  // Swapping the ellipsoids: r12 -> -r12, q1 <-> q2, lambda -> 1 - lambda.
+  double const rm[3] = {-r12[0], -r12[1], -r12[2]};
+  double sw[2];
+  int const st3 = pw85_contact_function(rm, q2, q1, sw);
+  CHECK_IN(st3 == PW85_SUCCESS, "swapped: status %d", st3);
+  // Bit for bit, and λ within 4 ulps of 1, where the internal rescaling
+  // by powers of two cannot push an entry out of the normal range (every
+  // non-zero entry between 2^-500 and 2^500) and μ² is normal. Beyond, the
+  // header promises no rounding (μ² "may round to a subnormal") and λ to
+  // ~1e-13: a subnormal μ² may differ by one unit of DBL_TRUE_MIN, λ by
+  // 1e-12 (fuzz-contact-raw met 20ε at a dynamic range of 2^2000).
+  bool tame = mu2 >= DBL_MIN;
+  for (int i = 0; i < 15; ++i) {
+    double const x = i < 3 ? r12[i] : i < 9 ? q1[i - 3] : q2[i - 9];
+    tame = tame && (x == 0 || (std::fabs(x) >= 0x1p-500 &&
+                               std::fabs(x) <= 0x1p500));
+  }
+  if (tame) {
+    CHECK_IN(same_bits(sw[0], mu2), "swapped: mu2 %a, not %a", sw[0], mu2);
+    CHECK_IN(std::fabs(sw[1] - (1 - lam)) <= 4 * eps,
+             "swapped: lambda %a, not 1 - %a", sw[1], lam);
+  } else {
+    CHECK_IN(std::fabs(sw[0] - mu2) <= 1e-12 * mu2 + DBL_TRUE_MIN,
+             "swapped: mu2 %a, not %a", sw[0], mu2);
+    CHECK_IN(std::fabs(sw[1] - (1 - lam)) <= 1e-12,
+             "swapped: lambda %a, not 1 - %a", sw[1], lam);
+  }
+
+  // Every length times 2^k: mu2 and lambda unchanged, bit for bit.
+  if (k == 0) return;
+  double rs[3], q1s[6], q2s[6];
+  for (int i = 0; i < 3; ++i)
+    if (!scale_exact(r12[i], k, &rs[i])) return;
+  for (int i = 0; i < 6; ++i)
+    if (!scale_exact(q1[i], 2 * k, &q1s[i]) ||
+        !scale_exact(q2[i], 2 * k, &q2s[i]))
+      return;
+  double sc[2];
+  int const st4 = pw85_contact_function(rs, q1s, q2s, sc);
+  CHECK_IN(st4 == PW85_SUCCESS, "scaled by 2^%d: status %d", k, st4);
+  if (!tame) return;
+  CHECK_IN(same_bits(sc[0], mu2) && same_bits(sc[1], lam),
+           "scaled by 2^%d: out {%a, %a}, not {%a, %a}", k, sc[0], sc[1], mu2,
+           lam);
+}
+
+}  // namespace fuzz
