@@ -235,8 +235,9 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  * where f(λ) is within an ulp of μ² (measured worst errors).
  * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
  * μ² bit for bit and λ → 1 − λ (rounded), for any input. Beyond the
- * domain, the answer is still finite, ≥ (1 − 16ε)·|r12|²/(√tr Q1 +
- * √tr Q2)² > 0 (ε = DBL_EPSILON; the bound is itself rounded),
+ * domain, the answer is still finite, ≥ (1 − 24ε)·|r12|²/(√tr Q1 +
+ * √tr Q2)² > 0 (ε = DBL_EPSILON: the bound, computed in double with a
+ * margin of 16ε, carries its own rounding),
  * with the statuses below, but may be inaccurate.
  *
  * The method, step by step in the optimisation chapter of the docs: check
