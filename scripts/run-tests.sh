@@ -2,7 +2,9 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The whole test suite: every test of a release-like build, then every test
 # again in a build instrumented by AddressSanitizer and UndefinedBehavior-
-# Sanitizer (any report fails the test). Build trees: build/, build-asan/.
+# Sanitizer (any report fails the test), then the C test programs under
+# valgrind memcheck, and the multi-threaded tests under ThreadSanitizer.
+# Build trees: build/, build-asan/, build-tsan/.
 set -eu
 cd "$(dirname "$0")/.."
 
@@ -14,6 +16,28 @@ meson test -C build --print-errorlogs
 ASAN_OPTIONS=halt_on_error=1:abort_on_error=1 \
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   meson test -C build-asan --print-errorlogs
+
+# --- checkers (issue 14, item 3) ---------------------------------------
+# valgrind memcheck: the C test programs of build/ (suites unit, ref-data,
+# legacy, abi; not CPython, meson or qemu), any error or definite leak a
+# failure (meson.build, setup 'valgrind'; log:
+# build/meson-logs/testlog-valgrind.json).
+if command -v valgrind >/dev/null; then
+  meson test -C build --setup=valgrind --print-errorlogs \
+    --suite unit --suite ref-data --suite legacy --suite abi --no-suite python
+else
+  echo "valgrind not found: memcheck run skipped"
+fi
+# ThreadSanitizer: the multi-threaded tests (test-threads), in a build
+# whose kernels have no target_clones (fma_clones=false: TSan crashes in
+# their ifunc resolver at start-up). Only what they need is built.
+[ -f build-tsan/build.ninja ] ||
+  meson setup build-tsan -Db_sanitize=thread -Dfma_clones=false \
+    -Ddocs=disabled -Dpython=disabled
+ninja -C build-tsan -j2 tests/test-threads
+TSAN_OPTIONS=halt_on_error=1 \
+  meson test -C build-tsan --no-rebuild --print-errorlogs threads
+# --- end of checkers ----------------------------------------------------
 
 # ---- fuzz (issue 14, item 1) ------------------------------------------
 # When clang is present: the libFuzzer targets of tests/fuzz, built with

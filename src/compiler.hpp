@@ -20,8 +20,13 @@
 // Compile a function twice, for CPUs with and without FMA, and pick one at
 // load time (an ifunc): where the CPU has FMA, std::fma becomes one
 // instruction; elsewhere it stays the exact libm routine. The build itself
-// stays portable.
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__linux__) && \
+// stays portable. PW85_NO_FMA_CLONES (meson option fma_clones=false)
+// compiles each function once, for the build's own target: ThreadSanitizer
+// (gcc 12, clang 14) crashes at start-up in the ifunc resolver, which the
+// dynamic loader runs before the sanitizer's runtime is initialised.
+#if defined(PW85_NO_FMA_CLONES)
+#define PW85_FMA_CLONES
+#elif defined(__x86_64__) && defined(__GNUC__) && defined(__linux__) && \
     (defined(__clang__) ? __clang_major__ >= 14 : __GNUC__ >= 8)
 #define PW85_FMA_CLONES __attribute__((target_clones("fma", "default")))
 #else

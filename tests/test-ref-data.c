@@ -7,6 +7,7 @@
 #include <pw85.h>
 #include <string.h>
 
+#include "ddref.h"
 #include "refdata.h"
 #include "testutil.h"
 
@@ -74,40 +75,43 @@ static void solve(double const q[PW85_SYM], double const b[PW85_DIM],
 
 /* μ1² = (1−λ)²·sᵀQ1s and μ2² = λ²·sᵀQ2s, s = Q(λ)⁻¹·r (seed ch. 5,
  * eqs. (1a)–(1b)): a formula independent of pw85__residual's (ch. 5,
- * eqs. (3)–(4)), evaluated here in long double by Gaussian elimination so
- * that the check measures the library, not this test: on x86-64 the 64-bit
- * significand keeps cond(Q)·ε below 2e-12 on this file (where long double
- * is double, the seed criterion below would measure up to 4e-9). */
+ * eqs. (3)–(4)), evaluated here in double-double (tests/ddref.h) by
+ * Gaussian elimination so that the check measures the library, not this
+ * test: about 104 bits keep cond(Q)·ε far below 1e-12 on this file (in
+ * double, the seed criterion below would measure up to 4e-9; long double,
+ * used before, runs at double precision under valgrind). */
 static void mu_squared(double lambda, double const r[PW85_DIM],
                        double const q1[PW85_SYM], double const q2[PW85_SYM],
                        double *mu1, double *mu2) {
   static int const idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
-  long double const lam = lambda, mu = 1.0L - lam;
-  long double a[3][4];
+  DD const lam = dd(lambda), mu = dd_sub(dd(1.), lam);
+  DD a[3][4];
   for (int i = 0; i < 3; i++) {
     for (int j = 0; j < 3; j++)
-      a[i][j] = mu * q1[idx[i][j]] + lam * q2[idx[i][j]];
-    a[i][3] = r[i];
+      a[i][j] = dd_add(dd_mul(mu, dd(q1[idx[i][j]])),
+                       dd_mul(lam, dd(q2[idx[i][j]])));
+    a[i][3] = dd(r[i]);
   }
   for (int c = 0; c < 3; c++) /* Q is positive definite: no pivoting */
     for (int i = c + 1; i < 3; i++) {
-      long double const m = a[i][c] / a[c][c];
-      for (int j = c; j < 4; j++) a[i][j] -= m * a[c][j];
+      DD const m = dd_div(a[i][c], a[c][c]);
+      for (int j = c; j < 4; j++) a[i][j] = dd_sub(a[i][j], dd_mul(m, a[c][j]));
     }
-  long double s[3];
+  DD s[3];
   for (int i = 2; i >= 0; i--) {
-    long double t = a[i][3];
-    for (int j = i + 1; j < 3; j++) t -= a[i][j] * s[j];
-    s[i] = t / a[i][i];
+    DD t = a[i][3];
+    for (int j = i + 1; j < 3; j++) t = dd_sub(t, dd_mul(a[i][j], s[j]));
+    s[i] = dd_div(t, a[i][i]);
   }
-  long double p1 = 0.0L, p2 = 0.0L;
+  DD p1 = dd(0.), p2 = dd(0.);
   for (int i = 0; i < 3; i++)
     for (int j = 0; j < 3; j++) {
-      p1 += s[i] * q1[idx[i][j]] * s[j];
-      p2 += s[i] * q2[idx[i][j]] * s[j];
+      DD const sij = dd_mul(s[i], s[j]);
+      p1 = dd_add(p1, dd_mul(sij, dd(q1[idx[i][j]])));
+      p2 = dd_add(p2, dd_mul(sij, dd(q2[idx[i][j]])));
     }
-  *mu1 = (double)(mu * mu * p1);
-  *mu2 = (double)(lam * lam * p2);
+  *mu1 = dd_to_double(dd_mul(dd_mul(mu, mu), p1));
+  *mu2 = dd_to_double(dd_mul(dd_mul(lam, lam), p2));
 }
 
 /* f′ and f″ by the analytic expressions of seed ch. 4.1, eqs. (5)–(9):

@@ -8,6 +8,7 @@
 #include <pw85.h>
 
 #include "contract.h"
+#include "ddref.h"
 #include "testutil.h"
 
 /* The valid input of tests/contract.h: the tutorial's pair. */
@@ -65,40 +66,46 @@ static void test_scale_power_of_two(void) {
 
 /* Ellipsoids of one shape and orientation whose sizes differ by 2^m
  * (Q2 = 4^m·Q1), up to 2^1000: μ² = rᵀQ1⁻¹r/(1 + 2^m)² and λ = 1/(1 + 2^m)
- * exactly (an affine map makes them two spheres). rᵀQ1⁻¹r is computed here
- * in long double from the construction Q1 = R·D·Rᵀ; rounding Q1 to double
- * moves μ² by 2.2e-17 relative (measured), so μ² is checked to one ulp.
+ * exactly (an affine map makes them two spheres). Q1 = R·D·Rᵀ·2⁻ᵐ with
+ * R = R'/25, R' an integer matrix, so that R'·D·R'ᵀ is exact in double and
+ * Q1 is correctly rounded; rᵀQ1⁻¹r = Σₙ cₙ²/(dₙ·2⁻ᵐ), c = Rᵀr, is computed
+ * in double-double (tests/ddref.h) from r = 2^m·(0.3, 0.2, 0.1): μ² =
+ * 2^m·Σₙ c'ₙ²/(625·dₙ) with c' = R'ᵀ(0.3, 0.2, 0.1), since (1 + 2^m)² =
+ * 2^2m to 2⁻⁹⁹ relative for m ≥ 100, and λ = 2⁻ᵐ once rounded. Rounding Q1
+ * to double moves μ² by about 2e-17 relative, so μ² is checked to one ulp.
  * Beyond m ≈ 512, rᵀQ1⁻¹r / rᵀQ2⁻¹r overflows: a warm start formed from
- * that ratio fell back to λ = ½, and μ² came out 3e-6 off. */
+ * that ratio fell back to λ = ½, and μ² came out 3e-6 off. (The reference
+ * was in long double before: valgrind runs it at double precision, where
+ * 2^2000 overflows.) */
 static void test_size_ratio(void) {
-  long double const rot[3][3] = {{0.36L, 0.48L, -0.8L},
-                                 {-0.8L, 0.6L, 0.0L},
-                                 {0.48L, 0.64L, 0.6L}};
-  long double const d[3] = {1.0L, 2.0L, 3.0L};
+  double const rot25[3][3] = {{9., 12., -20.}, {-20., 15., 0.},
+                              {12., 16., 15.}};
+  double const d[3] = {1., 2., 3.};
+  double const r0[3] = {0.3, 0.2, 0.1};
+  DD a = dd(0.);
+  for (int n = 0; n < 3; n++) {
+    DD c = dd(0.);
+    for (int i = 0; i < 3; i++) c = dd_add(c, dd_mul(dd(rot25[i][n]), dd(r0[i])));
+    a = dd_add(a, dd_div(dd_mul(c, c), dd(625. * d[n])));
+  }
   for (int m = 100; m <= 1000; m += 100) {
     double const s = ldexp(1., -m);
     double q1[PW85_SYM], q2[PW85_SYM];
     int k = 0;
     for (int i = 0; i < 3; i++)
       for (int j = i; j < 3; j++, k++) {
-        long double t = 0.0L;
-        for (int n = 0; n < 3; n++) t += rot[i][n] * d[n] * rot[j][n];
-        q1[k] = (double)(t * s);
+        double t = 0.; /* an integer below 2^53: exact */
+        for (int n = 0; n < 3; n++) t += rot25[i][n] * d[n] * rot25[j][n];
+        q1[k] = t / 625. * s;
         q2[k] = ldexp(q1[k], 2 * m);
       }
-    double const r[PW85_DIM] = {ldexp(0.3, m), ldexp(0.2, m), ldexp(0.1, m)};
-    long double a = 0.0L;
-    for (int n = 0; n < 3; n++) {
-      long double c = 0.0L;
-      for (int i = 0; i < 3; i++) c += rot[i][n] * r[i];
-      a += c * c / (d[n] * s);
-    }
-    long double const den = 1.0L + ldexpl(1.0L, m);
+    double const r[PW85_DIM] = {ldexp(r0[0], m), ldexp(r0[1], m),
+                                ldexp(r0[2], m)};
     double out[2];
     contract_assert_valid(call(r, q1, q2, out), out);
-    assert_close("mu2, size ratio 2^%d", out[0], (double)(a / (den * den)),
+    assert_close("mu2, size ratio 2^%d", out[0], ldexp(dd_to_double(a), m),
                  DBL_EPSILON, m);
-    assert_close("lambda, size ratio 2^%d", out[1], (double)(1.0L / den),
+    assert_close("lambda, size ratio 2^%d", out[1], ldexp(1., -m),
                  DBL_EPSILON, m);
   }
 }
