@@ -96,15 +96,22 @@ Status contact_function(double const r[dim], double const q1[sym],
   // 8. Floor: beyond the documented domain (cond(Qᵢ) far above 1/ε) the
   // computed f can be meaningless; μ² never falls below the rigorous bound
   // sphere_lower_bound() ≤ |r|²/(tr Q1 + tr Q2), which is computed only
-  // when μ² is below the latter.
+  // when μ² is below the latter. Both in the form scaled by 2^8
+  // (sphere_lower_bound_x256()), so that neither overflows.
   double mu2 = res[0];
-  double const tr = p.q1[0] + p.q1[3] + p.q1[5] + p.q2[0] + p.q2[3] + p.q2[5];
-  if (!(mu2 * tr >= dot(p.r, p.r))) {
-    double const floor = sphere_lower_bound(p);
-    mu2 = mu2 > floor ? mu2 : floor;  // also when mu2 is NaN
+  int shift = p.shift;
+  constexpr double s = 0x1p-8;
+  double const tr_s = s * p.q1[0] + s * p.q1[3] + s * p.q1[5] + s * p.q2[0] +
+                      s * p.q2[3] + s * p.q2[5];
+  if (!(mu2 * tr_s >= s * dot(p.r, p.r))) {
+    double const floor_x256 = sphere_lower_bound_x256(p);
+    if (!(mu2 * 256.0 >= floor_x256)) {  // also when mu2 is NaN
+      mu2 = floor_x256;
+      shift -= 8;
+    }
   }
   // 9. Scaling back, and λ of the input's orientation.
-  mu2 = times_pow2(mu2, p.shift);
+  mu2 = times_pow2(mu2, shift);
   out[1] = p.swapped ? 1.0 - res[1] : res[1];
   if (std::isinf(mu2)) {
     out[0] = HUGE_VAL;
