@@ -82,7 +82,9 @@ PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
 // ρ = r − Q(λ)·s (compensated_residual(), Q(λ) kept as hi + lo):
 // r·s + s·ρ = rᵀQ⁻¹r − eᵀQe, so f = λ(1−λ)·(r·s + s·ρ) has an error of
 // order (cond·ε)², below an ulp while κ̄(Q) ≤ refine_cond. Beyond it, s is
-// refined once (s += Q⁻¹ρ) and ρ recomputed, squaring the error again.
+// refined once (s += Q⁻¹ρ) and ρ recomputed, squaring the error again;
+// beyond factor_dd_cond, Q(λ) is factorised in double-double instead
+// (compensated_dd()).
 // Pᵢ = sᵀ·Qᵢ·s, first order in e, use the refined s, with exact products.
 struct Compensated {
   double f;
@@ -116,7 +118,7 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   Ldl const &fac = plain.fac;
   double s[dim], rho[dim], ds[dim] = {0.0, 0.0, 0.0};
   double const cond = ldl_cond_bound(hi, fac);
-  if (__builtin_expect(cond > factor_dd_cond, 0)) {
+  if (PW85_UNLIKELY(cond > factor_dd_cond)) {
     QDd q;
     PW85_UNROLL
     for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];

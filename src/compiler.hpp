@@ -9,12 +9,16 @@
 // PW85_UNROLL before a loop of 3 to 9 iterations unrolls it completely, so
 // that index arithmetic (sym_index, row_of, col_of) folds into constants:
 // -O2 does not unroll by itself.
+// PW85_UNLIKELY(c) marks a condition rarely true (a path for
+// ill-conditioned input), so that the common path is laid out first.
 #if defined(__GNUC__)
 #define PW85_INLINE inline __attribute__((always_inline))
 #define PW85_UNROLL _Pragma("GCC unroll 9")
+#define PW85_UNLIKELY(c) __builtin_expect(!!(c), 0)
 #else
 #define PW85_INLINE inline
 #define PW85_UNROLL
+#define PW85_UNLIKELY(c) (c)
 #endif
 
 // Compile a function twice, for CPUs with and without FMA, and pick one at
