@@ -41,18 +41,24 @@ static gboolean expect(gboolean ok, const char *what, GError **error) {
   return ok;
 }
 
+/* Opens `path` (from the environment variable `var`) for reading, with
+ * HDF5's own error printing off (errors come back as GError); a negative
+ * id, with *error set, when path is NULL or the file does not open. */
+static hid_t open_file(const char *path, const char *var, GError **error) {
+  if (path == NULL) {
+    g_set_error(error, REF_DATA_ERROR, 3, "%s is not set", var);
+    return -1;
+  }
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
+  return file;
+}
+
 gboolean ref_data_load(const char *path, RefData *d, GError **error) {
   memset(d, 0, sizeof *d);
-  if (path == NULL) {
-    g_set_error(error, REF_DATA_ERROR, 3, "PW85_REF_DATA is not set");
-    return FALSE;
-  }
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors come back as GError */
-  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) {
-    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
-    return FALSE;
-  }
+  hid_t const file = open_file(path, "PW85_REF_DATA", error);
+  if (file < 0) return FALSE;
   hsize_t dims[4];
   gboolean ok =
       read_dataset(file, "/radii", 1, dims, &d->radii, error) &&
@@ -107,16 +113,8 @@ const char *general_pairs_path(void) { return g_getenv("PW85_GENERAL_PAIRS"); }
 gboolean general_pairs_load(const char *path, GeneralPairs *g,
                             GError **error) {
   memset(g, 0, sizeof *g);
-  if (path == NULL) {
-    g_set_error(error, REF_DATA_ERROR, 3, "PW85_GENERAL_PAIRS is not set");
-    return FALSE;
-  }
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) {
-    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
-    return FALSE;
-  }
+  hid_t const file = open_file(path, "PW85_GENERAL_PAIRS", error);
+  if (file < 0) return FALSE;
   hsize_t dims[2];
   gboolean ok =
       read_dataset(file, "/MU2", 1, dims, &g->MU2, error) &&
@@ -162,9 +160,8 @@ gboolean hard_pairs_load(const char *path, HardPairs *h, GError **error) {
     return FALSE;
   }
   if (!general_pairs_load(path, &h->pairs, error)) return FALSE;
-  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  hid_t const file = open_file(path, "PW85_HARD_PAIRS", error);
   if (file < 0) {
-    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
     general_pairs_clear(&h->pairs);
     return FALSE;
   }
@@ -219,16 +216,8 @@ const char *f_cases_path(void) { return g_getenv("PW85_F_CASES"); }
 
 gboolean f_cases_load(const char *path, FCases *c, GError **error) {
   memset(c, 0, sizeof *c);
-  if (path == NULL) {
-    g_set_error(error, REF_DATA_ERROR, 3, "PW85_F_CASES is not set");
-    return FALSE;
-  }
-  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file < 0) {
-    g_set_error(error, REF_DATA_ERROR, 4, "cannot open %s", path);
-    return FALSE;
-  }
+  hid_t const file = open_file(path, "PW85_F_CASES", error);
+  if (file < 0) return FALSE;
   hsize_t dims[2];
   int rank = -1;
   H5T_class_t type_class;
