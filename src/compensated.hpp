@@ -187,21 +187,29 @@ PW85_INLINE bool factorise_dd_instead(double lambda, double const r[dim],
   return compensated_dd(lambda, r, q1, q2, q, with_p, out);
 }
 
-// The compensated evaluation at λ from scratch. Returns false when Q(λ)
-// does not factorise, in double nor in double-double. fast: see
-// ldl_decomp_q().
+// The compensated evaluation at λ. plain: the plain factors and solution
+// of Q(λ) at this λ where the caller has them (evaluate_plain() computes
+// those this function would: hi is Q(λ) as combine() rounds it), else
+// nullptr, and they are computed here. Returns false when Q(λ) does not
+// factorise, in double nor in double-double. fast: see ldl_decomp_q().
+// (One function for both cases, so that a caller inlines the kernels
+// once: code size counts in the finish's loop.)
 template <bool WithP>
 PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
                                       double const q1[sym],
                                       double const q2[sym], bool fast,
+                                      LdlSolution const *plain,
                                       Compensated *out) noexcept {
   double hi[sym], lo[sym];
   combine_dd(lambda, q1, q2, hi, lo);
-  LdlSolution plain;
-  if (!ldl_decomp_q(hi, &plain.fac, fast))
-    return factorise_dd_instead(lambda, r, q1, q2, hi, lo, WithP, out);
-  ldl_solve(plain.fac, r, plain.s);
-  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, plain, out);
+  LdlSolution fresh;
+  if (plain == nullptr) {
+    if (!ldl_decomp_q(hi, &fresh.fac, fast))
+      return factorise_dd_instead(lambda, r, q1, q2, hi, lo, WithP, out);
+    ldl_solve(fresh.fac, r, fresh.s);
+    plain = &fresh;
+  }
+  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, *plain, out);
   return true;
 }
 

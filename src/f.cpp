@@ -14,7 +14,8 @@ PW85_FMA_CLONES
 bool f_compensated(double lambda, double const r[dim], double const q1[sym],
                    double const q2[sym], double *value) noexcept {
   Compensated a;
-  if (!evaluate_compensated<false>(lambda, r, q1, q2, false, &a)) return false;
+  if (!evaluate_compensated<false>(lambda, r, q1, q2, false, nullptr, &a))
+    return false;
   // f ≥ 0 on [0, 1], where Q(λ) is positive definite; a negative value is
   // rounding error (cond(Q(λ)) beyond ~1e14), and 0 is nearer the truth.
   *value = lambda >= 0.0 && lambda <= 1.0 && a.f < 0.0 ? 0.0 : a.f;

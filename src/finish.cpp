@@ -29,25 +29,6 @@ PW85_INLINE double model_gain(double lambda, Compensated const &a,
   return 0.5 * root_p1 * omega * sum_mu * step;
 }
 
-// The compensated evaluation at λ (with P1, P2), reusing the plain factors
-// and solution at λ where plain holds them: written once, so that the
-// kernels are inlined once (code size counts in this hot loop).
-PW85_INLINE bool evaluate_at(double lambda, Problem const &p,
-                             LdlSolution const *plain,
-                             Compensated *a) noexcept {
-  double hi[sym], lo[sym];
-  combine_dd(lambda, p.q1, p.q2, hi, lo);
-  LdlSolution fresh;
-  if (plain == nullptr) {
-    if (!ldl_decomp_q(hi, &fresh.fac, p.moderate))
-      return factorise_dd_instead(lambda, p.r, p.q1, p.q2, hi, lo, true, a);
-    ldl_solve(fresh.fac, p.r, fresh.s);
-    plain = &fresh;
-  }
-  compensated_from<true>(lambda, p.r, p.q1, p.q2, hi, lo, *plain, a);
-  return true;
-}
-
 // The largest compensated f seen, and where.
 struct Best {
   double f = 0.0;
@@ -77,7 +58,9 @@ bool finish(Problem const &p, FinishStart const &start,
   double lo = 0.0, hi = 1.0;
   for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
     Compensated a;
-    if (!evaluate_at(lambda, p, plain, &a)) break;
+    if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
+                                    plain, &a))
+      break;
     best.see(a.f, lambda);
     double const omega = omega_of(lambda, a);
     if (omega < 0.0) lo = std::max(lo, lambda);

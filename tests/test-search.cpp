@@ -206,7 +206,8 @@ void test_brent_invariants() {
 // The compensated f at λ, f(λ) ≤ μ² in exact arithmetic.
 double f_compensated(core::Problem const &p, double lambda) {
   core::Compensated a;
-  if (!core::evaluate_compensated<false>(lambda, p.r, p.q1, p.q2, false, &a))
+  if (!core::evaluate_compensated<false>(lambda, p.r, p.q1, p.q2, false,
+                                            nullptr, &a))
     return -HUGE_VAL;
   return a.f;
 }
