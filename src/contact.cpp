@@ -94,10 +94,10 @@ Status contact_function(double const r[dim], double const q1[sym],
   status = p.moderate ? solve<true>(p, res) : solve<false>(p, res);
   if (status != Status::success) return status;
   // 8. Floor: beyond the documented domain (cond(Qᵢ) far above 1/ε) the
-  // computed f can be meaningless; μ² never falls below the rigorous bound
-  // sphere_lower_bound() ≤ |r|²/(tr Q1 + tr Q2), which is computed only
-  // when μ² is below the latter. Both in the form scaled by 2^8
-  // (sphere_lower_bound_x256()), so that neither overflows.
+  // computed f can be meaningless; μ² never falls below the rigorous sphere
+  // bound (sphere_lower_bound_x256()) ≤ |r|²/(tr Q1 + tr Q2), which is
+  // computed only when μ² is below the latter. Both scaled by 2^8, so that
+  // neither overflows.
   double mu2 = res[0];
   int shift = p.shift;
   constexpr double s = 0x1p-8;

@@ -33,10 +33,11 @@ struct Filtering {
 };
 
 // Filter 1, no factorisation needed: the sphere bound μ² ≥
-// |r|²/(√tr Q1 + √tr Q2)², already a certified lower bound.
+// |r|²/(√tr Q1 + √tr Q2)², already a certified lower bound, compared
+// times 2^8 (256·one is exact, or +∞ where it does not decide).
 Decision sphere_filter(Problem const &p, double one) noexcept {
-  return sphere_lower_bound(p) > one ? Decision::disjoint
-                                     : Decision::undecided;
+  return sphere_lower_bound_x256(p) > 256.0 * one ? Decision::disjoint
+                                                  : Decision::undecided;
 }
 
 // Filter 2, from the factors of Q1 and Q2: at λ = 0 and 1 the point x0 is

@@ -79,26 +79,21 @@ inline Status prepare(double const r[dim], double const q1[sym],
   return Status::success;
 }
 
-// A lower bound of μ² valid for every input: each ellipsoid lies in the
-// sphere of radius √λmax(Qᵢ) ≤ √tr(Qᵢ) about its centre, and those spheres
-// meet only once scaled by |r|/(√tr Q1 + √tr Q2). Computed with a few
-// roundings, whatever the conditioning of Q1 and Q2: the factor
-// 1 − sphere_margin keeps it a lower bound.
-// The same bound times 2^8, computed with the diagonal entries scaled by
-// 2^−8 (exactly, barring underflow of entries far below the largest, which
-// changes the traces by less than the margin): no trace or square
-// overflows, however close the rescaled diagonals come to 2^1024 (which
-// rescale() allows), and the result is a normal double.
+// A lower bound of μ² valid for every input, times 2^8: each ellipsoid
+// lies in the sphere of radius √λmax(Qᵢ) ≤ √tr(Qᵢ) about its centre, and
+// those spheres meet only once scaled by |r|/(√tr Q1 + √tr Q2). Computed
+// with a few roundings, whatever the conditioning of Q1 and Q2: the factor
+// 1 − sphere_margin keeps it a lower bound. The diagonal entries are
+// scaled by 2^−8 (exactly, barring underflow of entries far below the
+// largest, which changes the traces by less than the margin), which
+// changes no rounding: no trace or square overflows, however close the
+// rescaled diagonals come to 2^1024 (which rescale() allows), and the
+// result is a normal double.
 inline double sphere_lower_bound_x256(Problem const &p) noexcept {
   constexpr double s = 0x1p-8;
   double const radii =
       std::sqrt(s * p.q1[0] + s * p.q1[3] + s * p.q1[5]) +
       std::sqrt(s * p.q2[0] + s * p.q2[3] + s * p.q2[5]);  // true radii / 16
-  return dot(p.r, p.r) / (radii * radii) * (1.0 - sphere_margin);
-}
-
-inline double sphere_lower_bound(Problem const &p) noexcept {
-  double const radii = std::sqrt(trace(p.q1)) + std::sqrt(trace(p.q2));
   return dot(p.r, p.r) / (radii * radii) * (1.0 - sphere_margin);
 }
 
