@@ -37,6 +37,12 @@ static inline void contract_assert_untouched(double const out[2]) {
 }
 
 /* A successful call: status PW85_SUCCESS, μ² finite and ≥ 0, λ in [0, 1]. */
+/* contract_call() of pw85_contact_function. */
+static inline int contract_cf(double const *r, double const *q1,
+                              double const *q2, double out[2]) {
+  return contract_call(pw85_contact_function, r, q1, q2, out);
+}
+
 static inline void contract_assert_valid(int status, double const out[2]) {
   g_assert_cmpint(status, ==, PW85_SUCCESS);
   g_assert_true(isfinite(out[0]));

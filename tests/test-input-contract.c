@@ -16,10 +16,6 @@
 #define q1_ok contract_q1
 #define q2_ok contract_q2
 
-static int call(double const *r, double const *q1, double const *q2,
-                double out[2]) {
-  return contract_call(pw85_contact_function, r, q1, q2, out);
-}
 
 static void assert_untouched(double const out[2]) {
   contract_assert_untouched(out);
@@ -152,7 +148,7 @@ static void test_random_input(void) {
     if (r[0] == 0. && r[1] == 0. && r[2] == 0.) r[0] = 1.;
     random_form(rng, emax, special, q1);
     random_form(rng, emax, special, q2);
-    int const status = call(r, q1, q2, out);
+    int const status = contract_cf(r, q1, q2, out);
     g_assert_cmpint(status, >=, 0);
     g_assert_cmpint(status, <=, PW85_ERANGE);
     counts[status]++;
@@ -210,7 +206,7 @@ static void test_random_overlap(void) {
     double const size = sqrt(q1[0] + q1[3] + q1[5]) + sqrt(q2[0] + q2[3] + q2[5]);
     double const t = size * pow(10., g_rand_double_range(rng, -1., 0.3));
     for (int i = 0; i < PW85_DIM; i++) r[i] = t * g_rand_double_range(rng, -1., 1.);
-    int const status = call(r, q1, q2, out);
+    int const status = contract_cf(r, q1, q2, out);
     if (status == PW85_ENOTPOSDEF) continue; /* rounding made Q indefinite */
     contract_assert_valid(status, out);
     int result = 42;
@@ -255,7 +251,7 @@ static void test_extreme_aspect(void) {
             double r[PW85_DIM], out[2];
             double const t = pow(10., s); /* near, tangent-ish, far */
             for (int c = 0; c < PW85_DIM; c++) r[c] = t * dirs[d][c];
-            contract_assert_valid(call(r, forms[i], forms[j], out), out);
+            contract_assert_valid(contract_cf(r, forms[i], forms[j], out), out);
           }
   }
 }
@@ -268,16 +264,16 @@ static void test_tiny_distance(void) {
   /* 1e-170: μ² = 2.5e-341 is below the smallest subnormal: it rounds to 0. */
   double const r0[PW85_DIM] = {1e-170, 0., 0.};
   double out[2];
-  contract_assert_valid(call(r0, unit, unit, out), out);
+  contract_assert_valid(contract_cf(r0, unit, unit, out), out);
   g_assert_cmpfloat(out[0], ==, 0.);
   assert_close("lambda, tiny r", out[1], 0.5, 1e-12);
   /* 1e-155: μ² = 2.5e-311, a subnormal with 36 significant bits left. */
   double const r1[PW85_DIM] = {0., 1e-155, 0.};
-  contract_assert_valid(call(r1, unit, unit, out), out);
+  contract_assert_valid(contract_cf(r1, unit, unit, out), out);
   assert_close("mu2, subnormal", out[0], 2.5e-311, 1e-10);
   /* 1e-140, normal range: full accuracy. */
   double const r2[PW85_DIM] = {0., 0., 1e-140};
-  contract_assert_valid(call(r2, unit, unit, out), out);
+  contract_assert_valid(contract_cf(r2, unit, unit, out), out);
   assert_close("mu2, 1e-140", out[0], 0.25e-280, 4.5e-16);
 }
 
@@ -289,10 +285,10 @@ static void test_maximiser_at_an_end(void) {
   double const small[PW85_SYM] = {1e-18, 0., 0., 1e-18, 0., 1e-18};
   double const r[PW85_DIM] = {0., 1e9, 0.};
   double out[2];
-  contract_assert_valid(call(r, big, small, out), out);
+  contract_assert_valid(contract_cf(r, big, small, out), out);
   assert_close("mu2, maximiser near 1", out[0], 1., DBL_EPSILON);
   g_assert_cmpfloat(out[1], >=, 1. - DBL_EPSILON);
-  contract_assert_valid(call(r, small, big, out), out); /* and near 0 */
+  contract_assert_valid(contract_cf(r, small, big, out), out); /* and near 0 */
   assert_close("mu2, maximiser near 0", out[0], 1., DBL_EPSILON);
   g_assert_cmpfloat(out[1], <=, 1e-17);
 }
@@ -302,13 +298,13 @@ static void test_overflow(void) {
   double const r[PW85_DIM] = {1e200, 0., 0.};
   double const tiny[PW85_SYM] = {1e-200, 0., 0., 1e-200, 0., 1e-200};
   double out[2];
-  g_assert_cmpint(call(r, tiny, tiny, out), ==, PW85_ERANGE);
+  g_assert_cmpint(contract_cf(r, tiny, tiny, out), ==, PW85_ERANGE);
   g_assert_true(isinf(out[0]) && out[0] > 0.);
   assert_close("lambda, overflow", out[1], 0.5, 1e-12);
   /* Just inside the range: |r|² = 1e300, Q = 0.25e-8·I → μ² = 1e308. */
   double const r2[PW85_DIM] = {1e150, 0., 0.};
   double const q2[PW85_SYM] = {0.25e-8, 0., 0., 0.25e-8, 0., 0.25e-8};
-  contract_assert_valid(call(r2, q2, q2, out), out);
+  contract_assert_valid(contract_cf(r2, q2, q2, out), out);
   assert_close("mu2 near DBL_MAX", out[0], 1e308, 1e-15);
 }
 
@@ -321,13 +317,13 @@ static void test_wide_range(void) {
   double const unit[PW85_SYM] = {1., 0., 0., 1., 0., 1.};
   double const r[PW85_DIM] = {1., 1., 1.};
   double out[2];
-  contract_assert_valid(call(r, disc, unit, out), out);
+  contract_assert_valid(contract_cf(r, disc, unit, out), out);
   assert_close("mu2, disc and sphere", out[0], 1., 1e-15);
   /* Diagonals spanning 1e308 to 5e-324 together: no power-of-two scaling
    * keeps both in range. */
   double const huge[PW85_SYM] = {1e308, 0., 0., 1e308, 0., 1e308};
   double const tiny[PW85_SYM] = {5e-324, 0., 0., 5e-324, 0., 5e-324};
-  g_assert_cmpint(call(r, huge, tiny, out), ==, PW85_ERANGE);
+  g_assert_cmpint(contract_cf(r, huge, tiny, out), ==, PW85_ERANGE);
   assert_untouched(out);
 }
 

@@ -16,23 +16,19 @@
 #define q1_ok contract_q1
 #define q2_ok contract_q2
 
-static int call(double const *r, double const *q1, double const *q2,
-                double out[2]) {
-  return contract_call(pw85_contact_function, r, q1, q2, out);
-}
 
 /* μ²(t·r, t²·Q1, t²·Q2) = μ²(r, Q1, Q2). t is not a power of two, so the
  * scaled inputs are rounded: the results agree to a few ulps (measured:
  * 2.6e-16). */
 static void test_scale_invariance(void) {
   double ref[2];
-  g_assert_cmpint(call(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
+  g_assert_cmpint(contract_cf(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
   double const scales[] = {1e-150, 1e-100, 1e-10, 1e10, 1e100, 1e150};
   for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
     double const t = scales[k];
     double r[PW85_DIM], q1[PW85_SYM], q2[PW85_SYM], out[2];
     contract_scaled(t, r_ok, q1_ok, q2_ok, r, q1, q2);
-    int const status = call(r, q1, q2, out);
+    int const status = contract_cf(r, q1, q2, out);
     contract_assert_valid(status, out);
     assert_close("mu2, scaled by %g", out[0], ref[0], 1e-14, t);
     assert_close("lambda, scaled by %g", out[1], ref[1], 1e-9, t);
@@ -44,7 +40,7 @@ static void test_scale_invariance(void) {
 static void test_scale_power_of_two(void) {
   double ref[2];
   int ref_overlap = 0;
-  g_assert_cmpint(call(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
+  g_assert_cmpint(contract_cf(r_ok, q1_ok, q2_ok, ref), ==, PW85_SUCCESS);
   g_assert_cmpint(pw85_overlap(r_ok, q1_ok, q2_ok, &ref_overlap), ==,
                   PW85_SUCCESS);
   int const exps[] = {-500, -250, -1, 1, 250, 500};
@@ -55,7 +51,7 @@ static void test_scale_power_of_two(void) {
       q1[i] = ldexp(q1_ok[i], 2 * exps[k]);
       q2[i] = ldexp(q2_ok[i], 2 * exps[k]);
     }
-    g_assert_cmpint(call(r, q1, q2, out), ==, PW85_SUCCESS);
+    g_assert_cmpint(contract_cf(r, q1, q2, out), ==, PW85_SUCCESS);
     g_assert_cmpfloat(out[0], ==, ref[0]);
     g_assert_cmpfloat(out[1], ==, ref[1]);
     int result = 42;
@@ -102,7 +98,7 @@ static void test_size_ratio(void) {
     double const r[PW85_DIM] = {ldexp(r0[0], m), ldexp(r0[1], m),
                                 ldexp(r0[2], m)};
     double out[2];
-    contract_assert_valid(call(r, q1, q2, out), out);
+    contract_assert_valid(contract_cf(r, q1, q2, out), out);
     assert_close("mu2, size ratio 2^%d", out[0], ldexp(dd_to_double(a), m),
                  DBL_EPSILON, m);
     assert_close("lambda, size ratio 2^%d", out[1], ldexp(1., -m),
