@@ -107,6 +107,22 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
                     double const q2[sym], QDd q, bool with_p,
                     Compensated *out) noexcept;
 
+// compensated_dd() on Q(λ) = hi + lo: beyond factor_dd_cond, and where
+// Q(λ) rounded to double does not factorise (a form near the resolution of
+// a double, made indefinite by the rounding of Q(λ)) while hi + lo may
+// still be definite.
+PW85_INLINE bool factorise_dd_instead(double lambda, double const r[dim],
+                                      double const q1[sym],
+                                      double const q2[sym],
+                                      double const hi[sym],
+                                      double const lo[sym], bool with_p,
+                                      Compensated *out) noexcept {
+  QDd q;
+  PW85_UNROLL
+  for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];
+  return compensated_dd(lambda, r, q1, q2, q, with_p, out);
+}
+
 // The evaluation from Q(λ) as hi + lo and its plain factors and solution.
 // WithP: also P1 and P2.
 template <bool WithP>
@@ -118,12 +134,9 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   Ldl const &fac = plain.fac;
   double s[dim], rho[dim], ds[dim] = {0.0, 0.0, 0.0};
   double const cond = ldl_cond_bound(hi, fac);
-  if (PW85_UNLIKELY(cond > factor_dd_cond)) {
-    QDd q;
-    PW85_UNROLL
-    for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];
-    if (compensated_dd(lambda, r, q1, q2, q, WithP, out)) return;
-  }
+  if (PW85_UNLIKELY(cond > factor_dd_cond) &&
+      factorise_dd_instead(lambda, r, q1, q2, hi, lo, WithP, out))
+    return;
   PW85_UNROLL
   for (int i = 0; i < dim; ++i) s[i] = plain.s[i];
   compensated_residual(hi, lo, r, s, rho);
@@ -170,21 +183,6 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
       out->p2 += 2.0 * dot(t2, ds_lo);
     }
   }
-}
-
-// Where Q(λ) rounded to double does not factorise (a form near the
-// resolution of a double, made indefinite by the rounding of Q(λ)), hi + lo
-// may still be definite: the double-double factorisation decides.
-PW85_INLINE bool factorise_dd_instead(double lambda, double const r[dim],
-                                      double const q1[sym],
-                                      double const q2[sym],
-                                      double const hi[sym],
-                                      double const lo[sym], bool with_p,
-                                      Compensated *out) noexcept {
-  QDd q;
-  PW85_UNROLL
-  for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];
-  return compensated_dd(lambda, r, q1, q2, q, with_p, out);
 }
 
 // The compensated evaluation at λ. plain: the plain factors and solution
