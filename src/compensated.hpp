@@ -93,35 +93,18 @@ struct Compensated {
   double p2;    // P2, when asked for
 };
 
-// The evaluation from Q(λ) = hi + lo factorised in double-double, for Q(λ)
-// too ill-conditioned for the double factors (compensated_dd.cpp; out of
-// line, as it is rare and large). Returns false when that factorisation
+// The evaluation from Q(λ) = hi + lo factorised in double-double
+// (compensated_dd.cpp): for Q(λ) too ill-conditioned for the double
+// factors (κ̄ > factor_dd_cond), and where Q(λ) rounded to double does not
+// factorise (a form near the resolution of a double, made indefinite by
+// the rounding of Q(λ)) while hi + lo may still be definite. Out of line,
+// as it is rare and large; it forms hi + lo again itself, so that its
+// callers' hi and lo never leave registers on the common path (passing
+// them made pw85_f_neg 20% slower). Returns false when that factorisation
 // fails (a pivot not > 0); *out is then unchanged.
-// Q(λ) is passed by value, so that the callers' hi and lo, whose address
-// is then never taken, stay in registers on the common path.
-struct QDd {
-  double hi[sym];
-  double lo[sym];
-};
 bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
-                    double const q2[sym], QDd q, bool with_p,
+                    double const q2[sym], bool with_p,
                     Compensated *out) noexcept;
-
-// compensated_dd() on Q(λ) = hi + lo: beyond factor_dd_cond, and where
-// Q(λ) rounded to double does not factorise (a form near the resolution of
-// a double, made indefinite by the rounding of Q(λ)) while hi + lo may
-// still be definite.
-PW85_INLINE bool factorise_dd_instead(double lambda, double const r[dim],
-                                      double const q1[sym],
-                                      double const q2[sym],
-                                      double const hi[sym],
-                                      double const lo[sym], bool with_p,
-                                      Compensated *out) noexcept {
-  QDd q;
-  PW85_UNROLL
-  for (int k = 0; k < sym; ++k) q.hi[k] = hi[k], q.lo[k] = lo[k];
-  return compensated_dd(lambda, r, q1, q2, q, with_p, out);
-}
 
 // The evaluation from Q(λ) as hi + lo and its plain factors and solution.
 // WithP: also P1 and P2.
@@ -135,7 +118,7 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   double s[dim], rho[dim], ds[dim] = {0.0, 0.0, 0.0};
   double const cond = ldl_cond_bound(hi, fac);
   if (PW85_UNLIKELY(cond > factor_dd_cond) &&
-      factorise_dd_instead(lambda, r, q1, q2, hi, lo, WithP, out))
+      compensated_dd(lambda, r, q1, q2, WithP, out))
     return;
   PW85_UNROLL
   for (int i = 0; i < dim; ++i) s[i] = plain.s[i];
@@ -202,8 +185,8 @@ PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
   combine_dd(lambda, q1, q2, hi, lo);
   LdlSolution fresh;
   if (plain == nullptr) {
-    if (!ldl_decomp_q(hi, &fresh.fac, fast))
-      return factorise_dd_instead(lambda, r, q1, q2, hi, lo, WithP, out);
+    if (PW85_UNLIKELY(!ldl_decomp_q(hi, &fresh.fac, fast)))
+      return compensated_dd(lambda, r, q1, q2, WithP, out);
     ldl_solve(fresh.fac, r, fresh.s);
     plain = &fresh;
   }

@@ -57,14 +57,16 @@ PW85_INLINE dd ldl_solve_quad_dd(LdlDd const &f, double const r[dim],
 
 PW85_FMA_CLONES
 bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
-                    double const q2[sym], QDd q, bool with_p,
+                    double const q2[sym], bool with_p,
                     Compensated *out) noexcept {
   // f = λ(1−λ)·rᵀQ⁻¹r from the double-double factors, and Pᵢ = sᵀQᵢs from
   // s = s_hi + s_lo: sᵀQs = s_hiᵀQs_hi + 2·(Q·s_hi)·s_lo to second order
   // in s_lo. (From s rounded to double, Pᵢ would be off by up to
   // ε·√cond(Qᵢ) relative, and λ by as much.)
+  double hi[sym], lo[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
   dd a[sym];
-  for (int k = 0; k < sym; ++k) a[k] = two_sum(q.hi[k], q.lo[k]);
+  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
   LdlDd fdd;
   if (!ldl_decomp_dd(a, &fdd)) return false;
   double s[dim], s_lo[dim];
