@@ -27,6 +27,8 @@ inline int to_code(pw85::detail::Status status) noexcept {
       return PW85_ENOMEM;
     case Status::no_convergence:
       return PW85_ENOCONV;
+    case Status::invalid_argument:
+      return PW85_EINVAL;
   }
   return PW85_ENOMEM;  // not reached: every Status is mapped above
 }

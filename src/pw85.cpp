@@ -50,6 +50,8 @@ const char *pw85_strerror(int status) noexcept {
       return "the minimiser needs more working memory than reserved";
     case PW85_ENOCONV:
       return "the method did not converge";
+    case PW85_EINVAL:
+      return "an argument is outside its documented domain";
     default:
       return "unknown pw85 status";
   }

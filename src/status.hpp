@@ -15,6 +15,7 @@ enum class Status {
   out_of_range,           // PW85_ERANGE
   no_memory,              // PW85_ENOMEM
   no_convergence,         // PW85_ENOCONV (legacy contact functions)
+  invalid_argument,       // PW85_EINVAL
 };
 
 }  // namespace pw85::detail

@@ -429,7 +429,8 @@ static void test_gsl_handler_detects(void) {
 
 static void test_strerror(void) {
   int const codes[] = {PW85_SUCCESS, PW85_EFAULT, PW85_EDOM, PW85_ENOTPOSDEF,
-                       PW85_ERANGE, PW85_ENOMEM, PW85_ENOCONV};
+                       PW85_ERANGE, PW85_ENOMEM, PW85_ENOCONV,
+                       PW85_EINVAL};
   char const *unknown = pw85_strerror(-1);
   g_assert_nonnull(unknown);
   g_assert_cmpstr(unknown, ==, pw85_strerror(1000));

@@ -105,6 +105,9 @@ extern "C" {
 #define PW85_ENOCONV 6     /**< the method did not converge (legacy contact
                                 functions; out holds a lower bound of μ²).
                                 @since 2.1.0 */
+#define PW85_EINVAL 7      /**< a finite argument is outside its documented
+                                domain (a semi-axis not > 0, a rotation not
+                                orthonormal, ...). @since 2.2.0 */
 /** @} */
 
 /**

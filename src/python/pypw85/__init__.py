@@ -86,6 +86,7 @@ from ._loader import ABI_MAJOR as _ABI_MAJOR
 __all__ = [
     "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER",
     "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM", "ENOCONV",
+    "EINVAL",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
 ]
 
@@ -124,6 +125,9 @@ ERANGE = _constants.ERANGE
 ENOMEM = _constants.ENOMEM
 #: An iterative method did not converge (the legacy contact functions).
 ENOCONV = _constants.ENOCONV
+#: A finite argument is outside its documented domain (a semi-axis not
+#: > 0, a rotation not orthonormal, ...).
+EINVAL = _constants.EINVAL
 
 #: The version of the libpw85 actually loaded ("MAJOR.MINOR.PATCH", from
 #: its pw85_version()).
