@@ -310,6 +310,213 @@ PW85_API int pw85_overlap(double const r12[PW85_DIM],
                           double const q1[PW85_SYM],
                           double const q2[PW85_SYM], int *result) PW85_NOEXCEPT;
 
+/** @name Ellipsoids from semi-axes and orientation
+ *  @{ */
+/** The tolerance on the orthonormality of a rotation matrix,
+ *  max over (i, j) of |(RᵀR − I)ᵢⱼ|, and on the norm of a quaternion,
+ *  |‖q‖² − 1|, below which the constructors accept them (float data
+ *  converted to double passes).
+ *  @since 2.2.0 */
+#define PW85_UNIT_TOL 1e-6
+/** @} */
+
+/**
+ * @brief The quadratic form of an ellipsoid from its semi-axes and a
+ *        rotation matrix: Q = R·diag(a0², a1², a2²)·Rᵀ (theory, eq. (2)).
+ *
+ * Column j of R is the unit direction of the semi-axis a[j]. R is stored
+ * row by row, `rot[3·i + j] = R_ij`: in NumPy, `R = rot.reshape(3, 3)` and
+ * `R[:, j]` is the direction of `a[j]`; a Fortran array `R(3, 3)` holds Rᵀ
+ * in that memory order (its rows are then the directions). A reflection
+ * (det R = −1) describes the same ellipsoid and is accepted.
+ *
+ * Accuracy: R is used as given (not re-orthonormalised). Every entry is
+ * computed in double-double arithmetic and rounded once: with u = 2⁻⁵³,
+ * |q[k] − Q_k| ≤ u·|Q_k| + 2⁻¹⁰⁰·Σₘ |R_im·R_jm|·aₘ², where Q_k is the
+ * exact value of R·diag(a²)·Rᵀ for the doubles given (entry (i, j)):
+ * correctly rounded but for a cancellation below 2⁻⁴⁷ of the largest
+ * term, at any aspect ratio. Q is exactly symmetric by construction.
+ * @param[in] a the three semi-axes (lengths, each > 0).
+ * @param[in] rot the rotation matrix R (9 doubles, row by row).
+ * @param[out] q the quadratic form Q (a squared length).
+ * @return PW85_SUCCESS;
+ *         PW85_EFAULT if a pointer is NULL;
+ *         PW85_EDOM if an entry of a or rot is NaN or infinite;
+ *         PW85_EINVAL if a semi-axis is not > 0, or if
+ *         max |(RᵀR − I)ᵢⱼ| > PW85_UNIT_TOL;
+ *         PW85_ERANGE if an aₘ² overflows or underflows (q untouched).
+ *         q is written on success only.
+ * @since 2.2.0
+ */
+PW85_API int pw85_ellipsoid_rotation(double const a[PW85_DIM],
+                                     double const rot[PW85_DIM * PW85_DIM],
+                                     double q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief The quadratic form of an ellipsoid from its semi-axes and a unit
+ *        quaternion: Q = R(p)·diag(a0², a1², a2²)·R(p)ᵀ.
+ *
+ * p = (w, x, y, z) = cos(θ/2) + sin(θ/2)·(u_x·i + u_y·j + u_z·k) is the
+ * rotation by θ about the unit axis u that maps the coordinate axes to the
+ * principal directions (a[j] lies along R(p)·e_j): the convention of
+ * HOOMD-blue's and LAMMPS's ellipsoids. p and −p give the same Q. p is
+ * normalised here, so R(p) is a rotation to rounding.
+ *
+ * Accuracy: R(p/‖p‖) and Q are computed in double-double arithmetic and
+ * rounded once: |q[k] − Q_k| ≤ u·|Q_k| + 2⁻¹⁰⁰·maxₘ aₘ² with Q_k exact for
+ * p/‖p‖ and the given a (u = 2⁻⁵³).
+ * @param[in] a the three semi-axes (lengths, each > 0).
+ * @param[in] p the quaternion (w, x, y, z).
+ * @param[out] q the quadratic form Q (a squared length).
+ * @return PW85_SUCCESS; PW85_EFAULT, PW85_EDOM, PW85_ERANGE as
+ *         pw85_ellipsoid_rotation(); PW85_EINVAL if a semi-axis is not > 0
+ *         or if |‖p‖² − 1| > PW85_UNIT_TOL. q is written on success only.
+ * @since 2.2.0
+ */
+PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
+                                       double const p[4],
+                                       double q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief The semi-axes and principal directions of an ellipsoid:
+ *        Q = R·diag(a0², a1², a2²)·Rᵀ, the inverse of
+ *        pw85_ellipsoid_rotation().
+ *
+ * Eigenvectors from GSL's symmetric eigensolver (gsl_eigen_symmv, on Q
+ * scaled by a power of two); each aⱼ² is then the Rayleigh quotient of its
+ * direction, computed in double-double arithmetic, which keeps the small
+ * semi-axes of needles and discs accurate (relative error of aⱼ² of order
+ * u + u²·cond(Q)·‖Q‖/gapⱼ, gapⱼ the distance from aⱼ² to the other
+ * eigenvalues: a few u up to cond(Q) = 1e16 for distinct semi-axes).
+ * Semi-axes sorted in decreasing order, a[0] ≥ a[1] ≥ a[2] > 0; R is a
+ * rotation (det R = +1) stored as in pw85_ellipsoid_rotation(), each of its
+ * first two columns with its entry of largest magnitude positive.
+ * Directions of equal semi-axes (spheroids, spheres) are any orthonormal
+ * basis of their eigenspace.
+ * @param[in] q the quadratic form Q.
+ * @param[out] a the semi-axes, in decreasing order.
+ * @param[out] rot the rotation R (9 doubles, row by row; column j is the
+ *             direction of a[j]).
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
+ *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
+ *         positive definite by the rule above (or an eigenvalue is not > 0
+ *         to double-double precision). a and rot are written on success
+ *         only.
+ * @since 2.2.0
+ */
+PW85_API int pw85_principal_axes(double const q[PW85_SYM],
+                                 double a[PW85_DIM],
+                                 double rot[PW85_DIM * PW85_DIM]) PW85_NOEXCEPT;
+
+/** @name Layout of the output of pw85_contact_geometry()
+ *  Offsets into `double out[PW85_GEOM_SIZE]`. Fixed: a later release adds
+ *  outputs through new functions, never by changing these.
+ *  @{ */
+#define PW85_GEOM_MU2 0     /**< μ², as pw85_contact_function(). @since 2.2.0 */
+#define PW85_GEOM_LAMBDA 1  /**< λ, the maximiser. @since 2.2.0 */
+#define PW85_GEOM_POINT 2   /**< 3 doubles: x − c1, the contact point of
+                                 the scaled ellipsoids relative to c1.
+                                 @since 2.2.0 */
+#define PW85_GEOM_NORMAL 5  /**< 3 doubles: the unit normal at x, from
+                                 ellipsoid 1 towards ellipsoid 2.
+                                 @since 2.2.0 */
+#define PW85_GEOM_SIZE 8    /**< the number of doubles. @since 2.2.0 */
+/** @} */
+
+/** @name Layout of the output of pw85_contact_derivatives()
+ *  Offsets into `double d[PW85_DERIV_SIZE]`; fixed, as above.
+ *  @{ */
+#define PW85_DERIV_R12 0    /**< 3 doubles: ∂μ²/∂r12 (1/length).
+                                 @since 2.2.0 */
+#define PW85_DERIV_ROT1 3   /**< 3 doubles: ∂μ²/∂ω1, ω1 a rotation vector
+                                 (radians) turning ellipsoid 1 about c1.
+                                 @since 2.2.0 */
+#define PW85_DERIV_ROT2 6   /**< 3 doubles: ∂μ²/∂ω2, the same for
+                                 ellipsoid 2 about c2. @since 2.2.0 */
+#define PW85_DERIV_Q1 9     /**< 6 doubles: ∂μ²/∂q1[k], k = 0..5, the
+                                 partial derivatives with respect to the
+                                 six stored entries (1/squared length).
+                                 @since 2.2.0 */
+#define PW85_DERIV_Q2 15    /**< 6 doubles: ∂μ²/∂q2[k]. @since 2.2.0 */
+#define PW85_DERIV_SIZE 21  /**< the number of doubles. @since 2.2.0 */
+/** @} */
+
+/**
+ * @brief The contact function, the contact point and the common normal
+ *        of two ellipsoids.
+ *
+ * One search, that of pw85_contact_function() (same μ², bit for bit),
+ * then λ polished by Newton steps on ω in compensated arithmetic until a
+ * step is below the rounding of λ, and s = Q(λ)⁻¹·r12 solved with
+ * compensated residuals. Then (theory, eqs. (9a), (8)):
+ * x − c1 = (1 − λ)·Q1·s, the point where the ellipsoids scaled by μ touch;
+ * n = s/‖s‖, the outward normal of scaled ellipsoid 1 at x (and the inward
+ * normal of scaled ellipsoid 2), so that n·r12 > 0.
+ *
+ * Accuracy, measured on data/pw85_geometry_pairs.h5 (aspect ratios to 1e6,
+ * near tangency, λ near 0 and 1): see the docs, "Contact geometry, forces
+ * and torques"; of order u·cond(Q(λ)) relative in the norm of each vector.
+ * λ is at least as accurate as pw85_contact_function()'s, and may differ
+ * from it in the last digits.
+ * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
+ * μ², λ → 1 − λ, n → −n (bit for bit) and x − c2 = (x − c1) − r12 (to
+ * rounding).
+ *
+ * @param[in] r12 c2 − c1; r12 = 0 gives μ² = 0, λ = ½, x − c1 = 0 and
+ *                n = 0 (no direction).
+ * @param[in] q1 the quadratic form of the first ellipsoid.
+ * @param[in] q2 the quadratic form of the second ellipsoid.
+ * @param[out] out PW85_GEOM_SIZE doubles, laid out as PW85_GEOM_*.
+ * @return the statuses of pw85_contact_function(), with the same
+ *         meaning; out untouched on error, except PW85_ERANGE when a
+ *         result overflows (μ² = +∞, or x − c1 beyond DBL_MAX): every
+ *         output is then written, some infinite.
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
+                                   double const q1[PW85_SYM],
+                                   double const q2[PW85_SYM],
+                                   double out[PW85_GEOM_SIZE]) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_geometry() and the first derivatives of μ²: for
+ *        forces, torques and changes of shape.
+ *
+ * By the envelope theorem (f is stationary in λ at the maximiser), with
+ * s = Q(λ)⁻¹·r12 and Q(λ) = (1 − λ)·Q1 + λ·Q2:
+ * - ∂μ²/∂r12 = 2λ(1 − λ)·s (the derivative with respect to c2; that with
+ *   respect to c1 is its opposite);
+ * - ∂μ²/∂Q1 = −λ(1 − λ)²·s·sᵀ and ∂μ²/∂Q2 = −λ²(1 − λ)·s·sᵀ as matrices;
+ *   stored as the derivatives with respect to the stored entries, whose
+ *   off-diagonal entries count twice: ∂μ²/∂q1 = −λ(1 − λ)²·(s0², 2·s0·s1,
+ *   2·s0·s2, s1², 2·s1·s2, s2²), so that δμ² = Σₖ (∂μ²/∂q1[k])·δq1[k];
+ * - turning ellipsoid i about its centre by a small rotation vector ω,
+ *   Qᵢ → R(ω)·Qᵢ·R(ω)ᵀ: ∂μ²/∂ω1 = 2λ(1 − λ)²·s × (Q1·s) and
+ *   ∂μ²/∂ω2 = 2λ²(1 − λ)·s × (Q2·s). With g = ∂μ²/∂r12, these are
+ *   g × (x − c1) and (x − c2) × g: the lever arms of the contact point.
+ * For a pair energy U(μ²): the force on ellipsoid 2 is −U′·g, that on
+ * ellipsoid 1 is +U′·g, the torque on ellipsoid i is −U′·∂μ²/∂ωᵢ.
+ * Accuracy: as the contact point (see pw85_contact_geometry()).
+ * Swapping the ellipsoids exchanges ∂μ²/∂ω1 and ∂μ²/∂ω2, ∂μ²/∂q1 and
+ * ∂μ²/∂q2, and negates ∂μ²/∂r12, bit for bit. r12 = 0: μ² is minimal
+ * there, every derivative is 0.
+ *
+ * @param[in] r12 c2 − c1.
+ * @param[in] q1 the quadratic form of the first ellipsoid.
+ * @param[in] q2 the quadratic form of the second ellipsoid.
+ * @param[out] geometry PW85_GEOM_SIZE doubles, as pw85_contact_geometry().
+ * @param[out] d PW85_DERIV_SIZE doubles, laid out as PW85_DERIV_*.
+ * @return as pw85_contact_geometry(); with PW85_ERANGE, both arrays are
+ *         written (a derivative may be infinite, when the input's scale
+ *         is extreme).
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
+                                      double const q1[PW85_SYM],
+                                      double const q2[PW85_SYM],
+                                      double geometry[PW85_GEOM_SIZE],
+                                      double d[PW85_DERIV_SIZE]) PW85_NOEXCEPT;
+
 #ifdef __cplusplus
 } /* extern "C" */
 #endif

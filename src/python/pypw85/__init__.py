@@ -84,7 +84,10 @@ from ._libpw85 import path as _library_path
 from ._loader import ABI_MAJOR as _ABI_MAJOR
 
 __all__ = [
-    "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER",
+    "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER", "UNIT_TOL",
+    "GEOM_MU2", "GEOM_LAMBDA", "GEOM_POINT", "GEOM_NORMAL", "GEOM_SIZE",
+    "DERIV_R12", "DERIV_ROT1", "DERIV_ROT2", "DERIV_Q1", "DERIV_Q2",
+    "DERIV_SIZE",
     "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM", "ENOCONV",
     "EINVAL",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
@@ -107,6 +110,34 @@ MAX_ITER = _constants.MAX_ITER
 #: when Brent's bracket did not confirm the first Newton run (in
 #: `contact_function`).
 NR_ITER = _constants.NR_ITER
+#: The tolerance on the orthonormality of a rotation matrix and on the unit
+#: norm of a quaternion (the ellipsoid constructors).
+UNIT_TOL = _constants.UNIT_TOL
+
+# Offsets into the arrays that contact_geometry and contact_derivatives
+# return (the layouts of pw85.h).
+#: μ² in the output of `contact_geometry`.
+GEOM_MU2 = _constants.GEOM_MU2
+#: λ in the output of `contact_geometry`.
+GEOM_LAMBDA = _constants.GEOM_LAMBDA
+#: The first of 3 entries: the contact point minus c1.
+GEOM_POINT = _constants.GEOM_POINT
+#: The first of 3 entries: the unit normal, from ellipsoid 1 to 2.
+GEOM_NORMAL = _constants.GEOM_NORMAL
+#: The length of the output of `contact_geometry`.
+GEOM_SIZE = _constants.GEOM_SIZE
+#: The first of 3 entries: ∂μ²/∂r12.
+DERIV_R12 = _constants.DERIV_R12
+#: The first of 3 entries: ∂μ²/∂ω1 (a rotation of ellipsoid 1 about c1).
+DERIV_ROT1 = _constants.DERIV_ROT1
+#: The first of 3 entries: ∂μ²/∂ω2 (a rotation of ellipsoid 2 about c2).
+DERIV_ROT2 = _constants.DERIV_ROT2
+#: The first of 6 entries: ∂μ²/∂q1[k], the stored entries of Q1.
+DERIV_Q1 = _constants.DERIV_Q1
+#: The first of 6 entries: ∂μ²/∂q2[k].
+DERIV_Q2 = _constants.DERIV_Q2
+#: The length of the derivatives that `contact_derivatives` returns.
+DERIV_SIZE = _constants.DERIV_SIZE
 
 # The status codes (values never change once released).
 #: Success.

@@ -15,6 +15,21 @@ LAMBDA_ATOL = 1e-6  # PW85_LAMBDA_ATOL
 MAX_ITER = 25  # PW85_MAX_ITER
 NR_ITER = 3  # PW85_NR_ITER
 
+UNIT_TOL = 1e-6  # PW85_UNIT_TOL
+
+# Offsets into the outputs of contact_geometry and contact_derivatives.
+GEOM_MU2 = 0  # PW85_GEOM_MU2
+GEOM_LAMBDA = 1  # PW85_GEOM_LAMBDA
+GEOM_POINT = 2  # PW85_GEOM_POINT
+GEOM_NORMAL = 5  # PW85_GEOM_NORMAL
+GEOM_SIZE = 8  # PW85_GEOM_SIZE
+DERIV_R12 = 0  # PW85_DERIV_R12
+DERIV_ROT1 = 3  # PW85_DERIV_ROT1
+DERIV_ROT2 = 6  # PW85_DERIV_ROT2
+DERIV_Q1 = 9  # PW85_DERIV_Q1
+DERIV_Q2 = 15  # PW85_DERIV_Q2
+DERIV_SIZE = 21  # PW85_DERIV_SIZE
+
 # The status codes; their meanings are documented in __init__.py, their
 # messages come from pw85_strerror().
 SUCCESS = 0  # PW85_SUCCESS
