@@ -84,4 +84,17 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
   return true;
 }
 
+PW85_FMA_CLONES
+bool solve_dd(double lambda, double const r[dim], double const q1[sym],
+              double const q2[sym], double s[dim], double s_lo[dim]) noexcept {
+  double hi[sym], lo[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
+  dd a[sym];
+  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
+  LdlDd fdd;
+  if (!ldl_decomp_dd(a, &fdd)) return false;
+  ldl_solve_quad_dd(fdd, r, s, s_lo);
+  return true;
+}
+
 }  // namespace pw85::detail

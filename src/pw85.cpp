@@ -8,8 +8,10 @@
 #include "checks.hpp"
 #include "cholesky.hpp"
 #include "contact.hpp"
+#include "ellipsoid.hpp"
 #include "f.hpp"
 #include "facade.hpp"
+#include "geometry.hpp"
 #include "overlap.hpp"
 #include "spheroid.hpp"
 #include "status.hpp"
@@ -22,6 +24,20 @@ using core::Status;
 
 static_assert(PW85_DIM == core::dim && PW85_SYM == core::sym,
               "pw85.h and the core disagree on sizes");
+static_assert(PW85_GEOM_MU2 == core::geom::mu2 &&
+                  PW85_GEOM_LAMBDA == core::geom::lambda &&
+                  PW85_GEOM_POINT == core::geom::point &&
+                  PW85_GEOM_NORMAL == core::geom::normal &&
+                  PW85_GEOM_SIZE == core::geom::size &&
+                  PW85_DERIV_R12 == core::deriv::r12 &&
+                  PW85_DERIV_ROT1 == core::deriv::rot1 &&
+                  PW85_DERIV_ROT2 == core::deriv::rot2 &&
+                  PW85_DERIV_Q1 == core::deriv::q1 &&
+                  PW85_DERIV_Q2 == core::deriv::q2 &&
+                  PW85_DERIV_SIZE == core::deriv::size,
+              "pw85.h and the core disagree on the layouts of the outputs");
+static_assert(PW85_UNIT_TOL == core::unit_tol,
+              "pw85.h and the core disagree on PW85_UNIT_TOL");
 static_assert(PW85_LAMBDA_ATOL == core::lambda_atol &&
                   PW85_MAX_ITER == core::brent_max_iter &&
                   PW85_NR_ITER == core::restart_newton_iter,
@@ -113,6 +129,44 @@ int pw85_overlap(double const r12[PW85_DIM], double const q1[PW85_SYM],
   Status const status = core::check_pointers_and_finite(r12, q1, q2, result);
   if (status != Status::success) return to_code(status);
   return to_code(core::overlap(r12, q1, q2, result));
+}
+
+int pw85_ellipsoid_rotation(double const a[PW85_DIM],
+                            double const rot[PW85_DIM * PW85_DIM],
+                            double q[PW85_SYM]) noexcept {
+  if (a == nullptr || rot == nullptr || q == nullptr) return PW85_EFAULT;
+  return to_code(core::ellipsoid_rotation(a, rot, q));
+}
+
+int pw85_ellipsoid_quaternion(double const a[PW85_DIM], double const p[4],
+                              double q[PW85_SYM]) noexcept {
+  if (a == nullptr || p == nullptr || q == nullptr) return PW85_EFAULT;
+  return to_code(core::ellipsoid_quaternion(a, p, q));
+}
+
+int pw85_principal_axes(double const q[PW85_SYM], double a[PW85_DIM],
+                        double rot[PW85_DIM * PW85_DIM]) noexcept {
+  if (q == nullptr || a == nullptr || rot == nullptr) return PW85_EFAULT;
+  return to_code(core::principal_axes(q, a, rot));
+}
+
+int pw85_contact_geometry(double const r12[PW85_DIM],
+                          double const q1[PW85_SYM], double const q2[PW85_SYM],
+                          double out[PW85_GEOM_SIZE]) noexcept {
+  Status const status = core::check_pointers_and_finite(r12, q1, q2, out);
+  if (status != Status::success) return to_code(status);
+  return to_code(core::contact_geometry(r12, q1, q2, out, nullptr));
+}
+
+int pw85_contact_derivatives(double const r12[PW85_DIM],
+                             double const q1[PW85_SYM],
+                             double const q2[PW85_SYM],
+                             double geometry[PW85_GEOM_SIZE],
+                             double d[PW85_DERIV_SIZE]) noexcept {
+  Status status = core::check_pointers_and_finite(r12, q1, q2, geometry);
+  if (status == Status::success && d == nullptr) status = Status::null_pointer;
+  if (status != Status::success) return to_code(status);
+  return to_code(core::contact_geometry(r12, q1, q2, geometry, d));
 }
 
 }  // extern "C"
