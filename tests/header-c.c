@@ -8,6 +8,16 @@
 int main(void) {
   double const r[PW85_DIM] = {1., 0., 0.};
   double const q[PW85_SYM] = {1., 0., 0., 1., 0., 1.};
-  double out[2];
-  return pw85_contact_function(r, q, q, out) == PW85_SUCCESS ? 0 : 1;
+  double out[2], g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
+  double const a[PW85_DIM] = {1., 1., 1.};
+  double const rot[PW85_DIM * PW85_DIM] = {1., 0., 0., 0., 1., 0., 0., 0., 1.};
+  double const p[4] = {1., 0., 0., 0.};
+  double q2[PW85_SYM], axes[PW85_DIM], dirs[PW85_DIM * PW85_DIM];
+  int ok = pw85_contact_function(r, q, q, out) == PW85_SUCCESS;
+  ok = ok && pw85_ellipsoid_rotation(a, rot, q2) == PW85_SUCCESS;
+  ok = ok && pw85_ellipsoid_quaternion(a, p, q2) == PW85_SUCCESS;
+  ok = ok && pw85_principal_axes(q, axes, dirs) == PW85_SUCCESS;
+  ok = ok && pw85_contact_geometry(r, q, q, g) == PW85_SUCCESS;
+  ok = ok && pw85_contact_derivatives(r, q, q, g, d) == PW85_SUCCESS;
+  return ok ? 0 : 1;
 }

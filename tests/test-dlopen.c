@@ -26,6 +26,12 @@ typedef void (*residual_fn)(double, double const *, double const *,
                             double const *, double *);
 typedef int (*contact_fn)(double const *, double const *, double const *,
                           double *);
+typedef int (*overlap_fn)(double const *, double const *, double const *,
+                          int *);
+typedef int (*make_fn)(double const *, double const *, double *);
+typedef int (*axes_fn)(double const *, double *, double *);
+typedef int (*derivatives_fn)(double const *, double const *, double const *,
+                              double *, double *);
 
 static void *sym(void *lib, const char *name) {
   void *p = dlsym(lib, name);
@@ -53,6 +59,11 @@ int main(int argc, char **argv) {
   f_neg_fn f_neg_p;
   residual_fn residual_p;
   contact_fn contact_p;
+  overlap_fn overlap_p;
+  make_fn rotation_p, quaternion_p;
+  axes_fn axes_p;
+  contact_fn geometry_p;
+  derivatives_fn derivatives_p;
   void *p;
 #define LOAD(var, name)      \
   p = sym(lib, name);        \
@@ -66,6 +77,12 @@ int main(int argc, char **argv) {
   LOAD(f_neg_p, "pw85_f_neg");
   LOAD(residual_p, "pw85__residual");
   LOAD(contact_p, "pw85_contact_function");
+  LOAD(overlap_p, "pw85_overlap");
+  LOAD(rotation_p, "pw85_ellipsoid_rotation");
+  LOAD(quaternion_p, "pw85_ellipsoid_quaternion");
+  LOAD(axes_p, "pw85_principal_axes");
+  LOAD(geometry_p, "pw85_contact_geometry");
+  LOAD(derivatives_p, "pw85_contact_derivatives");
 
   CHECK(strcmp(strerror_p(0), "success") == 0);
   CHECK(strcmp(version_p(), PW85_EXPECTED_VERSION) == 0);
@@ -101,6 +118,19 @@ int main(int argc, char **argv) {
   CHECK(contact_p(r, q1, q2, out) == 0);
   CHECK(fabs(out[0] - 3.3627060406386292) < 1e-12);
   CHECK(contact_p(r, q1, NULL, out) == 1);
+  int answer = 0;
+  CHECK(overlap_p(r, q1, q2, &answer) == 0 && answer == 1);
+
+  /* Semi-axes (3, 2, 1) turned by a quarter turn about z, both ways. */
+  double const semi[3] = {3., 2., 1.}, turn[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  double const unit[4] = {1., 0., 0., 0.};
+  double q3[6], axes[3], rot[9];
+  CHECK(rotation_p(semi, turn, q3) == 0 && q3[0] == 4. && q3[3] == 9.);
+  CHECK(quaternion_p(semi, unit, q3) == 0 && q3[0] == 9. && q3[3] == 4.);
+  CHECK(axes_p(q3, axes, rot) == 0 && axes[0] == 3. && axes[2] == 1.);
+  double g[8], g2[8], d[21];
+  CHECK(geometry_p(r, q1, q2, g) == 0 && g[0] == out[0]);
+  CHECK(derivatives_p(r, q1, q2, g2, d) == 0 && g2[0] == out[0]);
 
   CHECK(dlclose(lib) == 0);
   printf("dlopen: every exported function called\n");

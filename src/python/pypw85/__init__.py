@@ -91,6 +91,8 @@ __all__ = [
     "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM", "ENOCONV",
     "EINVAL",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
+    "contact_geometry", "contact_derivatives", "ellipsoid_rotation",
+    "ellipsoid_quaternion", "principal_axes", "pack_sym", "unpack_sym",
 ]
 
 # The constants of pw85.h: the values are those of _constants (checked
@@ -171,6 +173,11 @@ _c_f_neg = _lib.pw85_f_neg
 _c_residual = _lib.pw85__residual
 _c_contact_function = _lib.pw85_contact_function
 _c_overlap = _lib.pw85_overlap
+_c_ellipsoid_rotation = _lib.pw85_ellipsoid_rotation
+_c_ellipsoid_quaternion = _lib.pw85_ellipsoid_quaternion
+_c_principal_axes = _lib.pw85_principal_axes
+_c_contact_geometry = _lib.pw85_contact_geometry
+_c_contact_derivatives = _lib.pw85_contact_derivatives
 
 
 # ---------------------------------------------------------------------------
@@ -531,3 +538,290 @@ def overlap(r12, q1, q2):
         raise Error(status, "overlap",
                     "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
     return result.value
+
+
+# ---------------------------------------------------------------------------
+# Ellipsoids in full (since 2.2.0): constructors, principal axes, contact
+# geometry and derivatives. Layouts as in pw85.h.
+
+def pack_sym(a, rtol=1e-12):
+    """Return the 6-entry storage of a symmetric 3×3 matrix.
+
+    Parameters
+    ----------
+    a : array_like, shape (3, 3)
+        A symmetric matrix.
+    rtol : float, optional
+        The largest accepted asymmetry, max abs(a − aᵀ), relative to
+        max abs(a).
+
+    Returns
+    -------
+    numpy.ndarray, shape (6,)
+        ``[a00, a01, a02, a11, a12, a22]``: the upper triangle, row by row.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If a has the wrong shape or type, or is not symmetric to rtol.
+    """
+    m = np.asarray(a)
+    if m.dtype.kind not in "iuf":
+        raise TypeError("a: expected real numbers, got an array of dtype %s"
+                        % m.dtype)
+    if m.shape != (DIM, DIM):
+        raise ValueError("a: expected shape (3, 3), got %s" % (m.shape,))
+    m = m.astype(np.float64)
+    if np.abs(m - m.T).max() > rtol * np.abs(m).max():
+        raise ValueError("a: not symmetric (max abs(a - a.T) = %g)"
+                         % np.abs(m - m.T).max())
+    return m[np.triu_indices(DIM)].copy()
+
+
+def unpack_sym(q):
+    """Return the symmetric 3×3 matrix of a 6-entry storage (`pack_sym`).
+
+    Parameters
+    ----------
+    q : array_like, shape (6,)
+        ``[q00, q01, q02, q11, q12, q22]``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3, 3)
+
+    Raises
+    ------
+    ValueError, TypeError
+        If q has the wrong shape or type.
+    """
+    q = _vector("q", q, SYM)
+    return np.array([[q[0], q[1], q[2]], [q[1], q[3], q[4]],
+                     [q[2], q[4], q[5]]])
+
+
+def _rotation(name, rot):
+    """rot as a C-contiguous float64 array of 9 entries, from (3, 3) or
+    (9,)."""
+    m = np.asarray(rot)
+    if m.shape == (DIM, DIM):
+        m = m.reshape(DIM * DIM)
+    return _vector(name, m, DIM * DIM)
+
+
+def ellipsoid_rotation(a, rot, q=None):
+    """Return Q = R·diag(a²)·Rᵀ, the ellipsoid of semi-axes a along the
+    columns of R.
+
+    Each entry is computed in double-double arithmetic and rounded once
+    (see pw85.h for the error bound); R is used as given.
+
+    Parameters
+    ----------
+    a : array_like, shape (3,)
+        The semi-axes (lengths, each > 0).
+    rot : array_like, shape (3, 3) or (9,)
+        The rotation R, column j the direction of a[j] (row by row when
+        flat: ``rot[3*i + j] = R[i, j]``), orthonormal to `UNIT_TOL`; a
+        reflection is accepted.
+    q : numpy.ndarray, shape (6,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    q : numpy.ndarray, shape (6,)
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `EDOM` (NaN or infinite input), `EINVAL` (a semi-axis not > 0, R
+        not orthonormal), `ERANGE` (a² out of the normal range). q is
+        untouched.
+    """
+    a = _vector("a", a, DIM)
+    rot = _rotation("rot", rot)
+    q = _output("q", q, SYM)
+    a, rot = _unaliased(q, a, rot)
+    status = _c_ellipsoid_rotation(a.ctypes.data, rot.ctypes.data,
+                                   q.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "ellipsoid_rotation", "a = %r, rot = %r"
+                    % (a, rot.reshape(DIM, DIM)))
+    return q
+
+
+def ellipsoid_quaternion(a, p, q=None):
+    """Return the ellipsoid of semi-axes a turned by the unit quaternion p.
+
+    Q = R(p)·diag(a²)·R(p)ᵀ, where R(p) maps the coordinate axes onto the
+    principal directions (v ↦ p·v·p*, the convention of HOOMD-blue and
+    LAMMPS); p is normalised, and computed with, in double-double.
+
+    Parameters
+    ----------
+    a : array_like, shape (3,)
+        The semi-axes (lengths, each > 0).
+    p : array_like, shape (4,)
+        The quaternion (w, x, y, z), of norm 1 to `UNIT_TOL` (on its
+        square).
+    q : numpy.ndarray, shape (6,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    q : numpy.ndarray, shape (6,)
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `EDOM`, `EINVAL` (a semi-axis not > 0, p not of unit norm),
+        `ERANGE`. q is untouched.
+    """
+    a = _vector("a", a, DIM)
+    p = _vector("p", p, 4)
+    q = _output("q", q, SYM)
+    a, p = _unaliased(q, a, p)
+    status = _c_ellipsoid_quaternion(a.ctypes.data, p.ctypes.data,
+                                     q.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "ellipsoid_quaternion", "a = %r, p = %r" % (a, p))
+    return q
+
+
+def principal_axes(q):
+    """Return the semi-axes and principal directions of an ellipsoid.
+
+    The inverse of `ellipsoid_rotation`: eigenvectors from GSL's symmetric
+    eigensolver, semi-axes from their Rayleigh quotients in double-double
+    (accurate to a few ulps even for the small axes of needles and discs
+    with distinct semi-axes; see pw85.h).
+
+    Parameters
+    ----------
+    q : array_like, shape (6,)
+        The quadratic form Q.
+
+    Returns
+    -------
+    a : numpy.ndarray, shape (3,)
+        The semi-axes, in decreasing order.
+    rot : numpy.ndarray, shape (3, 3)
+        The rotation R (det +1): ``rot[:, j]`` is the direction of
+        ``a[j]``; in columns 0 and 1, the entry of largest magnitude is
+        positive.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If q has the wrong shape or type.
+    Error
+        `EDOM`, `ENOTPOSDEF`.
+    """
+    q = _vector("q", q, SYM)
+    a = np.empty(DIM)
+    rot = np.empty((DIM, DIM))
+    status = _c_principal_axes(q.ctypes.data, a.ctypes.data, rot.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "principal_axes", "q = %r" % q)
+    return a, rot
+
+
+def contact_geometry(r12, q1, q2, out=None):
+    """Return μ², λ, the contact point and the common normal.
+
+    One search (that of `contact_function`: the same μ², bit for bit), λ
+    polished, then ``x − c1 = (1 − λ)·Q1·s`` and ``n = s/‖s‖`` with
+    s = Q(λ)⁻¹·r12 (seed, chapter 3, eqs. (8), (9a)). See the docs page
+    "Contact geometry, forces and torques".
+
+    Parameters
+    ----------
+    r12, q1, q2
+        As for `contact_function`.
+    out : numpy.ndarray, shape (8,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    out : numpy.ndarray, shape (8,)
+        ``out[GEOM_MU2]`` = μ², ``out[GEOM_LAMBDA]`` = λ,
+        ``out[GEOM_POINT:GEOM_POINT + 3]`` = x − c1 (the point where the
+        ellipsoids scaled by μ touch), ``out[GEOM_NORMAL:GEOM_NORMAL + 3]``
+        = the unit normal there, from ellipsoid 1 towards ellipsoid 2.
+        r12 = 0 gives μ² = 0, λ = ½, zero point and normal.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        As `contact_function`; with `ERANGE` for an overflow, out holds
+        every output (some infinite).
+    """
+    r12 = _vector("r12", r12, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    out = _output("out", out, GEOM_SIZE)
+    r12, q1, q2 = _unaliased(out, r12, q1, q2)
+    status = _c_contact_geometry(r12.ctypes.data, q1.ctypes.data,
+                                 q2.ctypes.data, out.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "contact_geometry",
+                    "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
+    return out
+
+
+def contact_derivatives(r12, q1, q2, geometry=None, d=None):
+    """Return the contact geometry and the first derivatives of μ².
+
+    By the envelope theorem, with s = Q(λ)⁻¹·r12: ∂μ²/∂r12 = 2λ(1−λ)·s;
+    ∂μ²/∂ω1 = 2λ(1−λ)²·s × (Q1·s) and ∂μ²/∂ω2 = 2λ²(1−λ)·s × (Q2·s) for
+    a rotation ωᵢ (radians) of ellipsoid i about its centre; and the
+    derivatives with respect to the six stored entries of q1 and q2,
+    −λ(1−λ)²·(s0², 2s0s1, 2s0s2, s1², 2s1s2, s2²) and
+    −λ²(1−λ)·(the same). For a pair energy U(μ²), the force on ellipsoid 2
+    is −U′·∂μ²/∂r12 and the torque on ellipsoid i is −U′·∂μ²/∂ωᵢ.
+
+    Parameters
+    ----------
+    r12, q1, q2
+        As for `contact_function`.
+    geometry : numpy.ndarray, shape (8,), float64, optional
+        Preallocated output for the geometry (as `contact_geometry`).
+    d : numpy.ndarray, shape (21,), float64, optional
+        Preallocated output for the derivatives.
+
+    Returns
+    -------
+    geometry : numpy.ndarray, shape (8,)
+        As `contact_geometry`.
+    d : numpy.ndarray, shape (21,)
+        ``d[DERIV_R12:DERIV_R12 + 3]``, ``d[DERIV_ROT1:DERIV_ROT1 + 3]``,
+        ``d[DERIV_ROT2:DERIV_ROT2 + 3]``, ``d[DERIV_Q1:DERIV_Q1 + 6]``,
+        ``d[DERIV_Q2:DERIV_Q2 + 6]``.
+
+    Raises
+    ------
+    ValueError, TypeError, Error
+        As `contact_geometry`.
+    """
+    r12 = _vector("r12", r12, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    geometry = _output("geometry", geometry, GEOM_SIZE)
+    d = _output("d", d, DERIV_SIZE)
+    if np.may_share_memory(geometry, d):
+        raise ValueError("geometry and d: expected separate arrays")
+    r12, q1, q2 = _unaliased(geometry, r12, q1, q2)
+    r12, q1, q2 = _unaliased(d, r12, q1, q2)
+    status = _c_contact_derivatives(r12.ctypes.data, q1.ctypes.data,
+                                    q2.ctypes.data, geometry.ctypes.data,
+                                    d.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "contact_derivatives",
+                    "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
+    return geometry, d

@@ -28,6 +28,11 @@ LIBPW85 = {
                                      _DOUBLE_P]),
     "pw85_overlap": (_INT, [_DOUBLE_P, _DOUBLE_P, _DOUBLE_P,
                             ctypes.POINTER(_INT)]),
+    "pw85_ellipsoid_rotation": (_INT, [_DOUBLE_P] * 3),
+    "pw85_ellipsoid_quaternion": (_INT, [_DOUBLE_P] * 3),
+    "pw85_principal_axes": (_INT, [_DOUBLE_P] * 3),
+    "pw85_contact_geometry": (_INT, [_DOUBLE_P] * 4),
+    "pw85_contact_derivatives": (_INT, [_DOUBLE_P] * 5),
 }
 
 #: libpw85_legacy (include/pw85/pw85_legacy.h).
