@@ -9,10 +9,12 @@
 #include <cfloat>
 #include <cmath>
 
+#include "checks.hpp"
 #include "compensated.hpp"
 #include "contact.hpp"
 #include "dd.hpp"
 #include "evaluate.hpp"
+#include "scaling.hpp"
 #include "tolerances.hpp"
 
 namespace pw85::detail {
@@ -45,7 +47,9 @@ double polish(Problem const &p, double lambda0) noexcept {
   return lambda;
 }
 
-// s = Q(λ)⁻¹·r as s + s_lo (tolerances.hpp, geometry_refine_cond).
+// s = Q(λ)⁻¹·r as s + s_lo (tolerances.hpp, geometry_refine_cond); false
+// when no factorisation succeeds, or s is not finite or is zero (both only
+// far beyond the domain).
 bool solve_accurately(Problem const &p, double lambda, double s[dim],
                       double s_lo[dim]) noexcept {
   double hi[sym], lo[sym];
@@ -64,7 +68,13 @@ bool solve_accurately(Problem const &p, double lambda, double s[dim],
     }
     return true;
   }
-  return solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo);
+  if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo)) return true;
+  // Beyond the domain (entries spanning most of the range of a double),
+  // where even the double-double factors fail: the plain solve, if any.
+  if (!ldl_decomp(hi, &fac)) return false;
+  ldl_solve(fac, p.r, s);
+  for (int i = 0; i < dim; ++i) s_lo[i] = 0.0;
+  return all_finite<dim>(s) && (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0);
 }
 
 // Q·s for s = s + s_lo, as t + t_lo (t = the rounded value).
@@ -132,24 +142,36 @@ Status contact_geometry(double const r[dim], double const q1[sym],
     double const lambda =
         p.moderate ? polish<true>(p, c.lambda) : polish<false>(p, c.lambda);
     double s[dim], s_lo[dim];
-    if (!solve_accurately(p, lambda, s, s_lo))
-      return Status::not_positive_definite;
+    if (!solve_accurately(p, lambda, s, s_lo)) return Status::out_of_range;
+    // Everything below is computed from s·2^−es and Qᵢ'·2^−eq, both of
+    // magnitude below 1 (exact scalings by powers of two), so that no
+    // product overflows whatever the input's range; the exponents are
+    // put back at the end.
+    int const es = exponent(std::max(std::max(std::fabs(s[0]), std::fabs(s[1])),
+                                     std::fabs(s[2])));
+    int const eq = exponent(std::max(std::max(std::max(p.q1[0], p.q1[3]), p.q1[5]),
+                                     std::max(std::max(p.q2[0], p.q2[3]), p.q2[5])));
+    double q1[sym], q2[sym];
+    for (int k = 0; k < sym; ++k) {
+      q1[k] = times_pow2(p.q1[k], -eq);
+      q2[k] = times_pow2(p.q2[k], -eq);
+    }
+    for (int i = 0; i < dim; ++i) {
+      s[i] = times_pow2(s[i], -es);
+      s_lo[i] = times_pow2(s_lo[i], -es);
+    }
     double const u = lambda, v = 1.0 - lambda;
     double t1[dim], t1_lo[dim], t2[dim], t2_lo[dim];
-    sym_mul_dd(p.q1, s, s_lo, t1, t1_lo);  // Q1'·s
-    sym_mul_dd(p.q2, s, s_lo, t2, t2_lo);  // Q2'·s
+    sym_mul_dd(q1, s, s_lo, t1, t1_lo);  // Q1'·s, scaled
+    sym_mul_dd(q2, s, s_lo, t2, t2_lo);  // Q2'·s, scaled
     // s is that of the input (Q'(λ') = Q(λ), r unchanged), and x − c1 is
     // (1 − λ)·Q1·s (9a) in the input's terms: (1 − λ')·Q1'·s, or λ'·Q2'·s
     // when the problem is swapped.
     double *point = out + geom::point;
     for (int i = 0; i < dim; ++i) point[i] = p.swapped ? u * t2[i] : v * t1[i];
-    // n = s/‖s‖, ‖s‖ taken on s/max|sᵢ| so that no square overflows.
-    double const big = std::max(std::max(std::fabs(s[0]), std::fabs(s[1])),
-                                std::fabs(s[2]));
-    double e[dim];
-    for (int i = 0; i < dim; ++i) e[i] = s[i] / big;
-    double const norm = std::sqrt(dot(e, e));
-    for (int i = 0; i < dim; ++i) out[geom::normal + i] = e[i] / norm;
+    // n = s/‖s‖ (s scaled: no square overflows).
+    double const norm = std::sqrt(dot(s, s));
+    for (int i = 0; i < dim; ++i) out[geom::normal + i] = s[i] / norm;
     out[geom::lambda] = p.swapped ? v : u;
     // The envelope theorem: ∂μ²/∂y = ∂f/∂y at λ* for every input y.
     double const w = u * v;
@@ -175,12 +197,13 @@ Status contact_geometry(double const r[dim], double const q1[sym],
       der[second_q + k] = -w2 * ss;
     }
     // Back to the input's scale: r = r'·2^a, Q = Q'·2^b, so s = s'·2^(a−b),
-    // x − c1 scales as r, ∂μ²/∂r as s, ∂μ²/∂ω as μ², ∂μ²/∂q as s².
+    // x − c1 scales as r, ∂μ²/∂r as s, ∂μ²/∂ω as μ², ∂μ²/∂q as s²; and the
+    // scalings by 2^es and 2^eq above.
     int const a = p.r_exp, b = p.q_exp;
-    scale_back(point, dim, a);
-    scale_back(der + deriv::r12, dim, a - b);
-    scale_back(der + deriv::rot1, 2 * dim, 2 * a - b);
-    scale_back(der + deriv::q1, 2 * sym, 2 * (a - b));
+    scale_back(point, dim, a + eq + es);
+    scale_back(der + deriv::r12, dim, a - b + es);
+    scale_back(der + deriv::rot1, 2 * dim, 2 * a - b + 2 * es + eq);
+    scale_back(der + deriv::q1, 2 * sym, 2 * (a - b + es));
   }
   bool const overflow = std::isinf(out[geom::mu2]) ||
                         any_infinite(out + geom::point, dim) ||

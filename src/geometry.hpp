@@ -22,8 +22,9 @@ constexpr int r12 = 0, rot1 = 3, rot2 = 6, q1 = 9, q2 = 15, size = 21;
 // for input that passed check_pointers_and_finite(). Returns
 // Status::success; Status::out_of_range with every output written when one
 // overflows; the statuses of contact_search() with nothing written; or
-// Status::not_positive_definite, nothing written, when Q(λ) does not
-// factorise even in double-double (not expected inside the domain).
+// Status::out_of_range, nothing written, when Q(λ) does not factorise at
+// the maximiser, in double-double nor in double (far beyond the domain:
+// entries spanning most of the range of a double).
 Status contact_geometry(double const r[dim], double const q1[sym],
                         double const q2[sym], double geometry[geom::size],
                         double d[deriv::size]) noexcept;

@@ -459,8 +459,8 @@ PW85_API int pw85_principal_axes(double const q[PW85_SYM],
  * λ is at least as accurate as pw85_contact_function()'s, and may differ
  * from it in the last digits.
  * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
- * μ², λ → 1 − λ, n → −n (bit for bit) and x − c2 = (x − c1) − r12 (to
- * rounding).
+ * μ² (bit for bit), λ → 1 − λ (rounded), n → −n (exactly; a zero may
+ * change sign) and x − c2 = (x − c1) − r12 (to rounding).
  *
  * @param[in] r12 c2 − c1; r12 = 0 gives μ² = 0, λ = ½, x − c1 = 0 and
  *                n = 0 (no direction).
@@ -470,7 +470,11 @@ PW85_API int pw85_principal_axes(double const q[PW85_SYM],
  * @return the statuses of pw85_contact_function(), with the same
  *         meaning; out untouched on error, except PW85_ERANGE when a
  *         result overflows (μ² = +∞, or x − c1 beyond DBL_MAX): every
- *         output is then written, some infinite.
+ *         output is then written, some infinite. Also PW85_ERANGE, out
+ *         untouched, where pw85_contact_function() succeeds but Q(λ)
+ *         cannot be factorised at the maximiser, in double-double nor in
+ *         double: only far beyond the documented domain, for entries
+ *         spanning most of the range of a double.
  * @since 2.2.0
  */
 PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
@@ -498,7 +502,7 @@ PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
  * ellipsoid 1 is +U′·g, the torque on ellipsoid i is −U′·∂μ²/∂ωᵢ.
  * Accuracy: as the contact point (see pw85_contact_geometry()).
  * Swapping the ellipsoids exchanges ∂μ²/∂ω1 and ∂μ²/∂ω2, ∂μ²/∂q1 and
- * ∂μ²/∂q2, and negates ∂μ²/∂r12, bit for bit. r12 = 0: μ² is minimal
+ * ∂μ²/∂q2, and negates ∂μ²/∂r12, exactly (a zero may change sign). r12 = 0: μ² is minimal
  * there, every derivative is 0.
  *
  * @param[in] r12 c2 − c1.
