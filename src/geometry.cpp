@@ -50,13 +50,19 @@ double polish(Problem const &p, double lambda0) noexcept {
 // s = Q(λ)⁻¹·r as s + s_lo (tolerances.hpp, geometry_refine_cond); false
 // when no factorisation succeeds, or s is not finite or is zero (both only
 // far beyond the domain).
+// A usable solution: finite, with a finite low part, and not zero.
+bool usable(double const s[dim], double const s_lo[dim]) noexcept {
+  return all_finite<dim>(s) && all_finite<dim>(s_lo) &&
+         (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0);
+}
+
 bool solve_accurately(Problem const &p, double lambda, double s[dim],
                       double s_lo[dim]) noexcept {
   double hi[sym], lo[sym];
   combine_dd(lambda, p.q1, p.q2, hi, lo);
   Ldl fac;
-  if (ldl_decomp(hi, &fac) &&
-      ldl_cond_bound(hi, fac) <= geometry_refine_cond) {
+  bool const plain = ldl_decomp(hi, &fac);
+  if (plain && ldl_cond_bound(hi, fac) <= geometry_refine_cond) {
     double rho[dim], ds[dim];
     ldl_solve(fac, p.r, s);
     compensated_residual(hi, lo, p.r, s, rho);
@@ -66,15 +72,16 @@ bool solve_accurately(Problem const &p, double lambda, double s[dim],
       s[i] = t.hi;
       s_lo[i] = t.lo;
     }
-    return true;
+    if (usable(s, s_lo)) return true;
   }
-  if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo)) return true;
+  if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo) && usable(s, s_lo))
+    return true;
   // Beyond the domain (entries spanning most of the range of a double),
   // where even the double-double factors fail: the plain solve, if any.
-  if (!ldl_decomp(hi, &fac)) return false;
+  if (!plain) return false;
   ldl_solve(fac, p.r, s);
   for (int i = 0; i < dim; ++i) s_lo[i] = 0.0;
-  return all_finite<dim>(s) && (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0);
+  return usable(s, s_lo);
 }
 
 // Q·s for s = s + s_lo, as t + t_lo (t = the rounded value).

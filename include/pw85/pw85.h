@@ -385,9 +385,10 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
  * Eigenvectors from GSL's symmetric eigensolver (gsl_eigen_symmv, on Q
  * scaled by a power of two); each aⱼ² is then the Rayleigh quotient of its
  * direction, computed in double-double arithmetic, which keeps the small
- * semi-axes of needles and discs accurate (relative error of aⱼ² of order
- * u + u²·cond(Q)·‖Q‖/gapⱼ, gapⱼ the distance from aⱼ² to the other
- * eigenvalues: a few u up to cond(Q) = 1e16 for distinct semi-axes).
+ * semi-axes of needles and discs accurate: relative error of aⱼ of order
+ * u·(1 + u·(a0/aⱼ)²·‖Q‖/gapⱼ), gapⱼ the distance from aⱼ² to the other
+ * eigenvalues (measured within 1.94 times that on 310 forms with aspect
+ * ratios to 1e8: a few u for distinct semi-axes; test-geometry-refs).
  * Semi-axes sorted in decreasing order, a[0] ≥ a[1] ≥ a[2] > 0; R is a
  * rotation (det R = +1) stored as in pw85_ellipsoid_rotation(), each of its
  * first two columns with its entry of largest magnitude positive.
@@ -453,11 +454,14 @@ PW85_API int pw85_principal_axes(double const q[PW85_SYM],
  * n = s/‖s‖, the outward normal of scaled ellipsoid 1 at x (and the inward
  * normal of scaled ellipsoid 2), so that n·r12 > 0.
  *
- * Accuracy, measured on data/pw85_geometry_pairs.h5 (aspect ratios to 1e6,
- * near tangency, λ near 0 and 1): see the docs, "Contact geometry, forces
- * and torques"; of order u·cond(Q(λ)) relative in the norm of each vector.
- * λ is at least as accurate as pw85_contact_function()'s, and may differ
- * from it in the last digits.
+ * Accuracy, measured against references at 100 digits on the 400 pairs of
+ * data/pw85_geometry_pairs.h5 (aspect ratios to 1e6, near tangency, λ
+ * within 1e-8 of 0 and 1): relative to the norm of each vector, x − c1 and
+ * n within 1.5·u·cond(Q(λ)) (u = 2⁻⁵³, cond the 2-norm condition number
+ * of Q(λ) at the maximiser); λ within 1.5·u·cond(Q(λ))·min(λ, 1 − λ), to
+ * the rounding of a double near 1. (tests: test-geometry-refs; the tests
+ * hold them to 8·u·cond.) λ may differ from pw85_contact_function()'s in
+ * the last digits, being more accurate.
  * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
  * μ² (bit for bit), λ → 1 − λ (rounded), n → −n (exactly; a zero may
  * change sign) and x − c2 = (x − c1) − r12 (to rounding).
@@ -500,7 +504,11 @@ PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
  *   g × (x − c1) and (x − c2) × g: the lever arms of the contact point.
  * For a pair energy U(μ²): the force on ellipsoid 2 is −U′·g, that on
  * ellipsoid 1 is +U′·g, the torque on ellipsoid i is −U′·∂μ²/∂ωᵢ.
- * Accuracy: as the contact point (see pw85_contact_geometry()).
+ * Accuracy, measured as for pw85_contact_geometry(): ∂μ²/∂r12 within
+ * 1.2·u·cond(Q(λ)), the derivatives with respect to q1 and q2 within
+ * 3.8·u·cond(Q(λ)), relative in the norm of each block; the torques within
+ * 1.1·u·cond(Q(λ)) of their scale |∂μ²/∂r12|·|x − cᵢ| (a torque may
+ * vanish, its own norm is then no scale).
  * Swapping the ellipsoids exchanges ∂μ²/∂ω1 and ∂μ²/∂ω2, ∂μ²/∂q1 and
  * ∂μ²/∂q2, and negates ∂μ²/∂r12, exactly (a zero may change sign). r12 = 0: μ² is minimal
  * there, every derivative is 0.
