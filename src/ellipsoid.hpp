@@ -24,8 +24,9 @@ Status ellipsoid_quaternion(double const a[dim], double const p[4],
                             double q[sym]) noexcept;
 
 // pw85_principal_axes() (principal_axes.cpp: GSL's gsl_eigen_symmv).
-// Returns Status::success, not_finite or not_positive_definite; a and rot
-// are written on success only.
+// Returns Status::success, not_finite, not_positive_definite or
+// out_of_range (cond(Q) above about 1e270); a and rot are written on
+// success only.
 Status principal_axes(double const q[sym], double a[dim],
                       double rot[dim * dim]) noexcept;
 

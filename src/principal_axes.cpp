@@ -12,6 +12,7 @@
 #include "checks.hpp"
 #include "compensated.hpp"
 #include "ellipsoid.hpp"
+#include "ldl.hpp"
 #include "scaling.hpp"
 
 namespace pw85::detail {
@@ -49,6 +50,15 @@ Status principal_axes(double const q[sym], double a[dim],
   if (e % 2 != 0) ++e;
   double qs[sym];
   for (int k = 0; k < sym; ++k) qs[k] = times_pow2(q[k], -e);
+  // GSL's QR iterations can fail to converge (they never return) once
+  // their numbers are subnormal, which the diagonal of the tridiagonal
+  // form, bounded below by λmin, keeps them from while λmin ≥ 2^−900
+  // (the deflation test then stays above 2^−952). λmin ≥ 1/tr(Q⁻¹) ≥
+  // λmin/3: forms with a larger condition number (above about 1e270) are
+  // refused.
+  Ldl fac;
+  if (!ldl_decomp(qs, &fac) || !(ldl_trace_inverse(fac) <= 0x1p900))
+    return Status::out_of_range;
   double v[dim * dim];
   eigenvectors(qs, v);
   // aⱼ² = vⱼᵀQvⱼ/vⱼᵀvⱼ, vⱼ the column j of v: off by (λmax − λⱼ)·sin²θⱼ

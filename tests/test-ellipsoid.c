@@ -253,6 +253,16 @@ static void test_axes_contract(void) {
   g_assert_cmpint(pw85_principal_axes(indefinite, a, rot), ==,
                   PW85_ENOTPOSDEF);
   g_assert_true(untouched(a, 3) && untouched(rot, 9));
+  /* cond(Q) = 2^950 (> about 1e270): refused; 2^850: accepted, and the
+   * semi-axes of a diagonal form are the square roots of its diagonal. */
+  double const flat[6] = {1.0, 0.0, 0.0, 0x1p-950, 0.0, 0x1p-950};
+  g_assert_cmpint(pw85_principal_axes(flat, a, rot), ==, PW85_ERANGE);
+  g_assert_true(untouched(a, 3) && untouched(rot, 9));
+  double const thin[6] = {1.0, 0.0, 0.0, 0x1p-850, 0.0, 0x1p-850};
+  g_assert_cmpint(pw85_principal_axes(thin, a, rot), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(a[0], ==, 1.0);
+  g_assert_cmpfloat(a[1], ==, 0x1p-425);
+  g_assert_cmpfloat(a[2], ==, 0x1p-425);
 }
 
 /* On random ellipsoids (aspect ratios to 1e8, any size): R orthonormal with

@@ -401,8 +401,10 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
  *         positive definite by the rule above (or an eigenvalue is not > 0
- *         to double-double precision). a and rot are written on success
- *         only.
+ *         to double-double precision); PW85_ERANGE if cond(Q) exceeds
+ *         about 1e270 (tr(Q)·tr(Q⁻¹) > 2^900: GSL's iterations could meet
+ *         subnormal numbers, where they may not converge). a and rot are
+ *         written on success only.
  * @since 2.2.0
  */
 PW85_API int pw85_principal_axes(double const q[PW85_SYM],

@@ -99,7 +99,8 @@ void check_axes_of(const double q[6]) {
   double a[3], rot[9];
   fuzz::fill_sentinel(a, sizeof a);
   int const st = pw85_principal_axes(q, a, rot);
-  CHECK(st == PW85_SUCCESS || st == PW85_ENOTPOSDEF || st == PW85_EDOM,
+  CHECK(st == PW85_SUCCESS || st == PW85_ENOTPOSDEF || st == PW85_EDOM ||
+            (st == PW85_ERANGE && fuzz::cond_bound(q) > 1e200),
         "principal axes %d", st);
   if (st != PW85_SUCCESS) {
     CHECK(fuzz::is_sentinel(a, sizeof a), "status %d wrote a", st);
