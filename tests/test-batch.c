@@ -400,12 +400,51 @@ static void test_no_thread_unasked(void) {
   g_free(out);
 }
 
+/* Batches called from 4 threads at once (each asking for 1 or 2 threads),
+ * on shared inputs: each gets the single-thread results. Under
+ * ThreadSanitizer (scripts/run-tests.sh), a race would be reported. */
+static gpointer concurrent_worker(gpointer data) {
+  double *out = data;
+  int const threads = out[0] == 2. ? 2 : 1;
+  int const code = pw85_contact_derivatives_batch(N, r12[0], 3, q1[0], 6,
+                                                  q2[7], 0, out,
+                                                  out + PW85_GEOM_SIZE * N,
+                                                  NULL, threads);
+  return GINT_TO_POINTER(code);
+}
+
+static void test_concurrent(void) {
+  size_t const size = (PW85_GEOM_SIZE + PW85_DERIV_SIZE) * N;
+  double *expected = g_new(double, size);
+  g_assert_cmpint(pw85_contact_derivatives_batch(N, r12[0], 3, q1[0], 6,
+                                                 q2[7], 0, expected,
+                                                 expected + PW85_GEOM_SIZE * N,
+                                                 NULL, 1),
+                  ==, PW85_SUCCESS);
+  GThread *workers[4];
+  double *outs[4];
+  for (int t = 0; t < 4; t++) {
+    outs[t] = g_new(double, size);
+    outs[t][0] = t % 2 ? 2. : 1.; /* the count to ask for */
+    workers[t] = g_thread_new("batch", concurrent_worker, outs[t]);
+  }
+  for (int t = 0; t < 4; t++) {
+    g_assert_cmpint(GPOINTER_TO_INT(g_thread_join(workers[t])), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpmem(outs[t], size * sizeof(double), expected,
+                    size * sizeof(double));
+    g_free(outs[t]);
+  }
+  g_free(expected);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
   make_pairs();
   g_test_add_func("/batch/no_thread_unasked", test_no_thread_unasked);
   g_test_add_func("/batch/thread_policy", test_thread_policy);
+  g_test_add_func("/batch/concurrent", test_concurrent);
   for (size_t k = 0; k < G_N_ELEMENTS(kinds); k++) {
     static const struct {
       const char *name;
