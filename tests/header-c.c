@@ -19,5 +19,15 @@ int main(void) {
   ok = ok && pw85_principal_axes(q, axes, dirs) == PW85_SUCCESS;
   ok = ok && pw85_contact_geometry(r, q, q, g) == PW85_SUCCESS;
   ok = ok && pw85_contact_derivatives(r, q, q, g, d) == PW85_SUCCESS;
+  int status[1], result[1];
+  ok = ok && pw85_batch_threads(1, 1) == 1;
+  ok = ok && pw85_contact_function_batch(1, r, PW85_DIM, q, 0, q, 0, out,
+                                         status, 1) == PW85_SUCCESS;
+  ok = ok && pw85_overlap_batch(1, r, 0, q, PW85_SYM, q, PW85_SYM, result,
+                                NULL, 0) == PW85_SUCCESS;
+  ok = ok && pw85_contact_geometry_batch(1, r, 0, q, 0, q, 0, g, status,
+                                         2) == PW85_SUCCESS;
+  ok = ok && pw85_contact_derivatives_batch(1, r, 0, q, 0, q, 0, g, d, NULL,
+                                            1) == PW85_SUCCESS;
   return ok ? 0 : 1;
 }

@@ -22,5 +22,15 @@ int main() {
   ok = ok && pw85::ellipsoid_rotation(axes, rot, q2) == PW85_SUCCESS;
   ok = ok && pw85::contact_geometry(r, q, q2, g) == PW85_SUCCESS;
   ok = ok && pw85::contact_derivatives(r, q, q2, g, d) == PW85_SUCCESS;
+  int status[1], result[1];
+  ok = ok && pw85::batch_threads(1, 1) == 1;
+  ok = ok && pw85::contact_function_batch(1, r, pw85::dim, q, 0, q, 0, out,
+                                          status, 1) == PW85_SUCCESS;
+  ok = ok && pw85::overlap_batch(1, r, 0, q, 0, q, pw85::sym, result,
+                                 nullptr, 0) == PW85_SUCCESS;
+  ok = ok && pw85::contact_geometry_batch(1, r, 0, q, 0, q2, 0, g, status,
+                                          2) == PW85_SUCCESS;
+  ok = ok && pw85::contact_derivatives_batch(1, r, 0, q, 0, q2, 0, g, d,
+                                             nullptr, 1) == PW85_SUCCESS;
   return ok ? 0 : 1;
 }

@@ -107,6 +107,28 @@ void test_wrappers() {
                   PW85_SUCCESS);
   g_assert_cmpmem(d, sizeof d, d_c, sizeof d_c);
   g_assert_cmpfloat(g[pw85::geom::mu2], ==, out[0]);
+
+  // The batches: one pair broadcast to two (strides 0), as the C calls.
+  double gb[2 * pw85::geom::size], db[2 * pw85::deriv::size], ob[4];
+  int rb[2], sb[2] = {-1, -1};
+  g_assert_cmpint(pw85::batch_threads(0, 1), ==, pw85_batch_threads(0, 1));
+  g_assert_cmpint(pw85::contact_function_batch(2, r12, 0, q1, 0, q2, 0, ob,
+                                               sb, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(ob + 2, 2 * sizeof(double), out, 2 * sizeof(double));
+  g_assert_cmpint(sb[1], ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85::overlap_batch(2, r12, 0, q1, 0, q2, 0, rb, nullptr,
+                                      1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(rb[1], ==, result_c);
+  g_assert_cmpint(pw85::contact_geometry_batch(2, r12, 0, q1, 0, q2, 0, gb,
+                                               nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(gb + pw85::geom::size, sizeof g_c, g_c, sizeof g_c);
+  g_assert_cmpint(pw85::contact_derivatives_batch(2, r12, 0, q1, 0, q2, 0, gb,
+                                                  db, nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(db + pw85::deriv::size, sizeof d_c, d_c, sizeof d_c);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <dlfcn.h>
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -32,6 +33,12 @@ typedef int (*make_fn)(double const *, double const *, double *);
 typedef int (*axes_fn)(double const *, double *, double *);
 typedef int (*derivatives_fn)(double const *, double const *, double const *,
                               double *, double *);
+typedef int (*threads_fn)(int, size_t);
+typedef int (*batch_fn)(size_t, double const *, size_t, double const *,
+                        size_t, double const *, size_t, void *, int *, int);
+typedef int (*derivatives_batch_fn)(size_t, double const *, size_t,
+                                    double const *, size_t, double const *,
+                                    size_t, double *, double *, int *, int);
 
 static void *sym(void *lib, const char *name) {
   void *p = dlsym(lib, name);
@@ -64,6 +71,9 @@ int main(int argc, char **argv) {
   axes_fn axes_p;
   contact_fn geometry_p;
   derivatives_fn derivatives_p;
+  threads_fn threads_p;
+  batch_fn cf_batch_p, overlap_batch_p, geometry_batch_p;
+  derivatives_batch_fn derivatives_batch_p;
   void *p;
 #define LOAD(var, name)      \
   p = sym(lib, name);        \
@@ -83,6 +93,11 @@ int main(int argc, char **argv) {
   LOAD(axes_p, "pw85_principal_axes");
   LOAD(geometry_p, "pw85_contact_geometry");
   LOAD(derivatives_p, "pw85_contact_derivatives");
+  LOAD(threads_p, "pw85_batch_threads");
+  LOAD(cf_batch_p, "pw85_contact_function_batch");
+  LOAD(overlap_batch_p, "pw85_overlap_batch");
+  LOAD(geometry_batch_p, "pw85_contact_geometry_batch");
+  LOAD(derivatives_batch_p, "pw85_contact_derivatives_batch");
 
   CHECK(strcmp(strerror_p(0), "success") == 0);
   CHECK(strcmp(version_p(), PW85_EXPECTED_VERSION) == 0);
@@ -131,6 +146,23 @@ int main(int argc, char **argv) {
   double g[8], g2[8], d[21];
   CHECK(geometry_p(r, q1, q2, g) == 0 && g[0] == out[0]);
   CHECK(derivatives_p(r, q1, q2, g2, d) == 0 && g2[0] == out[0]);
+
+  /* 600 copies of the pair (q1, q2 broadcast), on 2 threads where
+   * libpw85 has OpenMP: then dlclose() must not unload the code of its
+   * idle threads. */
+  enum { n = 600 };
+  static double rs[3 * n], outs[21 * n], ds[21 * n];
+  static int results[n], statuses[n];
+  for (int i = 0; i < n; i++) memcpy(rs + 3 * i, r, sizeof r);
+  CHECK(threads_p(1, n) == 1 && threads_p(-1, n) == 0);
+  CHECK(cf_batch_p(n, rs, 3, q1, 0, q2, 0, outs, statuses, 2) == 0 &&
+        outs[2 * n - 2] == out[0] && statuses[n - 1] == 0);
+  CHECK(overlap_batch_p(n, rs, 3, q1, 0, q2, 0, results, NULL, 2) == 0 &&
+        results[n - 1] == 1);
+  CHECK(geometry_batch_p(n, rs, 3, q1, 0, q2, 0, outs, NULL, 2) == 0 &&
+        outs[8 * (n - 1)] == g[0]);
+  CHECK(derivatives_batch_p(n, rs, 3, q1, 0, q2, 0, outs, ds, NULL, 2) == 0 &&
+        ds[21 * (n - 1)] == d[0]);
 
   CHECK(dlclose(lib) == 0);
   printf("dlopen: every exported function called\n");

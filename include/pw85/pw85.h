@@ -36,6 +36,8 @@
 #ifndef PW85_H
 #define PW85_H
 
+#include <stddef.h>
+
 #include "pw85_version.h"
 
 /** Marks the exported functions; define it before including this header to
@@ -530,6 +532,164 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
                                       double const q2[PW85_SYM],
                                       double geometry[PW85_GEOM_SIZE],
                                       double d[PW85_DERIV_SIZE]) PW85_NOEXCEPT;
+
+/** @name Batches
+ *  One call for n pairs (@since 2.2.0): the one path for callers that pay
+ *  per call (Python, other interpreters), and the way to use threads.
+ *
+ *  Layouts. Pair i reads `r12 + i·r12_stride`, `q1 + i·q1_stride` and
+ *  `q2 + i·q2_stride` (strides counted in doubles): PW85_DIM and PW85_SYM
+ *  for contiguous n×3 and n×6 arrays, larger for records that hold more;
+ *  0 uses the same vector or form for every pair (one ellipsoid against
+ *  many, without copies). A stride from 1 to the record's size − 1 is an
+ *  error (PW85_EINVAL). Outputs are contiguous: pair i writes `out[2·i]`
+ *  and `out[2·i + 1]`, `result[i]`, `out + i·PW85_GEOM_SIZE`,
+ *  `d + i·PW85_DERIV_SIZE`. Outputs overlap neither the inputs nor each
+ *  other.
+ *
+ *  Results. Pair i is computed alone, exactly as the single-pair function
+ *  computes it: the same outputs bit for bit and the same status, and a
+ *  failing pair's outputs are left as that function leaves them
+ *  (untouched, or written for PW85_ERANGE as it documents). Every pair is
+ *  computed, whether others fail or not. `status` is NULL, or n ints:
+ *  `status[i]` receives pair i's status; every entry is written, also
+ *  when the call itself fails (each then holds the call's status).
+ *
+ *  Return value: PW85_SUCCESS when every pair succeeds, else the status
+ *  of the first failing pair (lowest index). Errors of the call itself,
+ *  before any pair is computed (no output written, `status` filled with
+ *  the code): PW85_EFAULT if n > 0 and an input or output pointer is
+ *  NULL; PW85_EINVAL if a stride is between 1 and its record's size − 1,
+ *  or threads < 0. n = 0: PW85_SUCCESS, nothing read nor written (any
+ *  pointer may be NULL).
+ *
+ *  Threads. `threads` = 1: the calling thread only; 0: OpenMP's default
+ *  count (omp_get_max_threads(): OMP_NUM_THREADS if set, else one per
+ *  processor); k > 1: up to k. A batch of n pairs uses at most n/256
+ *  threads (rounded down): no thread is started for n < 512, nor for
+ *  threads = 1. pw85_batch_threads() gives the count a call would use.
+ *  Pairs are handed to threads in chunks of 256 consecutive indices, as
+ *  they become free. The results do not depend on the count, bit for
+ *  bit. Built without OpenMP (meson option `openmp`), every call runs in
+ *  the calling thread, whatever the count. pw85 allocates nothing; the
+ *  OpenMP runtime keeps its pool of threads from the first threaded call
+ *  on. Reentrant: concurrent calls from several threads each use their
+ *  own threads.
+ *  @{ */
+
+/**
+ * @brief The number of threads a batch of n pairs runs on (see Batches).
+ *
+ * @param[in] threads the count requested: 0 for OpenMP's default, k ≥ 1.
+ * @param[in] n the number of pairs.
+ * @return the count, ≥ 1: min(k, n/256) and at least 1 (k = OpenMP's
+ *         default for threads = 0); 1 when libpw85 was built without
+ *         OpenMP; 0 if threads < 0 (the batch calls reject it).
+ * @since 2.2.0
+ */
+PW85_API int pw85_batch_threads(int threads, size_t n) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_function() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the centre-to-centre vectors c2 − c1.
+ * @param[in] r12_stride doubles from one vector to the next: PW85_DIM
+ *            when contiguous, 0 for the same vector for every pair.
+ * @param[in] q1 the quadratic forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the quadratic forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] out 2·n doubles: `out[2·i]` = μ², `out[2·i + 1]` = λ of
+ *             pair i.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_contact_function()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself (see Batches).
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_function_batch(size_t n, double const *r12,
+                                         size_t r12_stride, double const *q1,
+                                         size_t q1_stride, double const *q2,
+                                         size_t q2_stride, double *out,
+                                         int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_overlap() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] result n ints: −1 (overlap), +1 (disjoint) or 0 (tangent)
+ *             for each pair, as pw85_overlap().
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_overlap()); PW85_EFAULT or PW85_EINVAL for the call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_overlap_batch(size_t n, double const *r12,
+                                size_t r12_stride, double const *q1,
+                                size_t q1_stride, double const *q2,
+                                size_t q2_stride, int *result, int *status,
+                                int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_geometry() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] out n·PW85_GEOM_SIZE doubles: pair i at
+ *             `out + i·PW85_GEOM_SIZE`, laid out as PW85_GEOM_*.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_contact_geometry()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_geometry_batch(size_t n, double const *r12,
+                                         size_t r12_stride, double const *q1,
+                                         size_t q1_stride, double const *q2,
+                                         size_t q2_stride, double *out,
+                                         int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_derivatives() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] geometry n·PW85_GEOM_SIZE doubles, as
+ *             pw85_contact_geometry_batch().
+ * @param[out] d n·PW85_DERIV_SIZE doubles: pair i at
+ *             `d + i·PW85_DERIV_SIZE`, laid out as PW85_DERIV_*.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_contact_derivatives()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_derivatives_batch(
+    size_t n, double const *r12, size_t r12_stride, double const *q1,
+    size_t q1_stride, double const *q2, size_t q2_stride, double *geometry,
+    double *d, int *status, int threads) PW85_NOEXCEPT;
+/** @} */
 
 #ifdef __cplusplus
 } /* extern "C" */

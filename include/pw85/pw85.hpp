@@ -169,6 +169,63 @@ inline int contact_derivatives(double const r12[dim], double const q1[sym],
   return pw85_contact_derivatives(r12, q1, q2, geometry, d);
 }
 
+/** The number of threads a batch of n pairs runs on
+ *  (pw85_batch_threads()).
+ *  @since 2.2.0 */
+inline int batch_threads(int threads, std::size_t n) noexcept {
+  return pw85_batch_threads(threads, n);
+}
+
+/** contact_function() for n pairs, strides in doubles (0: one record for
+ *  every pair), out = n×{μ², λ} (pw85_contact_function_batch()); returns
+ *  PW85_SUCCESS or the first failing pair's status.
+ *  @since 2.2.0 */
+inline int contact_function_batch(std::size_t n, double const *r12,
+                                  std::size_t r12_stride, double const *q1,
+                                  std::size_t q1_stride, double const *q2,
+                                  std::size_t q2_stride, double *out,
+                                  int *status, int threads) noexcept {
+  return pw85_contact_function_batch(n, r12, r12_stride, q1, q1_stride, q2,
+                                     q2_stride, out, status, threads);
+}
+
+/** overlap() for n pairs (pw85_overlap_batch()).
+ *  @since 2.2.0 */
+inline int overlap_batch(std::size_t n, double const *r12,
+                         std::size_t r12_stride, double const *q1,
+                         std::size_t q1_stride, double const *q2,
+                         std::size_t q2_stride, int *result, int *status,
+                         int threads) noexcept {
+  return pw85_overlap_batch(n, r12, r12_stride, q1, q1_stride, q2, q2_stride,
+                            result, status, threads);
+}
+
+/** contact_geometry() for n pairs, out = n×geom::size
+ *  (pw85_contact_geometry_batch()).
+ *  @since 2.2.0 */
+inline int contact_geometry_batch(std::size_t n, double const *r12,
+                                  std::size_t r12_stride, double const *q1,
+                                  std::size_t q1_stride, double const *q2,
+                                  std::size_t q2_stride, double *out,
+                                  int *status, int threads) noexcept {
+  return pw85_contact_geometry_batch(n, r12, r12_stride, q1, q1_stride, q2,
+                                     q2_stride, out, status, threads);
+}
+
+/** contact_derivatives() for n pairs, geometry = n×geom::size, d =
+ *  n×deriv::size (pw85_contact_derivatives_batch()).
+ *  @since 2.2.0 */
+inline int contact_derivatives_batch(std::size_t n, double const *r12,
+                                     std::size_t r12_stride,
+                                     double const *q1, std::size_t q1_stride,
+                                     double const *q2, std::size_t q2_stride,
+                                     double *geometry, double *d, int *status,
+                                     int threads) noexcept {
+  return pw85_contact_derivatives_batch(n, r12, r12_stride, q1, q1_stride,
+                                        q2, q2_stride, geometry, d, status,
+                                        threads);
+}
+
 }  // namespace pw85
 
 // C++17 or later (MSVC reports its standard in _MSVC_LANG). Doxygen, which

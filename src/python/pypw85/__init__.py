@@ -29,6 +29,23 @@ preallocated array passed by the caller, which must then be a C-contiguous,
 writeable ``numpy.ndarray`` of dtype ``float64`` and of the exact shape
 (anything else raises, nothing is converted silently).
 
+Arrays of pairs
+---------------
+`contact_function`, `overlap`, `contact_geometry` and
+`contact_derivatives` also take arrays of pairs: r12 of shape (..., 3),
+q1 and q2 of shape (..., 6), whose leading axes broadcast as NumPy's do
+(one ellipsoid against many: ``q1`` of shape (6,) with ``q2`` of shape
+(N, 6)). The results have the broadcast shape followed by the shape of
+one result: ``contact_function(r12, q1, q2)`` with r12 of shape (N, 3)
+returns an array of shape (N, 2). One call of the library's batch
+function computes every pair, each exactly as alone (bit for bit), with
+the GIL released; ``threads=k`` spreads the pairs over k OpenMP threads
+(0: OpenMP's default, ``OMP_NUM_THREADS`` if set), with the same results
+for any count. If a pair fails, `Error` names the first one (its index in
+the broadcast shape, its inputs); its ``index`` and ``statuses``
+attributes give that index and every pair's status, and a preallocated
+``out`` holds the results of the pairs that succeeded.
+
 Errors
 ------
 Bad input never crashes: a wrong shape raises `ValueError`, a wrong dtype
@@ -59,8 +76,11 @@ each failed. `pypw85.legacy` finds libpw85_legacy the same way
 Thread safety
 -------------
 ctypes releases the GIL around every call into the library, and every pw85
-function is reentrant, so threads calling pypw85 run in parallel. Do not
-share a preallocated output array between threads.
+function is reentrant, so threads calling pypw85 run in parallel while they
+are in the library. For a single pair, converting and checking the
+arguments costs more than the computation, and runs under the GIL: pass
+arrays of pairs instead (one conversion, one call, `threads` for
+parallelism). Do not share a preallocated output array between threads.
 
 The only run-time dependency is NumPy. Released under the BSD 3-Clause
 licence.
@@ -71,11 +91,12 @@ import math
 
 import numpy as np
 
-from . import _constants
+from . import _batch, _constants
 from ._convert import (
     check_finite as _check_finite, output as _output, real as _real,
     unaliased as _unaliased, vector as _vector,
 )
+from ._batch import batch_threads
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 # Not used here: kept where the tests look for them (the path libpw85 was
@@ -93,6 +114,7 @@ __all__ = [
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
     "contact_geometry", "contact_derivatives", "ellipsoid_rotation",
     "ellipsoid_quaternion", "principal_axes", "pack_sym", "unpack_sym",
+    "batch_threads",
 ]
 
 # The constants of pw85.h: the values are those of _constants (checked
@@ -433,7 +455,7 @@ def _residual(lambda_, r12, q1, q2, out=None):
     return out
 
 
-def contact_function(r12, q1, q2, out=None):
+def contact_function(r12, q1, q2, out=None, *, threads=1):
     """Return the contact function μ² of two ellipsoids and its maximiser λ.
 
     μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
@@ -456,22 +478,28 @@ def contact_function(r12, q1, q2, out=None):
 
     Parameters
     ----------
-    r12 : array_like, shape (3,)
+    r12 : array_like, shape (3,) or (..., 3)
         The centre-to-centre vector c2 − c1 (any finite vector; r12 = 0
         gives μ² = 0, λ = ½).
-    q1, q2 : array_like, shape (6,)
+    q1, q2 : array_like, shape (6,) or (..., 6)
         The quadratic forms of the two ellipsoids, symmetric positive
         definite (upper triangle, row by row), in the square of r12's unit.
         μ² is invariant under r12 → t·r12, Q → t²·Q; any finite scale is
-        accepted.
-    out : numpy.ndarray, shape (2,), float64, optional
-        Preallocated output, modified in place. A new array if None.
+        accepted. Arrays of pairs broadcast (see "Arrays of pairs").
+    out : numpy.ndarray, shape (2,) or S + (2,), float64, optional
+        Preallocated output, modified in place (S: the broadcast shape of
+        the pairs). A new array if None.
+    threads : int, optional, keyword only
+        For arrays of pairs: 1 (the default) computes them in the calling
+        thread, k > 1 on up to k OpenMP threads, 0 on OpenMP's default
+        count. The results are the same for any count.
 
     Returns
     -------
-    out : numpy.ndarray, shape (2,)
-        ``out[0] = μ²`` (dimensionless, ≥ 0) and ``out[1] = λ`` in [0, 1];
-        ``mu2, lambda_ = contact_function(r12, q1, q2)`` unpacks it.
+    out : numpy.ndarray, shape (2,) or S + (2,)
+        ``out[..., 0] = μ²`` (dimensionless, ≥ 0) and ``out[..., 1] = λ``
+        in [0, 1]; ``mu2, lambda_ = contact_function(r12, q1, q2)`` unpacks
+        a single pair.
 
     Raises
     ------
@@ -482,8 +510,11 @@ def contact_function(r12, q1, q2, out=None):
         not positive definite; `ERANGE` if μ² exceeds the largest double
         (out then holds +inf and λ) or the entries of q1 and q2 span more
         than the range of a double; `ENOMEM` (not expected). Except for the
-        first `ERANGE` case, out is untouched.
+        first `ERANGE` case, out is untouched. For arrays of pairs, the
+        first failing pair's status; the other pairs are computed.
     """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.contact_function(r12, q1, q2, out, threads)
     r12 = _vector("r12", r12, DIM)
     q1 = _vector("q1", q1, SYM)
     q2 = _vector("q2", q2, SYM)
@@ -497,7 +528,7 @@ def contact_function(r12, q1, q2, out=None):
     return out
 
 
-def overlap(r12, q1, q2):
+def overlap(r12, q1, q2, *, threads=1):
     """Do two ellipsoids overlap? A certified answer, faster than μ².
 
     Decides the sign of μ² − 1 (see `contact_function`) from bounds of μ²
@@ -506,15 +537,18 @@ def overlap(r12, q1, q2):
 
     Parameters
     ----------
-    r12 : array_like, shape (3,)
+    r12 : array_like, shape (3,) or (..., 3)
         The centre-to-centre vector c2 − c1.
-    q1, q2 : array_like, shape (6,)
+    q1, q2 : array_like, shape (6,) or (..., 6)
         The quadratic forms of the two ellipsoids, symmetric positive
         definite (upper triangle, row by row), in the square of r12's unit.
+        Arrays of pairs broadcast (see "Arrays of pairs").
+    threads : int, optional, keyword only
+        As for `contact_function`.
 
     Returns
     -------
-    int
+    int, or numpy.ndarray of dtype numpy.intc and shape S
         −1 if they overlap (μ² < 1; also for coincident centres), +1 if
         they are disjoint (μ² > 1, including μ² beyond the range of a
         double), 0 if they are tangent to the resolution of double
@@ -528,6 +562,8 @@ def overlap(r12, q1, q2):
         As `contact_function`: `EDOM`, `ENOTPOSDEF`, `ERANGE` (entries of
         q1 and q2 spanning more than the range of a double), `ENOMEM`.
     """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.overlap(r12, q1, q2, threads)
     r12 = _vector("r12", r12, DIM)
     q1 = _vector("q1", q1, SYM)
     q2 = _vector("q2", q2, SYM)
@@ -730,7 +766,7 @@ def principal_axes(q):
     return a, rot
 
 
-def contact_geometry(r12, q1, q2, out=None):
+def contact_geometry(r12, q1, q2, out=None, *, threads=1):
     """Return μ², λ, the contact point and the common normal.
 
     One search (that of `contact_function`: the same μ², bit for bit), λ
@@ -741,13 +777,15 @@ def contact_geometry(r12, q1, q2, out=None):
     Parameters
     ----------
     r12, q1, q2
-        As for `contact_function`.
-    out : numpy.ndarray, shape (8,), float64, optional
+        As for `contact_function` (arrays of pairs included).
+    out : numpy.ndarray, shape (8,) or S + (8,), float64, optional
         Preallocated output, modified in place. A new array if None.
+    threads : int, optional, keyword only
+        As for `contact_function`.
 
     Returns
     -------
-    out : numpy.ndarray, shape (8,)
+    out : numpy.ndarray, shape (8,) or S + (8,)
         ``out[GEOM_MU2]`` = μ², ``out[GEOM_LAMBDA]`` = λ,
         ``out[GEOM_POINT:GEOM_POINT + 3]`` = x − c1 (the point where the
         ellipsoids scaled by μ touch), ``out[GEOM_NORMAL:GEOM_NORMAL + 3]``
@@ -762,6 +800,8 @@ def contact_geometry(r12, q1, q2, out=None):
         As `contact_function`; with `ERANGE` for an overflow, out holds
         every output (some infinite).
     """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.contact_geometry(r12, q1, q2, out, threads)
     r12 = _vector("r12", r12, DIM)
     q1 = _vector("q1", q1, SYM)
     q2 = _vector("q2", q2, SYM)
@@ -775,7 +815,7 @@ def contact_geometry(r12, q1, q2, out=None):
     return out
 
 
-def contact_derivatives(r12, q1, q2, geometry=None, d=None):
+def contact_derivatives(r12, q1, q2, geometry=None, d=None, *, threads=1):
     """Return the contact geometry and the first derivatives of μ².
 
     By the envelope theorem, with s = Q(λ)⁻¹·r12: ∂μ²/∂r12 = 2λ(1−λ)·s;
@@ -789,17 +829,19 @@ def contact_derivatives(r12, q1, q2, geometry=None, d=None):
     Parameters
     ----------
     r12, q1, q2
-        As for `contact_function`.
-    geometry : numpy.ndarray, shape (8,), float64, optional
+        As for `contact_function` (arrays of pairs included).
+    geometry : numpy.ndarray, shape (8,) or S + (8,), float64, optional
         Preallocated output for the geometry (as `contact_geometry`).
-    d : numpy.ndarray, shape (21,), float64, optional
+    d : numpy.ndarray, shape (21,) or S + (21,), float64, optional
         Preallocated output for the derivatives.
+    threads : int, optional, keyword only
+        As for `contact_function`.
 
     Returns
     -------
-    geometry : numpy.ndarray, shape (8,)
+    geometry : numpy.ndarray, shape (8,) or S + (8,)
         As `contact_geometry`.
-    d : numpy.ndarray, shape (21,)
+    d : numpy.ndarray, shape (21,) or S + (21,)
         ``d[DERIV_R12:DERIV_R12 + 3]``, ``d[DERIV_ROT1:DERIV_ROT1 + 3]``,
         ``d[DERIV_ROT2:DERIV_ROT2 + 3]``, ``d[DERIV_Q1:DERIV_Q1 + 6]``,
         ``d[DERIV_Q2:DERIV_Q2 + 6]``.
@@ -809,6 +851,8 @@ def contact_derivatives(r12, q1, q2, geometry=None, d=None):
     ValueError, TypeError, Error
         As `contact_geometry`.
     """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.contact_derivatives(r12, q1, q2, geometry, d, threads)
     r12 = _vector("r12", r12, DIM)
     q1 = _vector("q1", q1, SYM)
     q2 = _vector("q2", q2, SYM)
