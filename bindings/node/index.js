@@ -66,13 +66,19 @@ class Pw85Error extends Error {
   }
 }
 
-// A fresh Float64Array of n numbers from an array-like of length n.
+// A Float64Array of n numbers from an array-like of length n: x itself if
+// it is one (libpw85 only reads it), else a copy.
 function doubles(x, n, name) {
   if (x == null || typeof x.length !== 'number' || x.length !== n) {
     throw new RangeError(`pw85: ${name} must hold ${n} numbers`);
   }
-  return Float64Array.from(x);
+  return x instanceof Float64Array ? x : Float64Array.from(x);
 }
+
+// The outputs of the calls below, reused: a call runs to completion on
+// this thread before the next starts, and the values are copied out.
+const outPair = new Float64Array(2);
+const outInt = new Int32Array(1);
 
 /**
  * The quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ.
@@ -96,13 +102,12 @@ function spheroid(a, c_, n) {
  * @throws {Pw85Error} on any status but PW85_SUCCESS.
  */
 function contactFunction(r12, q1, q2) {
-  const out = new Float64Array(2);
   const code = c.contactFunction(doubles(r12, DIM, 'r12'),
-    doubles(q1, SYM, 'q1'), doubles(q2, SYM, 'q2'), out);
+    doubles(q1, SYM, 'q1'), doubles(q2, SYM, 'q2'), outPair);
   if (code !== status.PW85_SUCCESS) {
     throw new Pw85Error(code, 'pw85_contact_function');
   }
-  return { mu2: out[0], lambda: out[1] };
+  return { mu2: outPair[0], lambda: outPair[1] };
 }
 
 /**
@@ -111,13 +116,12 @@ function contactFunction(r12, q1, q2) {
  * @throws {Pw85Error} on any status but PW85_SUCCESS.
  */
 function overlap(r12, q1, q2) {
-  const result = new Int32Array(1);
   const code = c.overlap(doubles(r12, DIM, 'r12'), doubles(q1, SYM, 'q1'),
-    doubles(q2, SYM, 'q2'), result);
+    doubles(q2, SYM, 'q2'), outInt);
   if (code !== status.PW85_SUCCESS) {
     throw new Pw85Error(code, 'pw85_overlap');
   }
-  return result[0];
+  return outInt[0];
 }
 
 /** The version of the library loaded, "MAJOR.MINOR.PATCH". */
