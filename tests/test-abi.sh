@@ -3,12 +3,14 @@
 # The ABI of a shared library, as the dynamic loader sees it, must be
 # exactly the committed list: its version nodes, each with the node it
 # inherits (readelf -V), and its exported symbols, each with its node
-# (nm -D). An ABI change is always deliberate. With a header: every
-# exported function is declared there, in the node of its @since
+# (nm -D). An ABI change is always deliberate. With headers: every
+# exported function is declared in one of them, in the node of its @since
 # (PREFIX_MAJOR.MINOR; no @since: the oldest node).
-# Usage: test-abi.sh NM READELF LIBRARY SYMBOL-LIST [HEADER NODE-PREFIX]
+# Usage: test-abi.sh NM READELF LIBRARY SYMBOL-LIST [NODE-PREFIX HEADER...]
 set -eu
-nm=$1 readelf=$2 lib=$3 expected=$4 header=${5:-} prefix=${6:-}
+nm=$1 readelf=$2 lib=$3 expected=$4 prefix=${5:-}
+shift 4
+[ $# -eq 0 ] || shift
 export LC_ALL=C
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT INT TERM
@@ -35,8 +37,8 @@ else
   status=1
 fi
 
-[ -n "$header" ] || exit "$status"
-# "NAME SINCE" for every PW85_API function of the header (SINCE: "-" when
+[ $# -gt 0 ] || exit "$status"
+# "NAME SINCE" for every PW85_API function of the headers (SINCE: "-" when
 # its comment has no @since); the name is the first identifier followed by
 # "(" on the PW85_API line or the next.
 awk '
@@ -48,23 +50,23 @@ awk '
       name = substr($0, RSTART, RLENGTH - 1); sub(/[ \t]+$/, "", name)
       print name, since; pending = 0; since = "-"
     } else pending--
-  }' "$header" >"$tmp/declared"
+  }' "$@" >"$tmp/declared"
 oldest=$(sed -n '1{s/ .*//;p;}' "$tmp/actual")
 grep @ "$tmp/actual" | while IFS= read -r entry; do
   name=${entry%%@*} node=${entry##*@}
   since=$(awk -v n="$name" '$1 == n { print $2 }' "$tmp/declared")
   case $since in
-    '') echo "$name is exported but not declared in $header" ;;
+    '') echo "$name is exported but not declared in $*" ;;
     -) [ "$node" = "$oldest" ] ||
-         echo "$name has no @since in $header but is in $node, not $oldest" ;;
+         echo "$name has no @since in $* but is in $node, not $oldest" ;;
     *) [ "$node" = "${prefix}_$since" ] ||
-         echo "$name is @since $since in $header but in $node, not ${prefix}_$since" ;;
+         echo "$name is @since $since in $* but in $node, not ${prefix}_$since" ;;
   esac
 done >"$tmp/since"
 if [ -s "$tmp/since" ]; then
   cat "$tmp/since"
   status=1
 else
-  echo "ok: every exported function is declared in $header, in the node of its @since"
+  echo "ok: every exported function is declared in $*, in the node of its @since"
 fi
 exit "$status"
