@@ -3,8 +3,10 @@
 # The whole test suite: every test of a release-like build, then every test
 # again in a build instrumented by AddressSanitizer and UndefinedBehavior-
 # Sanitizer (any report fails the test), then the C test programs under
-# valgrind memcheck, and the multi-threaded tests under ThreadSanitizer.
-# Build trees: build/, build-asan/, build-tsan/.
+# valgrind memcheck, and the multi-threaded tests under ThreadSanitizer;
+# a build with both kinds of library (default_library=both): the archives,
+# the ABI and the bindings again.
+# Build trees: build/, build-asan/, build-tsan/, build-both/, build-fuzz/.
 set -eu
 cd "$(dirname "$0")/.."
 
@@ -16,6 +18,19 @@ meson test -C build --print-errorlogs
 ASAN_OPTIONS=halt_on_error=1:abort_on_error=1 \
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
   meson test -C build-asan --print-errorlogs
+
+# --- both kinds of library (issue 18) -----------------------------------
+# default_library=both: the tests of the archives (suite 'static'), and the
+# suites that link or load the library (unit, abi, tutorial, legacy, the
+# bindings), now next to an archive of the same name. Not the reference
+# data, Python, install and docs suites: build/ runs them.
+[ -f build-both/build.ninja ] ||
+  meson setup build-both -Ddefault_library=both -Ddocs=disabled -Dpython=disabled
+ninja -C build-both -j2
+meson test -C build-both --no-rebuild --print-errorlogs --suite static \
+  --suite unit --suite abi --suite tutorial --suite legacy --suite fortran \
+  --suite node
+# --- end of both kinds of library ---------------------------------------
 
 # --- checkers (issue 14, item 3) ---------------------------------------
 # valgrind memcheck: the C test programs of build/ (suites unit, ref-data,

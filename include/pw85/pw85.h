@@ -31,7 +31,13 @@
  * installed nor reached).
  *
  * Versions: what carries no `@since` is the C API of pw85 1.0, same names
- * and argument order; `@since` marks what a later release added.
+ * and argument order; `@since` marks what a later release added. The
+ * shared library versions its symbols: a function without `@since` is in
+ * the version node PW85_2.0, one `@since X.Y.Z` in PW85_X.Y; each node
+ * inherits the one before, a released node never changes, and a release
+ * that adds functions adds a node (src/libpw85.map). A program records the
+ * nodes it uses; run against an older libpw85.so.2 that lacks one, it does
+ * not start, and the loader names the missing node.
  */
 #ifndef PW85_H
 #define PW85_H
