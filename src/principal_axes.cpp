@@ -71,10 +71,15 @@ Status principal_axes(double const q[sym], double a[dim],
     a2[j] = quad_form_dd(qs, col[j]) / (vv.hi + vv.lo);
     if (!(a2[j] > 0.0)) return Status::not_positive_definite;
   }
-  // Decreasing order (a stable sort of three).
+  // Decreasing order: an insertion sort of three, stable (std::stable_sort
+  // may allocate a buffer).
   int order[dim] = {0, 1, 2};
-  std::stable_sort(order, order + dim,
-                   [&a2](int x, int y) { return a2[x] > a2[y]; });
+  for (int i = 1; i < dim; ++i)
+    for (int j = i; j > 0 && a2[order[j]] > a2[order[j - 1]]; --j) {
+      int const t = order[j];
+      order[j] = order[j - 1];
+      order[j - 1] = t;
+    }
   double r[dim][dim];  // r[j]: the direction of a[j]
   for (int j = 0; j < dim; ++j) {
     a[j] = times_pow2(std::sqrt(a2[order[j]]), e / 2);

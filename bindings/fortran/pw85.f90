@@ -19,7 +19,7 @@
 module pw85
   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_ptr, &
                                          c_null_char, c_associated, &
-                                         c_f_pointer
+                                         c_f_pointer, c_size_t
   implicit none
   private
 
@@ -48,7 +48,9 @@ module pw85
             pw85__residual, pw85_contact_function, pw85_overlap, &
             pw85_ellipsoid_rotation, pw85_ellipsoid_quaternion, &
             pw85_principal_axes, pw85_contact_geometry, &
-            pw85_contact_derivatives
+            pw85_contact_derivatives, pw85_batch_threads, &
+            pw85_contact_function_batch, pw85_overlap_batch, &
+            pw85_contact_geometry_batch, pw85_contact_derivatives_batch
   public :: pw85_contact, pw85_message, pw85_library_version
 
   interface
@@ -160,6 +162,67 @@ module pw85
       real(c_double), intent(in) :: r12(PW85_DIM), q1(PW85_SYM), q2(PW85_SYM)
       real(c_double), intent(inout) :: geometry(PW85_GEOM_SIZE), &
                                        d(PW85_DERIV_SIZE)
+    end function
+
+    ! Batches of n pairs (@since 2.2.0; pw85.h for the contract). Arrays
+    ! are contiguous, the pairs one after the other (r12(3, n), q1(6, n),
+    ! ... in Fortran); a stride is the number of doubles from one pair's
+    ! input to the next (0: one input for every pair); status(n) must be
+    ! given here (C accepts NULL).
+    !> The number of threads a batch call would use.
+    integer(c_int) function pw85_batch_threads(threads, n) &
+        bind(C, name='pw85_batch_threads')
+      import :: c_int, c_size_t
+      integer(c_int), value :: threads
+      integer(c_size_t), value :: n
+    end function
+
+    !> pw85_contact_function for n pairs: out(2, n).
+    integer(c_int) function pw85_contact_function_batch(n, r12, r12_stride, &
+        q1, q1_stride, q2, q2_stride, out, status, threads) &
+        bind(C, name='pw85_contact_function_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_overlap for n pairs: result(n).
+    integer(c_int) function pw85_overlap_batch(n, r12, r12_stride, q1, &
+        q1_stride, q2, q2_stride, result, status, threads) &
+        bind(C, name='pw85_overlap_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      integer(c_int), intent(inout) :: result(*), status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_contact_geometry for n pairs: out(PW85_GEOM_SIZE, n).
+    integer(c_int) function pw85_contact_geometry_batch(n, r12, r12_stride, &
+        q1, q1_stride, q2, q2_stride, out, status, threads) &
+        bind(C, name='pw85_contact_geometry_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_contact_derivatives for n pairs: geometry(PW85_GEOM_SIZE, n),
+    !> d(PW85_DERIV_SIZE, n).
+    integer(c_int) function pw85_contact_derivatives_batch(n, r12, &
+        r12_stride, q1, q1_stride, q2, q2_stride, geometry, d, status, &
+        threads) bind(C, name='pw85_contact_derivatives_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      real(c_double), intent(inout) :: geometry(*), d(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
     end function
   end interface
 
