@@ -4,6 +4,7 @@
 #include "batch.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 #if defined(PW85_OPENMP)
 #include <omp.h>
@@ -13,6 +14,8 @@ namespace pw85::detail {
 
 int batch_threads(int requested, std::size_t n) noexcept {
 #if defined(PW85_OPENMP)
+  // One thread beyond 2^56 pairs (run_batch packs an index in 56 bits).
+  if (n >= (std::size_t{1} << 56)) return 1;
   std::size_t const wanted = static_cast<std::size_t>(
       requested == 0 ? omp_get_max_threads() : requested);
   return static_cast<int>(
@@ -39,6 +42,14 @@ BatchFailure run_batch(std::size_t n, int threads, BatchRange range,
 #if defined(PW85_OPENMP)
   // Dynamic: the cost of a pair varies (the search takes more steps near
   // hard cases), and the cores may be shared.
+  //
+  // The first failure is the minimum of index·2^8 + code over the
+  // threads, kept in one atomic word (no lock: a named critical section
+  // would be a global symbol of default visibility, exported even from the
+  // static archive; an unnamed one is shared with the application's).
+  // Codes are below 2^8; n < 2^56 is checked by the caller's thread count
+  // (batch_threads() returns 1 beyond).
+  std::atomic<unsigned long long> packed{~0ull};
 #pragma omp parallel num_threads(threads)
   {
     BatchFailure mine{n, 0};
@@ -48,9 +59,20 @@ BatchFailure run_batch(std::size_t n, int threads, BatchRange range,
                                    std::min(n, (c + 1) * batch_grain));
       if (f.code != 0 && f.index < mine.index) mine = f;
     }
-#pragma omp critical(pw85_batch_first_failure)
-    if (mine.index < first.index) first = mine;
+    if (mine.code != 0) {
+      unsigned long long const v =
+          (static_cast<unsigned long long>(mine.index) << 8) |
+          static_cast<unsigned long long>(mine.code);
+      unsigned long long seen = packed.load(std::memory_order_relaxed);
+      while (v < seen &&
+             !packed.compare_exchange_weak(seen, v, std::memory_order_relaxed)) {
+      }
+    }
   }
+  unsigned long long const p = packed.load(std::memory_order_relaxed);
+  if (p != ~0ull)
+    first = BatchFailure{static_cast<std::size_t>(p >> 8),
+                         static_cast<int>(p & 0xffu)};
 #endif
   return first;
 }
