@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <set>
@@ -212,7 +213,22 @@ std::size_t missing(std::set<PairKey> const &ref, std::set<PairKey> const &got) 
 }  // namespace
 
 int main(int argc, char **argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  if (argc > 2 && std::strcmp(argv[1], "profile") == 0) {
+    // bench-index profile N: the all-pairs query of N ellipsoids at a
+    // packing fraction of 0.4, 1 thread, for a profiler.
+    Set const s = make_set(std::strtoul(argv[2], nullptr, 10), 0.4, Shapes::triaxial, 5);
+    double const box[3] = {s.side, s.side, s.side};
+    pw85::detail::Index index(box);
+    auto const t0 = Clock::now();
+    fill(&index, s);
+    std::printf("fill: %.3f s\n", seconds_since(t0));
+    Run const r = all_pairs(index, 1, 3);
+    std::printf("pairs: %.3f s, %zu candidates, %zu pairs\n", r.seconds, r.candidates, r.pairs);
+    return 0;
+  }
   bool const quick = argc > 1 && std::strcmp(argv[1], "quick") == 0;
+  bool const rsa_only = argc > 1 && std::strcmp(argv[1], "rsa") == 0;
   std::printf("pw85 %s index benchmark (OpenMP: %s; ratios are the result, "
               "times are noisy)\n", pw85_version(), pw85_index_openmp() ? "yes" : "no");
   std::printf("\nall overlapping pairs, periodic cube (seconds, best of 3; "
@@ -221,6 +237,7 @@ int main(int argc, char **argv) {
   std::printf("  %-34s %8s %9s %9s %9s %6s %8s %9s\n", "set", "N", "1 thread",
               "2 threads", "ns/ell.", "x2thr", "cand.", "pairs");
   std::vector<std::size_t> sizes = {10000, 100000};
+  if (rsa_only) sizes.clear();
   if (!quick) sizes.push_back(1000000);
   double per_ell_small = 0., per_ell_large = 0.;
   for (double fraction : {0.2, 0.4}) {
@@ -238,6 +255,7 @@ int main(int argc, char **argv) {
       if (fraction == 0.4 && n == sizes.back()) per_ell_large = two.seconds / double(n);
     }
   }
+  if (!rsa_only) {
   std::printf("  time per ellipsoid, N = %zu over N = %zu (fraction 0.4, 2 threads): %.2f\n",
               sizes.back(), sizes.front(), per_ell_large / per_ell_small);
   {
@@ -289,20 +307,25 @@ int main(int argc, char **argv) {
 #else
   std::printf("\nFCL: not built (libfcl-dev not found)\n");
 #endif
+  }  // !rsa_only
 
-  // Random sequential addition through the C API.
+  // Random sequential addition through the C API, to a packing fraction
+  // of 0.25 (this shape saturates near 0.29: 0.3 is out of reach), at most
+  // 100000 failed attempts in a row.
   {
     std::size_t const n = 100000;
+    double const target = 0.25;
     double const a[3] = {1., .5, .2};
-    double const side = std::cbrt(n * 4. / 3. * M_PI * .1 / 0.3);
+    double const volume = 4. / 3. * M_PI * .1;
+    double const side = std::cbrt(n * volume / target);
     double const box[3] = {side, side, side};
     pw85_index *index = nullptr;
     pw85_index_create(box, &index);
     std::mt19937_64 rng(23);
     std::uniform_real_distribution<double> u(0., side);
-    std::size_t attempts = 0, placed = 0;
+    std::size_t attempts = 0, placed = 0, failures = 0;
     auto const t0 = Clock::now();
-    while (placed < n) {
+    while (placed < n && failures < 100000) {
       double c[3] = {u(rng), u(rng), u(rng)}, r[9], q[6];
       random_rotation(rng, r);
       form(a, r, q);
@@ -310,16 +333,23 @@ int main(int argc, char **argv) {
       int result = 0;
       std::size_t id = 0;
       pw85_index_overlap_any(index, c, q, PW85_INDEX_NO_ID, &result, &id);
-      if (result > 0) pw85_index_insert(index, placed++, c, q);
+      if (result > 0) {
+        pw85_index_insert(index, placed++, c, q);
+        failures = 0;
+      } else {
+        ++failures;
+      }
     }
     double const t = seconds_since(t0);
     std::size_t count = 1;
     auto const t1 = Clock::now();
     pw85_index_overlapping_pairs(index, 2, 0, nullptr, nullptr, nullptr, &count);
     double const t_check = seconds_since(t1);
-    std::printf("\nrandom sequential addition of %zu ellipsoids to fraction 0.3 "
-                "(periodic): %.3f s, %zu attempts, %.0f ns per attempt; "
-                "all-pairs check: %zu overlapping pairs (%.3f s)\n", n, t,
+    std::printf("\nrandom sequential addition, 1 : 0.5 : 0.2, periodic: %zu "
+                "placed, fraction %.4f (target %.2f): %.3f s, %zu attempts, "
+                "%.0f ns per attempt; all-pairs check (2 threads): %zu "
+                "overlapping pairs (%.3f s)\n", placed,
+                double(placed) * volume / (side * side * side), target, t,
                 attempts, 1e9 * t / double(attempts), count, t_check);
     pw85_index_destroy(index);
   }
