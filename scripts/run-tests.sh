@@ -28,15 +28,21 @@ if command -v valgrind >/dev/null; then
 else
   echo "valgrind not found: memcheck run skipped"
 fi
-# ThreadSanitizer: the multi-threaded tests (test-threads), in a build
-# whose kernels have no target_clones (fma_clones=false: TSan crashes in
-# their ifunc resolver at start-up). Only what they need is built.
+# ThreadSanitizer: the multi-threaded tests (test-threads; test-index,
+# whose queries run from several threads at once), in a build whose
+# kernels have no target_clones (fma_clones=false: TSan crashes in their
+# ifunc resolver at start-up) and without OpenMP (openmp=disabled: the
+# OpenMP runtimes of gcc and clang are not instrumented, and TSan reports
+# their fork and join as races; the all-pairs queries then run serially
+# there, and their threads are tested for identical output in the other
+# builds). Only what they need is built.
 [ -f build-tsan/build.ninja ] ||
   meson setup build-tsan -Db_sanitize=thread -Dfma_clones=false \
-    -Ddocs=disabled -Dpython=disabled
-ninja -C build-tsan -j2 tests/test-threads
+    -Ddocs=disabled -Dpython=disabled -Dopenmp=disabled
+meson configure build-tsan -Dopenmp=disabled
+ninja -C build-tsan -j2 tests/test-threads tests/test-index
 TSAN_OPTIONS=halt_on_error=1 \
-  meson test -C build-tsan --no-rebuild --print-errorlogs threads
+  meson test -C build-tsan --no-rebuild --print-errorlogs threads index
 # --- end of checkers ----------------------------------------------------
 
 # ---- fuzz (issue 14, item 1) ------------------------------------------

@@ -659,6 +659,78 @@ static void test_several_images(void) {
   pw85_index_destroy(ix);
 }
 
+/* Queries only read an index: several threads querying one index at once
+ * get the answers of one thread, bit for bit (and ThreadSanitizer, in its
+ * build, sees no race). */
+#define QUERY_THREADS 4
+#define QUERY_CANDIDATES 40
+
+typedef struct {
+  pw85_index const *index;
+  double const *c, *q; /* the candidates */
+  int results[QUERY_CANDIDATES];
+  size_t ids[QUERY_CANDIDATES], counts[QUERY_CANDIDATES];
+  double mu2_sum[QUERY_CANDIDATES];
+  size_t pairs;
+} Queries;
+
+static gpointer run_queries(gpointer data) {
+  Queries *w = data;
+  for (int k = 0; k < QUERY_CANDIDATES; k++) {
+    double const *c = w->c + 3 * k, *q = w->q + 6 * k;
+    g_assert_cmpint(pw85_index_overlap_any(w->index, c, q, PW85_INDEX_NO_ID,
+                                           &w->results[k], &w->ids[k]), ==, PW85_SUCCESS);
+    size_t ids[64];
+    int shifts[3 * 64];
+    double ml[2 * 64];
+    g_assert_cmpint(pw85_index_within(w->index, c, q, 2., PW85_INDEX_NO_ID, 64, ids,
+                                      shifts, ml, &w->counts[k]), ==, PW85_SUCCESS);
+    w->mu2_sum[k] = 0.;
+    for (size_t a = 0; a < MIN(w->counts[k], (size_t)64); a++) w->mu2_sum[k] += ml[2 * a];
+  }
+  g_assert_cmpint(pw85_index_overlapping_pairs(w->index, 1, 0, NULL, NULL, NULL,
+                                               &w->pairs), ==, PW85_SUCCESS);
+  return NULL;
+}
+
+static void test_concurrent_queries(void) {
+  Config const cf = {"concurrent", MONO, 1, small_run() ? 60 : 300, .3, 0};
+  GRand *rng = g_rand_new_with_seed(11);
+  double const side = cbrt(cf.n * mean_volume(MONO) / cf.fraction);
+  double const box[3] = {side, side, side};
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
+  double c[3], q[6];
+  for (int i = 0; i < cf.n; i++) {
+    random_ellipsoid(rng, &cf, side, c, q);
+    g_assert_cmpint(pw85_index_insert(ix, (size_t)i, c, q), ==, PW85_SUCCESS);
+  }
+  double cs[3 * QUERY_CANDIDATES], qs[6 * QUERY_CANDIDATES];
+  for (int k = 0; k < QUERY_CANDIDATES; k++)
+    random_ellipsoid(rng, &cf, side, cs + 3 * k, qs + 6 * k);
+  Queries serial = {ix, cs, qs, {0}, {0}, {0}, {0}, 0};
+  run_queries(&serial);
+  Queries parallel[QUERY_THREADS];
+  GThread *threads[QUERY_THREADS];
+  for (int t = 0; t < QUERY_THREADS; t++) {
+    parallel[t] = (Queries){ix, cs, qs, {0}, {0}, {0}, {0}, 0};
+    threads[t] = g_thread_new("query", run_queries, &parallel[t]);
+  }
+  for (int t = 0; t < QUERY_THREADS; t++) {
+    g_thread_join(threads[t]);
+    g_assert_cmpmem(parallel[t].results, sizeof serial.results, serial.results,
+                    sizeof serial.results);
+    g_assert_cmpmem(parallel[t].ids, sizeof serial.ids, serial.ids, sizeof serial.ids);
+    g_assert_cmpmem(parallel[t].counts, sizeof serial.counts, serial.counts,
+                    sizeof serial.counts);
+    g_assert_cmpmem(parallel[t].mu2_sum, sizeof serial.mu2_sum, serial.mu2_sum,
+                    sizeof serial.mu2_sum);
+    g_assert_cmpuint(parallel[t].pairs, ==, serial.pairs);
+  }
+  pw85_index_destroy(ix);
+  g_rand_free(rng);
+}
+
 static Config const configs[] = {
     {"mono-dense-periodic", MONO, 1, 400, .4, 0},
     {"mono-dilute-periodic", MONO, 1, 300, .05, 0},
@@ -677,6 +749,7 @@ int main(int argc, char **argv) {
   install_failing_gsl_handler();
   g_test_add_func("/pw85/index/bad-input", test_bad_input);
   g_test_add_func("/pw85/index/several-images", test_several_images);
+  g_test_add_func("/pw85/index/concurrent-queries", test_concurrent_queries);
   for (size_t k = 0; k < G_N_ELEMENTS(configs); k++) {
     char *path = g_strdup_printf("/pw85/index/brute-force/%s", configs[k].name);
     g_test_add_data_func(path, &configs[k], test_config);
