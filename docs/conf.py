@@ -136,6 +136,7 @@ if AVAILABLE["matplotlib"]:
     plot_html_show_source_link = False
     plot_html_show_formats = False
     plot_include_source = False
+    plot_working_directory = str(DOCS)  # plot_section.py finds ../tutorial
 
 
 class OptionalContent(SphinxDirective):

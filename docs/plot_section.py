@@ -16,7 +16,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Ellipse
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "tutorial"))
+# Run by Sphinx's plot directive from docs/ (conf.py: plot_working_directory).
+sys.path.insert(0, str(pathlib.Path.cwd().resolve().parent / "tutorial"))
 from rsa import rsa_packing  # noqa: E402
 
 index, centres, forms, side, _ = rsa_packing(1500, 0.25, seed=4)
