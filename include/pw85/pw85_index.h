@@ -33,7 +33,8 @@
  * not considered by the queries on a candidate.
  *
  * Certification. The broad phase (a grid over the axis-aligned bounding
- * boxes of the ellipsoids, whose half-widths are √Q_kk exactly) only
+ * boxes of the ellipsoids, whose half-widths are √Q_kk exactly, then the
+ * projections of the two ellipsoids on the line of their centres) only
  * discards pairs with μ² > t·(1 + 2⁻²⁰), far outside the rounding of any
  * decision; every other pair is decided by the logic of pw85_overlap() or
  * by pw85_contact_function(). The answers are therefore those of a brute

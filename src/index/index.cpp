@@ -51,7 +51,7 @@ void Index::make_entry(std::size_t id, double const c[dim],
 
 void Index::init_level(Level *lv, int exponent) const noexcept {
   lv->exponent = exponent;
-  double const side = std::ldexp(1.0, exponent);
+  double const side = std::ldexp(1.0, exponent + hash_cell_octaves);
   for (int k = 0; k < dim; ++k) {
     if (periodic_) {
       double const n = std::min(std::max(std::floor(box_[k] / side), 1.0),
@@ -62,7 +62,7 @@ void Index::init_level(Level *lv, int exponent) const noexcept {
     } else {
       lv->n[k] = 0;
       lv->side[k] = side;
-      lv->inv[k] = std::ldexp(1.0, -exponent);
+      lv->inv[k] = std::ldexp(1.0, -exponent - hash_cell_octaves);
     }
   }
 }
@@ -243,7 +243,8 @@ Status Index::get(std::size_t id, double c[dim], double q[sym]) const
 
 template <typename F>
 Status Index::visit_level(Level const &lv, double const c[dim],
-                          double const h[dim], double sqrt_t,
+                          double const q[sym], double const h[dim],
+                          double sqrt_t,
                           std::uint32_t exclude, bool *go_on, F &f) const
     noexcept {
   double reach[dim], lo[dim], hi[dim];
@@ -267,6 +268,7 @@ Status Index::visit_level(Level const &lv, double const c[dim],
       if (!(std::fabs(r[k]) <= sqrt_t * (h[k] + e.h[k]) * (1.0 + broad_margin)))
         return true;
     }
+    if (separated_along_r(r, q, h, e.q, e.h, sqrt_t)) return true;
     return f(e, shift, r);
   };
 
@@ -338,12 +340,14 @@ Status Index::visit_level(Level const &lv, double const c[dim],
 }
 
 template <typename F>
-Status Index::visit(double const c[dim], double const h[dim], double sqrt_t,
+Status Index::visit(double const c[dim], double const q[sym],
+                    double const h[dim], double sqrt_t,
                     std::uint32_t exclude, F &&f) const noexcept {
   bool go_on = true;
   for (std::size_t l = 0; l < levels_.size() && go_on; ++l) {
     if (levels_[l].count == 0) continue;
-    Status const s = visit_level(levels_[l], c, h, sqrt_t, exclude, &go_on, f);
+    Status const s =
+        visit_level(levels_[l], c, q, h, sqrt_t, exclude, &go_on, f);
     if (s != Status::success) return s;
   }
   return Status::success;
@@ -367,7 +371,7 @@ Status Index::overlap_any(double const c[dim], double const q[sym],
   Status failed = Status::success;
   int best = 1;
   std::uint32_t best_id = no_id;
-  s = visit(c, h, 1.0, to_exclude(exclude),
+  s = visit(c, q, h, 1.0, to_exclude(exclude),
             [&](Entry const &e, std::int32_t const *, double const r[dim]) {
               int res = 1;
               failed = overlap(r, q, e.q, &res);
@@ -394,7 +398,7 @@ Status Index::within(double const c[dim], double const q[sym], double t,
   double h[dim];
   half_widths(q, h);
   Status failed = Status::success;
-  s = visit(c, h, std::sqrt(t), to_exclude(exclude),
+  s = visit(c, q, h, std::sqrt(t), to_exclude(exclude),
             [&](Entry const &e, std::int32_t const *shift,
                 double const r[dim]) {
               double out[2] = {NAN, NAN};

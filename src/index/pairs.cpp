@@ -4,7 +4,7 @@
 // into the order (i, j, shift), which makes the output independent of the
 // number of threads and of the schedule.
 //
-// Snapshot: per level, a dense grid (cells of side ≥ 2^e, coarsened until
+// Snapshot: per level e, a dense grid (cells of side ≥ 2^e, coarsened until
 // there are at most 2·count + 64 cells) whose entries are sorted by cell
 // (a counting sort), so that the entries of a row of cells along axis 2
 // are contiguous, and neighbours in space are neighbours in memory. The
@@ -113,13 +113,15 @@ bool take_snapshot(Index const &index, Snapshot *s) noexcept {
     double cells = 1.0;
     for (int k = 0; k < dim; ++k) {
       g.hmax[k] = lv.hmax[k];
+      double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
       if (periodic) {
         g.origin[k] = 0.0;
-        g.n[k] = lv.n[k];
+        g.n[k] = static_cast<std::int64_t>(std::min(
+            std::max(std::floor(box[k] / side), 1.0), max_span));
         g.inv[k] = double(g.n[k]) / box[k];
       } else {
         g.origin[k] = lo[k];
-        g.inv[k] = lv.inv[k];
+        g.inv[k] = 1.0 / side;
         g.n[k] = static_cast<std::int64_t>(std::min(
             std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
       }
@@ -225,10 +227,11 @@ class Search {
             sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin)))
         return true;
     }
-    ++share->candidates;
-    PairHit hit{x.id, y.id, {shift[0], shift[1], shift[2]}, 0, 0.0, 0.0};
     double const *q1 = s_.forms[a].q;
     double const *q2 = s_.forms[b].q;
+    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_)) return true;
+    ++share->candidates;
+    PairHit hit{x.id, y.id, {shift[0], shift[1], shift[2]}, 0, 0.0, 0.0};
     if (within_) {
       double out[2] = {NAN, NAN};
       Status const st = contact_function(r, q1, q2, out);
