@@ -146,9 +146,9 @@ class Index:
         then unchanged.
         """
         one = np.ndim(ids) == 0
-        i = _array("ids", [ids] if one else ids, np.uintp, (-1,))
         if (np.asarray(ids) < 0).any():
             raise ValueError("ids: non-negative integers expected")
+        i = _array("ids", [ids] if one else ids, np.uintp, (-1,))
         c = _array("centres", [centres] if one else centres, np.float64,
                    (i.size, 3))
         f = _array("q", [q] if one else q, np.float64, (i.size, 6))
