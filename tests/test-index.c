@@ -375,7 +375,7 @@ static void check_pairs(pw85_index const *ix, Mirror const *m,
 static void test_config(gconstpointer data) {
   Config const *cf = data;
   GRand *rng = g_rand_new_with_seed(g_str_hash(cf->name));
-  int const n = small_run() ? MAX(cf->n / 5, 8) : cf->n;
+  int const n = small_run() ? MAX(cf->n / 10, 8) : cf->n;
   /* The box's sides are (1, 1.1, 0.9) times side, at least 2.3 times the
    * largest semi-axis (the side rule of pw85_index.h). */
   double const amax = cf->shapes == POLY ? 10. : 1.;
@@ -414,7 +414,7 @@ static void test_config(gconstpointer data) {
   g_assert_cmpint(pw85_index_count(ix, &count), ==, PW85_SUCCESS);
   g_assert_cmpuint(count, ==, (size_t)n);
   check_pairs(ix, &m, cf, "inserted");
-  check_candidates(ix, &m, rng, cf, side, small_run() ? 5 : 30);
+  check_candidates(ix, &m, rng, cf, side, small_run() ? 3 : 30);
 
   /* Random updates (moves, reshapes), removals and new ids. */
   for (int step = 0; step < 2 * n; step++) {
@@ -452,7 +452,7 @@ static void test_config(gconstpointer data) {
     g_assert_cmpmem(qq, sizeof qq, m.q + 6 * id, sizeof qq);
   }
   check_pairs(ix, &m, cf, "after moves");
-  check_candidates(ix, &m, rng, cf, side, small_run() ? 5 : 30);
+  check_candidates(ix, &m, rng, cf, side, small_run() ? 3 : 30);
 
   pw85_index_destroy(ix);
   g_free(ids), g_free(c), g_free(q);
@@ -694,7 +694,7 @@ static gpointer run_queries(gpointer data) {
 }
 
 static void test_concurrent_queries(void) {
-  Config const cf = {"concurrent", MONO, 1, small_run() ? 60 : 300, .3, 0};
+  Config const cf = {"concurrent", MONO, 1, small_run() ? 40 : 300, .3, 0};
   GRand *rng = g_rand_new_with_seed(11);
   double const side = cbrt(cf.n * mean_volume(MONO) / cf.fraction);
   double const box[3] = {side, side, side};
