@@ -54,7 +54,10 @@ class Buffer {
   [[nodiscard]] bool reserve(std::size_t n) noexcept {
     if (n <= cap_) return true;
     if (n > std::size_t(-1) / sizeof(T)) return false;
-    T *p = static_cast<T *>(std::malloc(n * sizeof(T)));
+    // sizeof(T) is a multiple of alignof(T), as aligned_alloc requires.
+    T *p = static_cast<T *>(alignof(T) > alignof(std::max_align_t)
+                                ? std::aligned_alloc(alignof(T), n * sizeof(T))
+                                : std::malloc(n * sizeof(T)));
     if (p == nullptr) return false;
     for (std::size_t i = 0; i < size_; ++i) {
       new (p + i) T(std::move(data_[i]));

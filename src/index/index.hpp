@@ -58,13 +58,15 @@ constexpr double max_span = 0x1p20;
 constexpr std::uint32_t no_id = 0xFFFFFFFFu;
 constexpr std::size_t max_id = 0xFFFFFFFEu;
 
-// A stored ellipsoid, as its cell holds it.
-struct Entry {
+// A stored ellipsoid, as its cell holds it. What the broad phase reads
+// (id, wrap, centre, half-widths) fills the first cache line; the form,
+// read by the narrow phase only, the second.
+struct alignas(64) Entry {
+  std::uint32_t id;
+  std::int32_t wrap[dim];  // ⌊c_k/L_k⌋ (periodic), else 0
   double c[dim];           // centre, as given
   double h[dim];           // AABB half-widths √Q_kk
   double q[sym];           // quadratic form
-  std::int32_t wrap[dim];  // ⌊c_k/L_k⌋ (periodic), else 0
-  std::uint32_t id;
 };
 
 // Where an id is stored: level −1 when absent.
