@@ -11,7 +11,10 @@ recomputed with the exact/certified routines of
 gen_ref_data.py (same folder) and compared bit for bit, and a smaller sample
 with the independent mpmath route.  Every hard pair (pw85_hard_pairs.h5) is
 recomputed and certified with gen_hard_set.py, and a sample is regenerated
-from the seed.  Exit status: 0 if everything matches,
+from the seed.  In pw85_geometry_pairs.h5, a sample of pairs and every
+constructor case is regenerated with gen_geometry.py (which repeats its own
+checks: cold start at higher precision, exact route, identities, finite
+differences) and compared bit for bit.  Exit status: 0 if everything matches,
 1 on any mismatch, 77 (meson's "skipped") if numpy/h5py/mpmath are missing.
 """
 
@@ -35,6 +38,7 @@ except ImportError as exc:  # pragma: no cover
 import gen_ref_data as gen  # noqa: E402
 import gen_hard_set as hard  # noqa: E402
 import gen_f_cases as fcases  # noqa: E402
+import gen_geometry as geom  # noqa: E402
 
 N_F = 20000
 N_MU = 3000
@@ -47,6 +51,7 @@ N_HARD_REGEN = 150
 N_HARD_COND = 300
 N_F_CASES_MP = 300
 N_F_CASES_REGEN = 150
+N_GEOMETRY_PAIRS = 100
 
 
 class Checker:
@@ -226,6 +231,7 @@ def main(argv=None):
           "with mpmath): %d mismatches" % (n, N_FINISH_MP, bad))
     check_hard(args.datadir, ck, rng)
     check_f_cases(args.datadir, ck, rng)
+    check_geometry(args.datadir, ck, rng)
     print("%s (%.1f s)" % ("FAILED: %d mismatches" % ck.failures
                            if ck.failures else "all checks passed",
                            time.time() - t0))
@@ -372,6 +378,55 @@ def check_f_cases(datadir, ck, rng):
                             "differs" % (c, candidates[c]))
     print("  f cases: %d random cases regenerated from the seed: %d "
           "mismatches" % (N_F_CASES_REGEN, bad))
+
+
+def check_geometry(datadir, ck, rng):
+    """pw85_geometry_pairs.h5: shapes, a random sample of pairs and every
+    constructor case regenerated from the seed (inputs and references, with
+    the generator's own checks), compared bit for bit."""
+    path = os.path.join(datadir, geom.GEOM_FILE)
+    print("checking %s" % path)
+    with h5py.File(path, "r") as f:
+        g = {k: f[k][...] for k in f if isinstance(f[k], h5py.Dataset)}
+        c = {k: v[...] for k, v in f["constructors"].items()}
+    n = sum(m for _, m in geom.PAIR_BLOCKS)
+    m = sum(m for _, m in geom.CTOR_KINDS)
+    for group, spec, rows in ((g, geom.PAIR_DATASETS, n),
+                              (c, geom.CTOR_DATASETS, m)):
+        for name, width, _, _ in spec:
+            shp = (rows, width) if width else (rows,)
+            ck.check(name in group and group[name].shape == shp,
+                     "geometry dataset %s: expected shape %s" % (name, shp))
+    if ck.failures:
+        return
+    tasks = [(b, k) for b, (_, cnt) in enumerate(geom.PAIR_BLOCKS)
+             for k in range(cnt)]
+    bad = 0
+    for i in sorted(rng.choice(n, N_GEOMETRY_PAIRS, replace=False)):
+        try:
+            rec, _ = geom.pair_record(tasks[i])
+            ok = all(same(np.atleast_1d(rec[name]), np.atleast_1d(g[name][i]))
+                     for name, _, _, _ in geom.PAIR_DATASETS)
+        except AssertionError as exc:
+            ok = False
+            print("  pair %d: %s" % (i, exc))
+        bad += not ck.check(ok, "geometry pair %d differs" % i)
+    print("  geometry pairs: %d random records regenerated and recomputed "
+          "(with finite differences): %d mismatches" % (N_GEOMETRY_PAIRS, bad))
+    tasks = [(kind, k) for kind, (_, cnt) in enumerate(geom.CTOR_KINDS)
+             for k in range(cnt)]
+    bad = 0
+    for i, task in enumerate(tasks):
+        try:
+            rec, _ = geom.ctor_record(task)
+            ok = all(same(np.atleast_1d(rec[name]), np.atleast_1d(c[name][i]))
+                     for name, _, _, _ in geom.CTOR_DATASETS)
+        except AssertionError as exc:
+            ok = False
+            print("  constructor case %d: %s" % (i, exc))
+        bad += not ck.check(ok, "geometry constructor case %d differs" % i)
+    print("  constructors: all %d cases regenerated and recomputed: %d "
+          "mismatches" % (m, bad))
 
 
 if __name__ == "__main__":

@@ -56,7 +56,8 @@ def exported_symbols(nm, lib):
     symbols = set()
     for line in out.splitlines():
         fields = line.split()
-        if len(fields) == 3:
+        # Type A: a version node (PW85_2.0, ...), not a function.
+        if len(fields) == 3 and fields[1] != "A":
             symbols.add(fields[2].split("@")[0])
     if not symbols:
         sys.exit("%s exports no symbol: is it the library?" % lib)

@@ -7,6 +7,9 @@ sets these environment variables:
 PW85_VERSION          the project version (meson.build)
 PW85_DOXYGEN_XML      the directory of Doxygen's XML for the public headers
 PW85_DOCS_HEADERS     the headers that Doxygen read, separated by os.pathsep
+PW85_FIGURE_DIR       the build directory where docs/meson.build draws the
+                      figures (contact_figure.py); unset or without them
+                      when pypw85 is not built
 PW85_LIBRARY          libpw85 of this build, loaded by pypw85 (autodoc)
 PW85_LEGACY_LIBRARY   libpw85_legacy of this build (empty if not built)
 PYTHONPATH            src/python, where pypw85 lives
@@ -24,7 +27,7 @@ from docutils import nodes
 from docutils.parsers.rst import directives
 from docutils.statemachine import StringList
 from sphinx import addnodes
-from sphinx.directives.patches import MathDirective
+from sphinx.directives.patches import Figure, MathDirective
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
@@ -178,6 +181,44 @@ class OptionalContent(SphinxDirective):
         return container.children
 
 
+class BuiltFigure(Figure):
+    """A figure drawn at build time into PW85_FIGURE_DIR (docs/meson.build),
+    outside the source tree: the argument is its file name there. When the
+    build did not draw it (pypw85 unavailable), a note replaces it.
+
+    .. pw85-figure:: name.svg
+       :otherwise: text of the note (reStructuredText)
+       :alt: ... (the options of figure)
+
+       Caption.
+    """
+
+    option_spec = dict(Figure.option_spec,
+                       otherwise=directives.unchanged_required)
+
+    def run(self):
+        otherwise = self.options.pop("otherwise", None)
+        if otherwise is None:
+            raise self.error("pw85-figure: the option :otherwise: is required")
+        env = self.state.document.settings.env  # a docutils directive
+        name = self.arguments[0]
+        folder = os.environ.get("PW85_FIGURE_DIR", "")
+        path = Path(folder) / name if folder else None
+        if path is None or not path.is_file():
+            logger.info("pw85 docs: figure %s not drawn: a note replaces it "
+                        "in %s", name, env.docname)
+            note = nodes.note()
+            text = " ".join(line.strip() for line in otherwise.splitlines())
+            self.state.nested_parse(StringList([text], env.docname),
+                                    self.content_offset, note)
+            return [note]
+        # Image paths are relative to the page's directory; Sphinx copies
+        # the file into _images.
+        page_dir = Path(env.srcdir) / Path(env.docname).parent
+        self.arguments[0] = os.path.relpath(path.resolve(), page_dir)
+        return super().run()
+
+
 class NumberedMath(MathDirective):
     """A display formula numbered "(C.N)": equation N of chapter C.
 
@@ -254,6 +295,7 @@ def _unlink_namespace_word(app, doctree):
 def setup(app):
     app.add_directive("pw85-optional", OptionalContent)
     app.add_directive("numbered-math", NumberedMath)
+    app.add_directive("pw85-figure", BuiltFigure)
     app.connect("doctree-read", _unlink_namespace_word)
     app.connect("autodoc-process-docstring", _plain_docstrings,
                 priority=400)

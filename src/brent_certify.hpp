@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Certification of the maximum of f by GSL's Brent minimiser on −f
 // (private; docs/optimisation.rst, step 5). brent_certify.cpp is the only
-// file of the core that includes GSL.
+// file of the search that includes GSL (principal_axes.cpp, outside it,
+// uses GSL's eigensolver).
 #ifndef PW85_SRC_BRENT_CERTIFY_HPP
 #define PW85_SRC_BRENT_CERTIFY_HPP
 

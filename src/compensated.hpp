@@ -106,6 +106,12 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
                     double const q2[sym], bool with_p,
                     Compensated *out) noexcept;
 
+// s = Q(λ)⁻¹·r as s + s_lo, from Q(λ) = hi + lo factorised in
+// double-double: relative error of order κ(Q(λ))·2⁻¹⁰⁴ (the contact
+// geometry, geometry.cpp). Returns false when a pivot is not > 0.
+bool solve_dd(double lambda, double const r[dim], double const q1[sym],
+              double const q2[sym], double s[dim], double s_lo[dim]) noexcept;
+
 // The evaluation from Q(λ) as hi + lo and its plain factors and solution.
 // WithP: also P1 and P2.
 template <bool WithP>

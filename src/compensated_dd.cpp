@@ -53,6 +53,17 @@ PW85_INLINE dd ldl_solve_quad_dd(LdlDd const &f, double const r[dim],
   return dd_add(dd_add(dd_mul(z0, y0), dd_mul(z1, y1)), dd_mul(z2, y2));
 }
 
+// Q(λ) = hi + lo (combine_dd()) factorised in double-double; false when a
+// pivot is not > 0.
+PW85_INLINE bool factorise_q_dd(double lambda, double const q1[sym],
+                                double const q2[sym], LdlDd *f) noexcept {
+  double hi[sym], lo[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
+  dd a[sym];
+  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
+  return ldl_decomp_dd(a, f);
+}
+
 }  // namespace
 
 PW85_FMA_CLONES
@@ -63,12 +74,8 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
   // s = s_hi + s_lo: sᵀQs = s_hiᵀQs_hi + 2·(Q·s_hi)·s_lo to second order
   // in s_lo. (From s rounded to double, Pᵢ would be off by up to
   // ε·√cond(Qᵢ) relative, and λ by as much.)
-  double hi[sym], lo[sym];
-  combine_dd(lambda, q1, q2, hi, lo);
-  dd a[sym];
-  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
   LdlDd fdd;
-  if (!ldl_decomp_dd(a, &fdd)) return false;
+  if (!factorise_q_dd(lambda, q1, q2, &fdd)) return false;
   double s[dim], s_lo[dim];
   dd const quad = ldl_solve_quad_dd(fdd, r, s, s_lo);
   dd const value = dd_mul(dd_mul(two_sum(1.0, -lambda), lambda), quad);
@@ -81,6 +88,15 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
     out->p1 = quad_form_dd(q1, s) + 2.0 * dot(t1, s_lo);
     out->p2 = quad_form_dd(q2, s) + 2.0 * dot(t2, s_lo);
   }
+  return true;
+}
+
+PW85_FMA_CLONES
+bool solve_dd(double lambda, double const r[dim], double const q1[sym],
+              double const q2[sym], double s[dim], double s_lo[dim]) noexcept {
+  LdlDd fdd;
+  if (!factorise_q_dd(lambda, q1, q2, &fdd)) return false;
+  ldl_solve_quad_dd(fdd, r, s, s_lo);
   return true;
 }
 

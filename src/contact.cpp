@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "brent_certify.hpp"
+#include "compiler.hpp"
 #include "evaluate.hpp"
 #include "finish.hpp"
 #include "newton.hpp"
@@ -76,15 +77,18 @@ Status solve(Problem const &p, double out[2]) noexcept {
 template Status solve<true>(Problem const &, double[2]) noexcept;
 template Status solve<false>(Problem const &, double[2]) noexcept;
 
-Status contact_function(double const r[dim], double const q1[sym],
-                        double const q2[sym], double out[2]) noexcept {
+namespace {
+
+// Inline, so that contact_function() keeps the problem in its own frame.
+PW85_INLINE Status search(double const r[dim], double const q1[sym],
+                          double const q2[sym], Contact *c) noexcept {
   // 2. Rescaling, and the factorisations of Q1 and Q2.
-  Problem p;
+  Problem &p = c->p;
   Status status = prepare(r, q1, q2, &p);
   if (status != Status::success) return status;
   if (p.r_is_zero) {  // coincident centres: f ≡ 0, λ is arbitrary
-    out[0] = 0.0;
-    out[1] = 0.5;
+    c->mu2 = 0.0;
+    c->lambda = 0.5;
     return Status::success;
   }
   quads(&p);
@@ -110,14 +114,30 @@ Status contact_function(double const r[dim], double const q1[sym],
       shift -= 8;
     }
   }
-  // 9. Scaling back, and λ of the input's orientation.
-  mu2 = times_pow2(mu2, shift);
-  out[1] = p.swapped ? 1.0 - res[1] : res[1];
-  if (std::isinf(mu2)) {
+  // 9. Scaling back (λ of the input's orientation: the caller's).
+  c->mu2 = times_pow2(mu2, shift);
+  c->lambda = res[1];
+  return Status::success;
+}
+
+}  // namespace
+
+Status contact_search(double const r[dim], double const q1[sym],
+                      double const q2[sym], Contact *c) noexcept {
+  return search(r, q1, q2, c);
+}
+
+Status contact_function(double const r[dim], double const q1[sym],
+                        double const q2[sym], double out[2]) noexcept {
+  Contact c;
+  Status const status = search(r, q1, q2, &c);
+  if (status != Status::success) return status;
+  out[1] = c.p.swapped ? 1.0 - c.lambda : c.lambda;
+  if (std::isinf(c.mu2)) {
     out[0] = HUGE_VAL;
     return Status::out_of_range;
   }
-  out[0] = mu2;
+  out[0] = c.mu2;
   return Status::success;
 }
 

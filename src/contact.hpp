@@ -9,6 +9,21 @@
 
 namespace pw85::detail {
 
+// The search (steps 2–9) on input that passed check_pointers_and_finite(),
+// stopped before λ is mapped back to the input's orientation: for the
+// functions that go on from the maximiser (geometry.cpp).
+struct Contact {
+  Problem p;      // prepared; quads() and orient() done unless p.r_is_zero
+  double mu2;     // μ² of the input: scaled back, floored; +∞ on overflow
+  double lambda;  // the maximiser of the problem (1 − λ of the input's
+                  // when p.swapped); ½ when p.r_is_zero
+};
+
+// Returns Status::success (c->mu2 may be +∞), or the status of prepare()
+// (*c is then incomplete), or Status::no_memory.
+Status contact_search(double const r[dim], double const q1[sym],
+                      double const q2[sym], Contact *c) noexcept;
+
 // The contact function for input that passed check_pointers_and_finite():
 // out = {μ², λ}. Returns Status::success, Status::not_positive_definite,
 // Status::out_of_range (out[0] = +∞ when μ² overflows, out[1] = λ) or

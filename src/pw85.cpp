@@ -4,12 +4,16 @@
 #include "pw85.h"
 
 #include <cmath>
+#include <cstddef>
 
+#include "batch.hpp"
 #include "checks.hpp"
 #include "cholesky.hpp"
 #include "contact.hpp"
+#include "ellipsoid.hpp"
 #include "f.hpp"
 #include "facade.hpp"
+#include "geometry.hpp"
 #include "overlap.hpp"
 #include "spheroid.hpp"
 #include "status.hpp"
@@ -22,12 +26,114 @@ using core::Status;
 
 static_assert(PW85_DIM == core::dim && PW85_SYM == core::sym,
               "pw85.h and the core disagree on sizes");
+static_assert(PW85_GEOM_MU2 == core::geom::mu2 &&
+                  PW85_GEOM_LAMBDA == core::geom::lambda &&
+                  PW85_GEOM_POINT == core::geom::point &&
+                  PW85_GEOM_NORMAL == core::geom::normal &&
+                  PW85_GEOM_SIZE == core::geom::size &&
+                  PW85_DERIV_R12 == core::deriv::r12 &&
+                  PW85_DERIV_ROT1 == core::deriv::rot1 &&
+                  PW85_DERIV_ROT2 == core::deriv::rot2 &&
+                  PW85_DERIV_Q1 == core::deriv::q1 &&
+                  PW85_DERIV_Q2 == core::deriv::q2 &&
+                  PW85_DERIV_SIZE == core::deriv::size,
+              "pw85.h and the core disagree on the layouts of the outputs");
+static_assert(PW85_UNIT_TOL == core::unit_tol,
+              "pw85.h and the core disagree on PW85_UNIT_TOL");
 static_assert(PW85_LAMBDA_ATOL == core::lambda_atol &&
                   PW85_MAX_ITER == core::brent_max_iter &&
                   PW85_NR_ITER == core::restart_newton_iter,
               "pw85.h does not describe the core as built");
 
 using pw85::facade::to_code;
+
+// The single-pair functions, shared by their exported names and the
+// batches (an exported function called inside the library would go
+// through the PLT).
+inline int contact_function_one(double const *r12, double const *q1,
+                                double const *q2, double *out) noexcept {
+  Status const status = core::check_pointers_and_finite(r12, q1, q2, out);
+  if (status != Status::success) return to_code(status);
+  return to_code(core::contact_function(r12, q1, q2, out));
+}
+
+inline int overlap_one(double const *r12, double const *q1, double const *q2,
+                       int *result) noexcept {
+  Status const status = core::check_pointers_and_finite(r12, q1, q2, result);
+  if (status != Status::success) return to_code(status);
+  return to_code(core::overlap(r12, q1, q2, result));
+}
+
+// d: nullptr for pw85_contact_geometry().
+inline int geometry_one(double const *r12, double const *q1, double const *q2,
+                        double *geometry, double *d) noexcept {
+  Status const status = core::check_pointers_and_finite(r12, q1, q2, geometry);
+  if (status != Status::success) return to_code(status);
+  return to_code(core::contact_geometry(r12, q1, q2, geometry, d));
+}
+
+// ---------------------------------------------------------------------------
+// Batches (pw85.h, "Batches").
+
+// The inputs of a batch of pairs: base pointers and strides in doubles.
+struct Pairs {
+  double const *r12, *q1, *q2;
+  std::size_t r12_stride, q1_stride, q2_stride;
+  double const *r(std::size_t i) const noexcept { return r12 + i * r12_stride; }
+  double const *a(std::size_t i) const noexcept { return q1 + i * q1_stride; }
+  double const *b(std::size_t i) const noexcept { return q2 + i * q2_stride; }
+};
+
+// A stride is 0 (one record for every pair) or at least the record's size.
+constexpr bool valid_stride(std::size_t stride, std::size_t size) noexcept {
+  return stride == 0 || stride >= size;
+}
+
+// A batch: Pair is a callable `int (std::size_t i) const noexcept` that
+// computes pair i and returns its PW85_* status.
+template <class Pair>
+struct Batch {
+  Pair pair;
+  int *status;  // NULL or n entries
+};
+
+template <class Pair>
+core::BatchFailure run_range(void const *context, std::size_t begin,
+                             std::size_t end) noexcept {
+  auto const &batch = *static_cast<Batch<Pair> const *>(context);
+  core::BatchFailure first{end, PW85_SUCCESS};
+  for (std::size_t i = begin; i < end; ++i) {
+    int const code = batch.pair(i);
+    if (batch.status != nullptr) batch.status[i] = code;
+    if (code != PW85_SUCCESS && first.code == PW85_SUCCESS) first = {i, code};
+  }
+  return first;
+}
+
+// The checks of the call itself, then every pair on the threads asked for.
+// outputs_ok: no output pointer is NULL.
+template <class Pair>
+int run(std::size_t n, Pairs const &in, bool outputs_ok, int *status,
+        int threads, Pair pair) noexcept {
+  if (n == 0) return PW85_SUCCESS;
+  int code = PW85_SUCCESS;
+  if (in.r12 == nullptr || in.q1 == nullptr || in.q2 == nullptr ||
+      !outputs_ok)
+    code = PW85_EFAULT;
+  else if (!valid_stride(in.r12_stride, PW85_DIM) ||
+           !valid_stride(in.q1_stride, PW85_SYM) ||
+           !valid_stride(in.q2_stride, PW85_SYM) || threads < 0)
+    code = PW85_EINVAL;
+  if (code != PW85_SUCCESS) {
+    if (status != nullptr)
+      for (std::size_t i = 0; i < n; ++i) status[i] = code;
+    return code;
+  }
+  Batch<Pair> const batch{pair, status};
+  return core::run_batch(n, core::batch_threads(threads, n),
+                         run_range<Pair>, &batch)
+      .code;
+}
 
 }  // namespace
 
@@ -103,16 +209,104 @@ void pw85__residual(double lambda, double const r12[PW85_DIM],
 
 int pw85_contact_function(double const r12[PW85_DIM], double const q1[PW85_SYM],
                           double const q2[PW85_SYM], double out[2]) noexcept {
-  Status const status = core::check_pointers_and_finite(r12, q1, q2, out);
-  if (status != Status::success) return to_code(status);
-  return to_code(core::contact_function(r12, q1, q2, out));
+  return contact_function_one(r12, q1, q2, out);
 }
 
 int pw85_overlap(double const r12[PW85_DIM], double const q1[PW85_SYM],
                  double const q2[PW85_SYM], int *result) noexcept {
-  Status const status = core::check_pointers_and_finite(r12, q1, q2, result);
+  return overlap_one(r12, q1, q2, result);
+}
+
+int pw85_ellipsoid_rotation(double const a[PW85_DIM],
+                            double const rot[PW85_DIM * PW85_DIM],
+                            double q[PW85_SYM]) noexcept {
+  if (a == nullptr || rot == nullptr || q == nullptr) return PW85_EFAULT;
+  return to_code(core::ellipsoid_rotation(a, rot, q));
+}
+
+int pw85_ellipsoid_quaternion(double const a[PW85_DIM], double const p[4],
+                              double q[PW85_SYM]) noexcept {
+  if (a == nullptr || p == nullptr || q == nullptr) return PW85_EFAULT;
+  return to_code(core::ellipsoid_quaternion(a, p, q));
+}
+
+int pw85_principal_axes(double const q[PW85_SYM], double a[PW85_DIM],
+                        double rot[PW85_DIM * PW85_DIM]) noexcept {
+  if (q == nullptr || a == nullptr || rot == nullptr) return PW85_EFAULT;
+  return to_code(core::principal_axes(q, a, rot));
+}
+
+int pw85_contact_geometry(double const r12[PW85_DIM],
+                          double const q1[PW85_SYM], double const q2[PW85_SYM],
+                          double out[PW85_GEOM_SIZE]) noexcept {
+  return geometry_one(r12, q1, q2, out, nullptr);
+}
+
+int pw85_contact_derivatives(double const r12[PW85_DIM],
+                             double const q1[PW85_SYM],
+                             double const q2[PW85_SYM],
+                             double geometry[PW85_GEOM_SIZE],
+                             double d[PW85_DERIV_SIZE]) noexcept {
+  Status status = core::check_pointers_and_finite(r12, q1, q2, geometry);
+  if (status == Status::success && d == nullptr) status = Status::null_pointer;
   if (status != Status::success) return to_code(status);
-  return to_code(core::overlap(r12, q1, q2, result));
+  return to_code(core::contact_geometry(r12, q1, q2, geometry, d));
+}
+
+int pw85_batch_threads(int threads, size_t n) noexcept {
+  return threads < 0 ? 0 : core::batch_threads(threads, n);
+}
+
+int pw85_contact_function_batch(size_t n, double const *r12,
+                                size_t r12_stride, double const *q1,
+                                size_t q1_stride, double const *q2,
+                                size_t q2_stride, double *out, int *status,
+                                int threads) noexcept {
+  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
+  return run(n, in, out != nullptr, status, threads,
+             [in, out](std::size_t i) noexcept {
+               return contact_function_one(in.r(i), in.a(i), in.b(i),
+                                           out + 2 * i);
+             });
+}
+
+int pw85_overlap_batch(size_t n, double const *r12, size_t r12_stride,
+                       double const *q1, size_t q1_stride, double const *q2,
+                       size_t q2_stride, int *result, int *status,
+                       int threads) noexcept {
+  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
+  return run(n, in, result != nullptr, status, threads,
+             [in, result](std::size_t i) noexcept {
+               return overlap_one(in.r(i), in.a(i), in.b(i), result + i);
+             });
+}
+
+int pw85_contact_geometry_batch(size_t n, double const *r12,
+                                size_t r12_stride, double const *q1,
+                                size_t q1_stride, double const *q2,
+                                size_t q2_stride, double *out, int *status,
+                                int threads) noexcept {
+  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
+  return run(n, in, out != nullptr, status, threads,
+             [in, out](std::size_t i) noexcept {
+               return geometry_one(in.r(i), in.a(i), in.b(i),
+                                   out + PW85_GEOM_SIZE * i, nullptr);
+             });
+}
+
+int pw85_contact_derivatives_batch(size_t n, double const *r12,
+                                   size_t r12_stride, double const *q1,
+                                   size_t q1_stride, double const *q2,
+                                   size_t q2_stride, double *geometry,
+                                   double *d, int *status,
+                                   int threads) noexcept {
+  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
+  return run(n, in, geometry != nullptr && d != nullptr, status, threads,
+             [in, geometry, d](std::size_t i) noexcept {
+               return geometry_one(in.r(i), in.a(i), in.b(i),
+                                   geometry + PW85_GEOM_SIZE * i,
+                                   d + PW85_DERIV_SIZE * i);
+             });
 }
 
 }  // extern "C"

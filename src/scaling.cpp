@@ -75,6 +75,8 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
   scale_n<sym>(q1, -eq, s->q1);
   scale_n<sym>(q2, -eq, s->q2);
   s->shift = 2 * er - eq;
+  s->r_exp = er;
+  s->q_exp = eq;
   // |x| < 2^e for the exponent e of x, and |x| ≥ 2^(e−1).
   s->moderate = emax - eq <= 400 && emin - eq >= -399;
   // A diagonal entry overflows only if the diagonals span more than the

@@ -27,7 +27,9 @@ struct Scaled {
   double r[dim];
   double q1[sym];
   double q2[sym];
-  int shift;
+  int shift;       // 2·r_exp − q_exp
+  int r_exp;       // r = r(scaled)·2^r_exp
+  int q_exp;       // Qᵢ = Qᵢ(scaled)·2^q_exp
   bool r_is_zero;
   // Every rescaled diagonal entry of Q1 and Q2, hence of Q(λ), a convex
   // combination of them, lies in [2^−400, 2^400]: the range in which

@@ -100,6 +100,23 @@ constexpr double factor_dd_cond = 1e10;
 // 4e-9·min(λ, 1 − λ) on the hard set (cond(Qᵢ) to 1e16).
 constexpr double p_carry_cond = 1e7;
 
+// ---- The contact geometry (geometry.cpp)
+//
+// λ is polished by Newton steps on the compensated ω, with the plain ω′ as
+// slope, from the search's λ (within about 1e-11·min(λ, 1 − λ) of λ*):
+// after a step of relative size h ≤ polish_accept, λ is off by O(h²) plus
+// the rounding of the compensated ω, below an ulp; the polish then stops.
+// A step larger than polish_max_step (relative) is not taken (not
+// expected): λ stays where it is. At most polish_iter evaluations.
+constexpr double polish_accept = 1e-9;
+constexpr double polish_max_step = 1e-3;
+constexpr int polish_iter = 6;
+// s = Q(λ)⁻¹·r for the outputs: from the plain factors with one
+// refinement by a compensated residual while κ̄(Q(λ)) ≤ geometry_refine_cond
+// (relative error (κ̄·ε)² ≤ 5e-20), from a double-double factorisation
+// beyond (κ̄·2⁻¹⁰⁴).
+constexpr double geometry_refine_cond = 1e6;
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_TOLERANCES_HPP

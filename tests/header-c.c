@@ -11,14 +11,33 @@
 int main(void) {
   double const r[PW85_DIM] = {1., 0., 0.};
   double const q[PW85_SYM] = {1., 0., 0., 1., 0., 1.};
-  double out[2];
+  double out[2], g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
+  double const a[PW85_DIM] = {1., 1., 1.};
+  double const rot[PW85_DIM * PW85_DIM] = {1., 0., 0., 0., 1., 0., 0., 0., 1.};
+  double const p[4] = {1., 0., 0., 0.};
+  double q2[PW85_SYM], axes[PW85_DIM], dirs[PW85_DIM * PW85_DIM];
+  int ok = pw85_contact_function(r, q, q, out) == PW85_SUCCESS;
+  ok = ok && pw85_ellipsoid_rotation(a, rot, q2) == PW85_SUCCESS;
+  ok = ok && pw85_ellipsoid_quaternion(a, p, q2) == PW85_SUCCESS;
+  ok = ok && pw85_principal_axes(q, axes, dirs) == PW85_SUCCESS;
+  ok = ok && pw85_contact_geometry(r, q, q, g) == PW85_SUCCESS;
+  ok = ok && pw85_contact_derivatives(r, q, q, g, d) == PW85_SUCCESS;
+  int status[1], result[1];
+  ok = ok && pw85_batch_threads(1, 1) == 1;
+  ok = ok && pw85_contact_function_batch(1, r, PW85_DIM, q, 0, q, 0, out,
+                                         status, 1) == PW85_SUCCESS;
+  ok = ok && pw85_overlap_batch(1, r, 0, q, PW85_SYM, q, PW85_SYM, result,
+                                NULL, 0) == PW85_SUCCESS;
+  ok = ok && pw85_contact_geometry_batch(1, r, 0, q, 0, q, 0, g, status,
+                                         2) == PW85_SUCCESS;
+  ok = ok && pw85_contact_derivatives_batch(1, r, 0, q, 0, q, 0, g, d, NULL,
+                                            1) == PW85_SUCCESS;
   pw85_index *index = NULL;
   size_t count = 1;
-  if (pw85_index_create(NULL, &index) != PW85_SUCCESS ||
-      pw85_index_insert(index, 0, r, q) != PW85_SUCCESS ||
-      pw85_index_pairs_within(index, 1., 1, 0, NULL, NULL, NULL, &count) !=
-          PW85_SUCCESS || count != 0)
-    return 1;
+  ok = ok && pw85_index_create(NULL, &index) == PW85_SUCCESS;
+  ok = ok && pw85_index_insert(index, 0, r, q) == PW85_SUCCESS;
+  ok = ok && pw85_index_pairs_within(index, 1., 1, 0, NULL, NULL, NULL,
+                                     &count) == PW85_SUCCESS && count == 0;
   pw85_index_destroy(index);
-  return pw85_contact_function(r, q, q, out) == PW85_SUCCESS ? 0 : 1;
+  return ok ? 0 : 1;
 }

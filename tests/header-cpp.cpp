@@ -15,6 +15,25 @@ static_assert(noexcept(pw85_index_destroy(nullptr)),
 int main() {
   double const r[pw85::dim] = {1., 0., 0.};
   double const q[pw85::sym] = {1., 0., 0., 1., 0., 1.};
-  double out[2];
-  return pw85::contact_function(r, q, q, out) == PW85_SUCCESS ? 0 : 1;
+  double out[2], g[pw85::geom::size], d[pw85::deriv::size];
+  double const a[pw85::dim] = {1., 1., 1.};
+  double const p[4] = {1., 0., 0., 0.};
+  double q2[pw85::sym], axes[pw85::dim], rot[pw85::dim * pw85::dim];
+  bool ok = pw85::contact_function(r, q, q, out) == PW85_SUCCESS;
+  ok = ok && pw85::ellipsoid_quaternion(a, p, q2) == PW85_SUCCESS;
+  ok = ok && pw85::principal_axes(q2, axes, rot) == PW85_SUCCESS;
+  ok = ok && pw85::ellipsoid_rotation(axes, rot, q2) == PW85_SUCCESS;
+  ok = ok && pw85::contact_geometry(r, q, q2, g) == PW85_SUCCESS;
+  ok = ok && pw85::contact_derivatives(r, q, q2, g, d) == PW85_SUCCESS;
+  int status[1], result[1];
+  ok = ok && pw85::batch_threads(1, 1) == 1;
+  ok = ok && pw85::contact_function_batch(1, r, pw85::dim, q, 0, q, 0, out,
+                                          status, 1) == PW85_SUCCESS;
+  ok = ok && pw85::overlap_batch(1, r, 0, q, 0, q, pw85::sym, result,
+                                 nullptr, 0) == PW85_SUCCESS;
+  ok = ok && pw85::contact_geometry_batch(1, r, 0, q, 0, q2, 0, g, status,
+                                          2) == PW85_SUCCESS;
+  ok = ok && pw85::contact_derivatives_batch(1, r, 0, q, 0, q2, 0, g, d,
+                                             nullptr, 1) == PW85_SUCCESS;
+  return ok ? 0 : 1;
 }

@@ -274,3 +274,30 @@ void f_cases_clear(FCases *c) {
   g_strfreev(c->class_names);
   memset(c, 0, sizeof *c);
 }
+
+const char *geometry_pairs_path(void) {
+  return g_getenv("PW85_GEOMETRY_PAIRS");
+}
+
+gboolean ref_read_columns(const char *path, const char *name, size_t cols,
+                          size_t *rows, double **data, GError **error) {
+  *data = NULL;
+  hid_t const file = open_file(path, name, error);
+  if (file < 0) return FALSE;
+  int rank = -1;
+  gboolean ok = H5LTget_dataset_ndims(file, name, &rank) >= 0 &&
+                (rank == 1 || rank == 2);
+  hsize_t dims[2] = {0, 1};
+  ok = ok && H5LTget_dataset_info(file, name, dims, NULL, NULL) >= 0;
+  if (ok && rank == 1) dims[1] = 1;
+  if (!ok || dims[1] != cols) {
+    g_set_error(error, REF_DATA_ERROR, 2, "%s: missing, or not %zu columns",
+                name, cols);
+    H5Fclose(file);
+    return FALSE;
+  }
+  ok = read_dataset(file, name, rank, dims, data, error);
+  H5Fclose(file);
+  *rows = (size_t)dims[0];
+  return ok;
+}

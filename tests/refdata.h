@@ -108,4 +108,14 @@ static inline void ref_data_r12(RefData const *d, size_t k, size_t m,
     r[c] = d->distances[m] * d->directions[3 * k + c];
 }
 
+/* The contact geometry references of data/pw85_geometry_pairs.h5
+ * (data/README.md): the environment variable PW85_GEOMETRY_PAIRS. */
+const char *geometry_pairs_path(void);
+
+/* Reads dataset `name` of the HDF5 file at `path`, of rank 1 (cols = 1) or
+ * rank 2 with `cols` columns, into a new array (g_free it) of *rows × cols
+ * doubles, row by row. */
+gboolean ref_read_columns(const char *path, const char *name, size_t cols,
+                          size_t *rows, double **data, GError **error);
+
 #endif /* PW85_TESTS_REFDATA_H */

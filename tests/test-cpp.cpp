@@ -72,6 +72,63 @@ void test_wrappers() {
   g_assert_cmpint(pw85_overlap(r12, q1, q2, &result_c), ==, PW85_SUCCESS);
   g_assert_cmpint(result, ==, result_c);
   g_assert_cmpint(result, ==, out[0] < 1. ? -1 : 1);
+
+  // Since 2.2.0: the same results as the C functions, same layouts.
+  static_assert(pw85::geom::normal == PW85_GEOM_NORMAL &&
+                    pw85::geom::size == PW85_GEOM_SIZE &&
+                    pw85::deriv::rot2 == PW85_DERIV_ROT2 &&
+                    pw85::deriv::q2 == PW85_DERIV_Q2 &&
+                    pw85::deriv::size == PW85_DERIV_SIZE &&
+                    pw85::unit_tol == PW85_UNIT_TOL,
+                "pw85.hpp mirrors the layouts of pw85.h");
+  double const semi[pw85::dim] = {3., 2., 0.5};
+  double const p[4] = {0.5, 0.5, -0.5, 0.5};
+  double const rot[9] = {0., 0., 1., 1., 0., 0., 0., 1., 0.};
+  double qa[pw85::sym], qa_c[pw85::sym];
+  g_assert_cmpint(pw85::ellipsoid_quaternion(semi, p, qa), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_ellipsoid_quaternion(semi, p, qa_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(qa, sizeof qa, qa_c, sizeof qa_c);
+  g_assert_cmpint(pw85::ellipsoid_rotation(semi, rot, qa), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_ellipsoid_rotation(semi, rot, qa_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(qa, sizeof qa, qa_c, sizeof qa_c);
+  double axes[3], axes_c[3], dirs[9], dirs_c[9];
+  g_assert_cmpint(pw85::principal_axes(q1, axes, dirs), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_principal_axes(q1, axes_c, dirs_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(axes, sizeof axes, axes_c, sizeof axes_c);
+  g_assert_cmpmem(dirs, sizeof dirs, dirs_c, sizeof dirs_c);
+  double g[pw85::geom::size], g_c[pw85::geom::size];
+  double d[pw85::deriv::size], d_c[pw85::deriv::size];
+  g_assert_cmpint(pw85::contact_geometry(r12, q1, q2, g), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_contact_geometry(r12, q1, q2, g_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(g, sizeof g, g_c, sizeof g_c);
+  g_assert_cmpint(pw85::contact_derivatives(r12, q1, q2, g, d), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(pw85_contact_derivatives(r12, q1, q2, g_c, d_c), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpmem(d, sizeof d, d_c, sizeof d_c);
+  g_assert_cmpfloat(g[pw85::geom::mu2], ==, out[0]);
+
+  // The batches: one pair broadcast to two (strides 0), as the C calls.
+  double gb[2 * pw85::geom::size], db[2 * pw85::deriv::size], ob[4];
+  int rb[2], sb[2] = {-1, -1};
+  g_assert_cmpint(pw85::batch_threads(0, 1), ==, pw85_batch_threads(0, 1));
+  g_assert_cmpint(pw85::contact_function_batch(2, r12, 0, q1, 0, q2, 0, ob,
+                                               sb, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(ob + 2, 2 * sizeof(double), out, 2 * sizeof(double));
+  g_assert_cmpint(sb[1], ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85::overlap_batch(2, r12, 0, q1, 0, q2, 0, rb, nullptr,
+                                      1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(rb[1], ==, result_c);
+  g_assert_cmpint(pw85::contact_geometry_batch(2, r12, 0, q1, 0, q2, 0, gb,
+                                               nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(gb + pw85::geom::size, sizeof g_c, g_c, sizeof g_c);
+  g_assert_cmpint(pw85::contact_derivatives_batch(2, r12, 0, q1, 0, q2, 0, gb,
+                                                  db, nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(db + pw85::deriv::size, sizeof d_c, d_c, sizeof d_c);
 }
 
 }  // namespace

@@ -27,6 +27,18 @@ typedef void (*residual_fn)(double, double const *, double const *,
                             double const *, double *);
 typedef int (*contact_fn)(double const *, double const *, double const *,
                           double *);
+typedef int (*overlap_fn)(double const *, double const *, double const *,
+                          int *);
+typedef int (*make_fn)(double const *, double const *, double *);
+typedef int (*axes_fn)(double const *, double *, double *);
+typedef int (*derivatives_fn)(double const *, double const *, double const *,
+                              double *, double *);
+typedef int (*threads_fn)(int, size_t);
+typedef int (*batch_fn)(size_t, double const *, size_t, double const *,
+                        size_t, double const *, size_t, void *, int *, int);
+typedef int (*derivatives_batch_fn)(size_t, double const *, size_t,
+                                    double const *, size_t, double const *,
+                                    size_t, double *, double *, int *, int);
 /* pw85_index.h, with the opaque handle as void * */
 typedef int (*index_create_fn)(double const *, void **);
 typedef void (*index_destroy_fn)(void *);
@@ -73,6 +85,14 @@ int main(int argc, char **argv) {
   f_neg_fn f_neg_p;
   residual_fn residual_p;
   contact_fn contact_p;
+  overlap_fn overlap_p;
+  make_fn rotation_p, quaternion_p;
+  axes_fn axes_p;
+  contact_fn geometry_p;
+  derivatives_fn derivatives_p;
+  threads_fn threads_p;
+  batch_fn cf_batch_p, overlap_batch_p, geometry_batch_p;
+  derivatives_batch_fn derivatives_batch_p;
   index_create_fn index_create_p;
   index_destroy_fn index_destroy_p;
   index_openmp_fn index_openmp_p;
@@ -98,6 +118,17 @@ int main(int argc, char **argv) {
   LOAD(f_neg_p, "pw85_f_neg");
   LOAD(residual_p, "pw85__residual");
   LOAD(contact_p, "pw85_contact_function");
+  LOAD(overlap_p, "pw85_overlap");
+  LOAD(rotation_p, "pw85_ellipsoid_rotation");
+  LOAD(quaternion_p, "pw85_ellipsoid_quaternion");
+  LOAD(axes_p, "pw85_principal_axes");
+  LOAD(geometry_p, "pw85_contact_geometry");
+  LOAD(derivatives_p, "pw85_contact_derivatives");
+  LOAD(threads_p, "pw85_batch_threads");
+  LOAD(cf_batch_p, "pw85_contact_function_batch");
+  LOAD(overlap_batch_p, "pw85_overlap_batch");
+  LOAD(geometry_batch_p, "pw85_contact_geometry_batch");
+  LOAD(derivatives_batch_p, "pw85_contact_derivatives_batch");
   LOAD(index_create_p, "pw85_index_create");
   LOAD(index_destroy_p, "pw85_index_destroy");
   LOAD(index_openmp_p, "pw85_index_openmp");
@@ -146,37 +177,69 @@ int main(int argc, char **argv) {
   CHECK(contact_p(r, q1, q2, out) == 0);
   CHECK(fabs(out[0] - 3.3627060406386292) < 1e-12);
   CHECK(contact_p(r, q1, NULL, out) == 1);
+  int answer = 0;
+  CHECK(overlap_p(r, q1, q2, &answer) == 0 && answer == 1);
 
-  /* The index: two unit sphedecision 1.5 apart in a periodic box of side 10,
-   * the second also through its image at x − 10. */
-  void *index = NULL;
-  double const box[3] = {10., 10., 10.}, unit[6] = {1., 0., 0., 1., 0., 1.};
-  double const centdecision[6] = {0., 0., 0., 1.5, 0., 0.};
-  double units[12];
-  memcpy(units, unit, sizeof unit);
-  memcpy(units + 6, unit, sizeof unit);
-  size_t const ids[2] = {0, 1};
-  size_t n = 0, pair[2], found = 9;
-  int shift[3], decision = 0;
-  double c[3], q[6], ml[2];
-  CHECK(index_openmp_p() == 0 || index_openmp_p() == 1);
-  CHECK(index_create_p(box, &index) == 0);
-  CHECK(index_insert_many_p(index, 2, ids, centdecision, units) == 0);
-  CHECK(index_insert_p(index, 2, centdecision + 3, unit) == 0);
-  CHECK(index_remove_p(index, 2) == 0);
-  CHECK(index_update_p(index, 1, centdecision + 3, unit) == 0);
-  CHECK(index_count_p(index, &n) == 0 && n == 2);
-  CHECK(index_get_p(index, 1, c, q) == 0 && c[0] == 1.5 && q[5] == 1.);
-  CHECK(index_overlapping_p(index, 2, 1, pair, shift, &decision, &n) == 0);
-  CHECK(n == 1 && pair[0] == 0 && pair[1] == 1 && decision == -1);
-  CHECK(index_pairs_within_p(index, 1., 1, 1, pair, shift, ml, &n) == 0);
-  CHECK(n == 1 && ml[0] == 0.5625);
-  CHECK(index_overlap_any_p(index, centdecision, unit, 0, &decision, &found) == 0);
-  CHECK(decision == -1 && found == 1);
-  CHECK(index_within_p(index, centdecision + 3, unit, 1., 1, 1, pair, shift, ml, &n) == 0);
-  CHECK(n == 1 && pair[0] == 0 && ml[0] == 0.5625);
-  CHECK(index_insert_p(index, 0, centdecision, unit) == 7); /* PW85_EINVAL */
-  index_destroy_p(index);
+  /* Semi-axes (3, 2, 1) turned by a quarter turn about z, both ways. */
+  double const semi[3] = {3., 2., 1.}, turn[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+  double const unit[4] = {1., 0., 0., 0.};
+  double q3[6], axes[3], rot[9];
+  CHECK(rotation_p(semi, turn, q3) == 0 && q3[0] == 4. && q3[3] == 9.);
+  CHECK(quaternion_p(semi, unit, q3) == 0 && q3[0] == 9. && q3[3] == 4.);
+  CHECK(axes_p(q3, axes, rot) == 0 && axes[0] == 3. && axes[2] == 1.);
+  double g[8], g2[8], d[21];
+  CHECK(geometry_p(r, q1, q2, g) == 0 && g[0] == out[0]);
+  CHECK(derivatives_p(r, q1, q2, g2, d) == 0 && g2[0] == out[0]);
+
+  /* 600 copies of the pair (q1, q2 broadcast), on 2 threads where
+   * libpw85 has OpenMP: then dlclose() must not unload the code of its
+   * idle threads. */
+  enum { n = 600 };
+  static double rs[3 * n], outs[21 * n], ds[21 * n];
+  static int results[n], statuses[n];
+  for (int i = 0; i < n; i++) memcpy(rs + 3 * i, r, sizeof r);
+  CHECK(threads_p(1, n) == 1 && threads_p(-1, n) == 0);
+  CHECK(cf_batch_p(n, rs, 3, q1, 0, q2, 0, outs, statuses, 2) == 0 &&
+        outs[2 * n - 2] == out[0] && statuses[n - 1] == 0);
+  CHECK(overlap_batch_p(n, rs, 3, q1, 0, q2, 0, results, NULL, 2) == 0 &&
+        results[n - 1] == 1);
+  CHECK(geometry_batch_p(n, rs, 3, q1, 0, q2, 0, outs, NULL, 2) == 0 &&
+        outs[8 * (n - 1)] == g[0]);
+  CHECK(derivatives_batch_p(n, rs, 3, q1, 0, q2, 0, outs, ds, NULL, 2) == 0 &&
+        ds[21 * (n - 1)] == d[0]);
+
+  {
+    /* The index: two unit spheres 1.5 apart in a periodic box of side 10,
+     * the second also through its image at x − 10. */
+    void *index = NULL;
+    double const box[3] = {10., 10., 10.}, unit[6] = {1., 0., 0., 1., 0., 1.};
+    double const centres[6] = {0., 0., 0., 1.5, 0., 0.};
+    double units[12];
+    memcpy(units, unit, sizeof unit);
+    memcpy(units + 6, unit, sizeof unit);
+    size_t const ids[2] = {0, 1};
+    size_t n = 0, pair[2], found = 9;
+    int shift[3], decision = 0;
+    double c[3], q[6], ml[2];
+    CHECK(index_openmp_p() == 0 || index_openmp_p() == 1);
+    CHECK(index_create_p(box, &index) == 0);
+    CHECK(index_insert_many_p(index, 2, ids, centres, units) == 0);
+    CHECK(index_insert_p(index, 2, centres + 3, unit) == 0);
+    CHECK(index_remove_p(index, 2) == 0);
+    CHECK(index_update_p(index, 1, centres + 3, unit) == 0);
+    CHECK(index_count_p(index, &n) == 0 && n == 2);
+    CHECK(index_get_p(index, 1, c, q) == 0 && c[0] == 1.5 && q[5] == 1.);
+    CHECK(index_overlapping_p(index, 2, 1, pair, shift, &decision, &n) == 0);
+    CHECK(n == 1 && pair[0] == 0 && pair[1] == 1 && decision == -1);
+    CHECK(index_pairs_within_p(index, 1., 1, 1, pair, shift, ml, &n) == 0);
+    CHECK(n == 1 && ml[0] == 0.5625);
+    CHECK(index_overlap_any_p(index, centres, unit, 0, &decision, &found) == 0);
+    CHECK(decision == -1 && found == 1);
+    CHECK(index_within_p(index, centres + 3, unit, 1., 1, 1, pair, shift, ml, &n) == 0);
+    CHECK(n == 1 && pair[0] == 0 && ml[0] == 0.5625);
+    CHECK(index_insert_p(index, 0, centres, unit) == 7); /* PW85_EINVAL */
+    index_destroy_p(index);
+  }
 
   CHECK(dlclose(lib) == 0);
   printf("dlopen: every exported function called\n");

@@ -31,10 +31,18 @@
  * installed nor reached).
  *
  * Versions: what carries no `@since` is the C API of pw85 1.0, same names
- * and argument order; `@since` marks what a later release added.
+ * and argument order; `@since` marks what a later release added. The
+ * shared library versions its symbols: a function without `@since` is in
+ * the version node PW85_2.0, one `@since X.Y.Z` in PW85_X.Y; each node
+ * inherits the one before, a released node never changes, and a release
+ * that adds functions adds a node (src/libpw85.map). A program records the
+ * nodes it uses; run against an older libpw85.so.2 that lacks one, it does
+ * not start, and the loader names the missing node.
  */
 #ifndef PW85_H
 #define PW85_H
+
+#include <stddef.h>
 
 #include "pw85_version.h"
 
@@ -385,9 +393,10 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
  * Eigenvectors from GSL's symmetric eigensolver (gsl_eigen_symmv, on Q
  * scaled by a power of two); each aⱼ² is then the Rayleigh quotient of its
  * direction, computed in double-double arithmetic, which keeps the small
- * semi-axes of needles and discs accurate (relative error of aⱼ² of order
- * u + u²·cond(Q)·‖Q‖/gapⱼ, gapⱼ the distance from aⱼ² to the other
- * eigenvalues: a few u up to cond(Q) = 1e16 for distinct semi-axes).
+ * semi-axes of needles and discs accurate: relative error of aⱼ of order
+ * u·(1 + u·(a0/aⱼ)²·‖Q‖/gapⱼ), gapⱼ the distance from aⱼ² to the other
+ * eigenvalues (measured within 1.94 times that on 310 forms with aspect
+ * ratios to 1e8: a few u for distinct semi-axes; test-geometry-refs).
  * Semi-axes sorted in decreasing order, a[0] ≥ a[1] ≥ a[2] > 0; R is a
  * rotation (det R = +1) stored as in pw85_ellipsoid_rotation(), each of its
  * first two columns with its entry of largest magnitude positive.
@@ -400,8 +409,10 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
  *         positive definite by the rule above (or an eigenvalue is not > 0
- *         to double-double precision). a and rot are written on success
- *         only.
+ *         to double-double precision); PW85_ERANGE if cond(Q) exceeds
+ *         about 1e270 (tr(Q)·tr(Q⁻¹) > 2^900: GSL's iterations could meet
+ *         subnormal numbers, where they may not converge). a and rot are
+ *         written on success only.
  * @since 2.2.0
  */
 PW85_API int pw85_principal_axes(double const q[PW85_SYM],
@@ -453,14 +464,17 @@ PW85_API int pw85_principal_axes(double const q[PW85_SYM],
  * n = s/‖s‖, the outward normal of scaled ellipsoid 1 at x (and the inward
  * normal of scaled ellipsoid 2), so that n·r12 > 0.
  *
- * Accuracy, measured on data/pw85_geometry_pairs.h5 (aspect ratios to 1e6,
- * near tangency, λ near 0 and 1): see the docs, "Contact geometry, forces
- * and torques"; of order u·cond(Q(λ)) relative in the norm of each vector.
- * λ is at least as accurate as pw85_contact_function()'s, and may differ
- * from it in the last digits.
+ * Accuracy, measured against references at 100 digits on the 400 pairs of
+ * data/pw85_geometry_pairs.h5 (aspect ratios to 1e6, near tangency, λ
+ * within 1e-8 of 0 and 1): relative to the norm of each vector, x − c1 and
+ * n within 1.5·u·cond(Q(λ)) (u = 2⁻⁵³, cond the 2-norm condition number
+ * of Q(λ) at the maximiser); λ within 1.5·u·cond(Q(λ))·min(λ, 1 − λ), to
+ * the rounding of a double near 1. (tests: test-geometry-refs; the tests
+ * hold them to 8·u·cond.) λ may differ from pw85_contact_function()'s in
+ * the last digits, being more accurate.
  * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
- * μ², λ → 1 − λ, n → −n (bit for bit) and x − c2 = (x − c1) − r12 (to
- * rounding).
+ * μ² (bit for bit), λ → 1 − λ (rounded), n → −n (exactly; a zero may
+ * change sign) and x − c2 = (x − c1) − r12 (to rounding).
  *
  * @param[in] r12 c2 − c1; r12 = 0 gives μ² = 0, λ = ½, x − c1 = 0 and
  *                n = 0 (no direction).
@@ -470,7 +484,11 @@ PW85_API int pw85_principal_axes(double const q[PW85_SYM],
  * @return the statuses of pw85_contact_function(), with the same
  *         meaning; out untouched on error, except PW85_ERANGE when a
  *         result overflows (μ² = +∞, or x − c1 beyond DBL_MAX): every
- *         output is then written, some infinite.
+ *         output is then written, some infinite. Also PW85_ERANGE, out
+ *         untouched, where pw85_contact_function() succeeds but Q(λ)
+ *         cannot be factorised at the maximiser, in double-double nor in
+ *         double: only far beyond the documented domain, for entries
+ *         spanning most of the range of a double.
  * @since 2.2.0
  */
 PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
@@ -496,9 +514,13 @@ PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
  *   g × (x − c1) and (x − c2) × g: the lever arms of the contact point.
  * For a pair energy U(μ²): the force on ellipsoid 2 is −U′·g, that on
  * ellipsoid 1 is +U′·g, the torque on ellipsoid i is −U′·∂μ²/∂ωᵢ.
- * Accuracy: as the contact point (see pw85_contact_geometry()).
+ * Accuracy, measured as for pw85_contact_geometry(): ∂μ²/∂r12 within
+ * 1.2·u·cond(Q(λ)), the derivatives with respect to q1 and q2 within
+ * 3.8·u·cond(Q(λ)), relative in the norm of each block; the torques within
+ * 1.1·u·cond(Q(λ)) of their scale |∂μ²/∂r12|·|x − cᵢ| (a torque may
+ * vanish, its own norm is then no scale).
  * Swapping the ellipsoids exchanges ∂μ²/∂ω1 and ∂μ²/∂ω2, ∂μ²/∂q1 and
- * ∂μ²/∂q2, and negates ∂μ²/∂r12, bit for bit. r12 = 0: μ² is minimal
+ * ∂μ²/∂q2, and negates ∂μ²/∂r12, exactly (a zero may change sign). r12 = 0: μ² is minimal
  * there, every derivative is 0.
  *
  * @param[in] r12 c2 − c1.
@@ -516,6 +538,164 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
                                       double const q2[PW85_SYM],
                                       double geometry[PW85_GEOM_SIZE],
                                       double d[PW85_DERIV_SIZE]) PW85_NOEXCEPT;
+
+/** @name Batches
+ *  One call for n pairs (@since 2.2.0): the one path for callers that pay
+ *  per call (Python, other interpreters), and the way to use threads.
+ *
+ *  Layouts. Pair i reads `r12 + i·r12_stride`, `q1 + i·q1_stride` and
+ *  `q2 + i·q2_stride` (strides counted in doubles): PW85_DIM and PW85_SYM
+ *  for contiguous n×3 and n×6 arrays, larger for records that hold more;
+ *  0 uses the same vector or form for every pair (one ellipsoid against
+ *  many, without copies). A stride from 1 to the record's size − 1 is an
+ *  error (PW85_EINVAL). Outputs are contiguous: pair i writes `out[2·i]`
+ *  and `out[2·i + 1]`, `result[i]`, `out + i·PW85_GEOM_SIZE`,
+ *  `d + i·PW85_DERIV_SIZE`. Outputs overlap neither the inputs nor each
+ *  other.
+ *
+ *  Results. Pair i is computed alone, exactly as the single-pair function
+ *  computes it: the same outputs bit for bit and the same status, and a
+ *  failing pair's outputs are left as that function leaves them
+ *  (untouched, or written for PW85_ERANGE as it documents). Every pair is
+ *  computed, whether others fail or not. `status` is NULL, or n ints:
+ *  `status[i]` receives pair i's status; every entry is written, also
+ *  when the call itself fails (each then holds the call's status).
+ *
+ *  Return value: PW85_SUCCESS when every pair succeeds, else the status
+ *  of the first failing pair (lowest index). Errors of the call itself,
+ *  before any pair is computed (no output written, `status` filled with
+ *  the code): PW85_EFAULT if n > 0 and an input or output pointer is
+ *  NULL; PW85_EINVAL if a stride is between 1 and its record's size − 1,
+ *  or threads < 0. n = 0: PW85_SUCCESS, nothing read nor written (any
+ *  pointer may be NULL).
+ *
+ *  Threads. `threads` = 1: the calling thread only; 0: OpenMP's default
+ *  count (omp_get_max_threads(): OMP_NUM_THREADS if set, else one per
+ *  processor); k > 1: up to k. A batch of n pairs uses at most n/256
+ *  threads (rounded down): no thread is started for n < 512, nor for
+ *  threads = 1. pw85_batch_threads() gives the count a call would use.
+ *  Pairs are handed to threads in chunks of 256 consecutive indices, as
+ *  they become free. The results do not depend on the count, bit for
+ *  bit. Built without OpenMP (meson option `openmp`), every call runs in
+ *  the calling thread, whatever the count. pw85 allocates nothing; the
+ *  OpenMP runtime keeps its pool of threads from the first threaded call
+ *  on. Reentrant: concurrent calls from several threads each use their
+ *  own threads.
+ *  @{ */
+
+/**
+ * @brief The number of threads a batch of n pairs runs on (see Batches).
+ *
+ * @param[in] threads the count requested: 0 for OpenMP's default, k ≥ 1.
+ * @param[in] n the number of pairs.
+ * @return the count, ≥ 1: min(k, n/256) and at least 1 (k = OpenMP's
+ *         default for threads = 0); 1 when libpw85 was built without
+ *         OpenMP; 0 if threads < 0 (the batch calls reject it).
+ * @since 2.2.0
+ */
+PW85_API int pw85_batch_threads(int threads, size_t n) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_function() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the centre-to-centre vectors c2 − c1.
+ * @param[in] r12_stride doubles from one vector to the next: PW85_DIM
+ *            when contiguous, 0 for the same vector for every pair.
+ * @param[in] q1 the quadratic forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the quadratic forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] out 2·n doubles: `out[2·i]` = μ², `out[2·i + 1]` = λ of
+ *             pair i.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_contact_function()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself (see Batches).
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_function_batch(size_t n, double const *r12,
+                                         size_t r12_stride, double const *q1,
+                                         size_t q1_stride, double const *q2,
+                                         size_t q2_stride, double *out,
+                                         int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_overlap() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] result n ints: −1 (overlap), +1 (disjoint) or 0 (tangent)
+ *             for each pair, as pw85_overlap().
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_overlap()); PW85_EFAULT or PW85_EINVAL for the call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_overlap_batch(size_t n, double const *r12,
+                                size_t r12_stride, double const *q1,
+                                size_t q1_stride, double const *q2,
+                                size_t q2_stride, int *result, int *status,
+                                int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_geometry() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] out n·PW85_GEOM_SIZE doubles: pair i at
+ *             `out + i·PW85_GEOM_SIZE`, laid out as PW85_GEOM_*.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_contact_geometry()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_geometry_batch(size_t n, double const *r12,
+                                         size_t r12_stride, double const *q1,
+                                         size_t q1_stride, double const *q2,
+                                         size_t q2_stride, double *out,
+                                         int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_contact_derivatives() for n pairs.
+ *
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipsoids.
+ * @param[in] q1_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipsoids.
+ * @param[in] q2_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] geometry n·PW85_GEOM_SIZE doubles, as
+ *             pw85_contact_geometry_batch().
+ * @param[out] d n·PW85_DERIV_SIZE doubles: pair i at
+ *             `d + i·PW85_DERIV_SIZE`, laid out as PW85_DERIV_*.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing pair (those of
+ *         pw85_contact_derivatives()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_contact_derivatives_batch(
+    size_t n, double const *r12, size_t r12_stride, double const *q1,
+    size_t q1_stride, double const *q2, size_t q2_stride, double *geometry,
+    double *d, int *status, int threads) PW85_NOEXCEPT;
+/** @} */
 
 #ifdef __cplusplus
 } /* extern "C" */

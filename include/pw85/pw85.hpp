@@ -100,6 +100,132 @@ inline int overlap(double const r12[dim], double const q1[sym],
   return pw85_overlap(r12, q1, q2, result);
 }
 
+/** Tolerance of the constructors on rotations and quaternions
+ *  (PW85_UNIT_TOL).
+ *  @since 2.2.0 */
+constexpr double unit_tol = PW85_UNIT_TOL;
+
+/** Offsets into the output of contact_geometry() (PW85_GEOM_*).
+ *  @since 2.2.0 */
+namespace geom {
+constexpr std::size_t mu2 = PW85_GEOM_MU2;
+constexpr std::size_t lambda = PW85_GEOM_LAMBDA;
+constexpr std::size_t point = PW85_GEOM_POINT;
+constexpr std::size_t normal = PW85_GEOM_NORMAL;
+constexpr std::size_t size = PW85_GEOM_SIZE;
+}  // namespace geom
+
+/** Offsets into the derivatives of contact_derivatives() (PW85_DERIV_*).
+ *  @since 2.2.0 */
+namespace deriv {
+constexpr std::size_t r12 = PW85_DERIV_R12;
+constexpr std::size_t rot1 = PW85_DERIV_ROT1;
+constexpr std::size_t rot2 = PW85_DERIV_ROT2;
+constexpr std::size_t q1 = PW85_DERIV_Q1;
+constexpr std::size_t q2 = PW85_DERIV_Q2;
+constexpr std::size_t size = PW85_DERIV_SIZE;
+}  // namespace deriv
+
+/** Q = R·diag(a²)·Rᵀ, rot[3i + j] = R_ij (pw85_ellipsoid_rotation());
+ *  returns a PW85_* status.
+ *  @since 2.2.0 */
+inline int ellipsoid_rotation(double const a[dim], double const rot[dim * dim],
+                              double q[sym]) noexcept {
+  return pw85_ellipsoid_rotation(a, rot, q);
+}
+
+/** Q from semi-axes and a unit quaternion (w, x, y, z)
+ *  (pw85_ellipsoid_quaternion()); returns a PW85_* status.
+ *  @since 2.2.0 */
+inline int ellipsoid_quaternion(double const a[dim], double const p[4],
+                                double q[sym]) noexcept {
+  return pw85_ellipsoid_quaternion(a, p, q);
+}
+
+/** Semi-axes (decreasing) and principal directions of Q
+ *  (pw85_principal_axes()); returns a PW85_* status.
+ *  @since 2.2.0 */
+inline int principal_axes(double const q[sym], double a[dim],
+                          double rot[dim * dim]) noexcept {
+  return pw85_principal_axes(q, a, rot);
+}
+
+/** μ², λ, the contact point and the normal, laid out as geom::*
+ *  (pw85_contact_geometry()); returns a PW85_* status.
+ *  @since 2.2.0 */
+inline int contact_geometry(double const r12[dim], double const q1[sym],
+                            double const q2[sym],
+                            double out[geom::size]) noexcept {
+  return pw85_contact_geometry(r12, q1, q2, out);
+}
+
+/** contact_geometry() and the derivatives of μ², laid out as deriv::*
+ *  (pw85_contact_derivatives()); returns a PW85_* status.
+ *  @since 2.2.0 */
+inline int contact_derivatives(double const r12[dim], double const q1[sym],
+                               double const q2[sym],
+                               double geometry[geom::size],
+                               double d[deriv::size]) noexcept {
+  return pw85_contact_derivatives(r12, q1, q2, geometry, d);
+}
+
+/** The number of threads a batch of n pairs runs on
+ *  (pw85_batch_threads()).
+ *  @since 2.2.0 */
+inline int batch_threads(int threads, std::size_t n) noexcept {
+  return pw85_batch_threads(threads, n);
+}
+
+/** contact_function() for n pairs, strides in doubles (0: one record for
+ *  every pair), out = n×{μ², λ} (pw85_contact_function_batch()); returns
+ *  PW85_SUCCESS or the first failing pair's status.
+ *  @since 2.2.0 */
+inline int contact_function_batch(std::size_t n, double const *r12,
+                                  std::size_t r12_stride, double const *q1,
+                                  std::size_t q1_stride, double const *q2,
+                                  std::size_t q2_stride, double *out,
+                                  int *status, int threads) noexcept {
+  return pw85_contact_function_batch(n, r12, r12_stride, q1, q1_stride, q2,
+                                     q2_stride, out, status, threads);
+}
+
+/** overlap() for n pairs (pw85_overlap_batch()).
+ *  @since 2.2.0 */
+inline int overlap_batch(std::size_t n, double const *r12,
+                         std::size_t r12_stride, double const *q1,
+                         std::size_t q1_stride, double const *q2,
+                         std::size_t q2_stride, int *result, int *status,
+                         int threads) noexcept {
+  return pw85_overlap_batch(n, r12, r12_stride, q1, q1_stride, q2, q2_stride,
+                            result, status, threads);
+}
+
+/** contact_geometry() for n pairs, out = n×geom::size
+ *  (pw85_contact_geometry_batch()).
+ *  @since 2.2.0 */
+inline int contact_geometry_batch(std::size_t n, double const *r12,
+                                  std::size_t r12_stride, double const *q1,
+                                  std::size_t q1_stride, double const *q2,
+                                  std::size_t q2_stride, double *out,
+                                  int *status, int threads) noexcept {
+  return pw85_contact_geometry_batch(n, r12, r12_stride, q1, q1_stride, q2,
+                                     q2_stride, out, status, threads);
+}
+
+/** contact_derivatives() for n pairs, geometry = n×geom::size, d =
+ *  n×deriv::size (pw85_contact_derivatives_batch()).
+ *  @since 2.2.0 */
+inline int contact_derivatives_batch(std::size_t n, double const *r12,
+                                     std::size_t r12_stride,
+                                     double const *q1, std::size_t q1_stride,
+                                     double const *q2, std::size_t q2_stride,
+                                     double *geometry, double *d, int *status,
+                                     int threads) noexcept {
+  return pw85_contact_derivatives_batch(n, r12, r12_stride, q1, q1_stride,
+                                        q2, q2_stride, geometry, d, status,
+                                        threads);
+}
+
 }  // namespace pw85
 
 // C++17 or later (MSVC reports its standard in _MSVC_LANG). Doxygen, which

@@ -16,7 +16,8 @@
  * or changes process-wide state.
  *
  * Versions: what carries no `@since` is the legacy C API of pw85 1.0;
- * `@since` marks what a later release added.
+ * `@since` marks what a later release added. Symbol versions as in pw85.h,
+ * with nodes of their own: PW85_LEGACY_2.0, PW85_LEGACY_X.Y.
  */
 #ifndef PW85_LEGACY_H
 #define PW85_LEGACY_H

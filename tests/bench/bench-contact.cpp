@@ -251,6 +251,16 @@ void run(char const *title, std::vector<Case> const &cases, int passes,
     pw85_overlap(c.r, c.q1, c.q2, &result);
     return double(result);
   });
+  double const t_geom = time_ns(cases, passes, reps, [](Case const &c) {
+    double g[PW85_GEOM_SIZE];
+    pw85_contact_geometry(c.r, c.q1, c.q2, g);
+    return g[PW85_GEOM_NORMAL];
+  });
+  double const t_deriv = time_ns(cases, passes, reps, [](Case const &c) {
+    double g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
+    pw85_contact_derivatives(c.r, c.q1, c.q2, g, d);
+    return d[PW85_DERIV_Q2];
+  });
 
   // Accuracy and evaluation counts (untimed).
   double err_seed = 0., err_cf = 0.;
@@ -279,6 +289,11 @@ void run(char const *title, std::vector<Case> const &cases, int passes,
   std::printf("  %-28s %9.1f %9.2f\n", "pw85_overlap", t_ov, t_seed / t_ov);
   std::printf("  %-28s %9.1f %9.2f\n", "pw85_f_neg (one f)", t_f,
               t_seed / t_f);
+  // The full output against the contact function alone (issue 15).
+  std::printf("  %-28s %9.1f %9.2f %12s %14.2f\n", "pw85_contact_geometry",
+              t_geom, t_seed / t_geom, "cost vs cf:", t_geom / t_cf);
+  std::printf("  %-28s %9.1f %9.2f %12s %14.2f\n", "pw85_contact_derivatives",
+              t_deriv, t_seed / t_deriv, "cost vs cf:", t_deriv / t_cf);
 }
 
 }  // namespace

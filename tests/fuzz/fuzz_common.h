@@ -104,6 +104,24 @@ inline long double mu2_floor(const double r[3], const double q1[6],
   return rr / (s * s);
 }
 
+/* Inside the domain where the swapping symmetry is exact (pw85.h):
+ * cond(Qᵢ) < 1e16, every non-zero entry between 2^-500 and 2^500 (the
+ * internal rescaling by powers of two cannot push one out of the normal
+ * range) and μ² normal. Beyond, μ² "may round to a subnormal" and the
+ * orientations' roundings may differ. */
+inline bool exact_swap_domain(const double r12[3], const double q1[6],
+                              const double q2[6], double mu2) {
+  if (!(cond_bound(q1) < 1e16L && cond_bound(q2) < 1e16L && mu2 >= DBL_MIN))
+    return false;
+  for (int i = 0; i < 15; ++i) {
+    double const x = i < 3 ? r12[i] : i < 9 ? q1[i - 3] : q2[i - 9];
+    if (!(x == 0 ||
+          (std::fabs(x) >= 0x1p-500 && std::fabs(x) <= 0x1p500)))
+      return false;
+  }
+  return true;
+}
+
 /* Contract and metamorphic oracles of pw85_contact_function and
  * pw85_overlap, shared by fuzz-contact-raw and fuzz-contact-structured.
  * k: the exponent of the joint scaling 2^k (lengths), from the input. */

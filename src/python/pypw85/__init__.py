@@ -29,6 +29,23 @@ preallocated array passed by the caller, which must then be a C-contiguous,
 writeable ``numpy.ndarray`` of dtype ``float64`` and of the exact shape
 (anything else raises, nothing is converted silently).
 
+Arrays of pairs
+---------------
+`contact_function`, `overlap`, `contact_geometry` and
+`contact_derivatives` also take arrays of pairs: r12 of shape (..., 3),
+q1 and q2 of shape (..., 6), whose leading axes broadcast as NumPy's do
+(one ellipsoid against many: ``q1`` of shape (6,) with ``q2`` of shape
+(N, 6)). The results have the broadcast shape followed by the shape of
+one result: ``contact_function(r12, q1, q2)`` with r12 of shape (N, 3)
+returns an array of shape (N, 2). One call of the library's batch
+function computes every pair, each exactly as alone (bit for bit), with
+the GIL released; ``threads=k`` spreads the pairs over k OpenMP threads
+(0: OpenMP's default, ``OMP_NUM_THREADS`` if set), with the same results
+for any count. If a pair fails, `Error` names the first one (its index in
+the broadcast shape, its inputs); its ``index`` and ``statuses``
+attributes give that index and every pair's status, and a preallocated
+``out`` holds the results of the pairs that succeeded.
+
 Errors
 ------
 Bad input never crashes: a wrong shape raises `ValueError`, a wrong dtype
@@ -59,8 +76,11 @@ each failed. `pypw85.legacy` finds libpw85_legacy the same way
 Thread safety
 -------------
 ctypes releases the GIL around every call into the library, and every pw85
-function is reentrant, so threads calling pypw85 run in parallel. Do not
-share a preallocated output array between threads.
+function is reentrant, so threads calling pypw85 run in parallel while they
+are in the library. For a single pair, converting and checking the
+arguments costs more than the computation, and runs under the GIL: pass
+arrays of pairs instead (one conversion, one call, `threads` for
+parallelism). Do not share a preallocated output array between threads.
 
 The only run-time dependency is NumPy. Released under the BSD 3-Clause
 licence.
@@ -71,11 +91,12 @@ import math
 
 import numpy as np
 
-from . import _constants
+from . import _batch, _constants
 from ._convert import (
     check_finite as _check_finite, output as _output, real as _real,
     unaliased as _unaliased, vector as _vector,
 )
+from ._batch import batch_threads
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 # Not used here: kept where the tests look for them (the path libpw85 was
@@ -92,6 +113,9 @@ __all__ = [
     "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM", "ENOCONV",
     "EINVAL",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
+    "contact_geometry", "contact_derivatives", "ellipsoid_rotation",
+    "ellipsoid_quaternion", "principal_axes", "pack_sym", "unpack_sym",
+    "batch_threads",
 ]
 
 # The constants of pw85.h: the values are those of _constants (checked
@@ -172,6 +196,11 @@ _c_f_neg = _lib.pw85_f_neg
 _c_residual = _lib.pw85__residual
 _c_contact_function = _lib.pw85_contact_function
 _c_overlap = _lib.pw85_overlap
+_c_ellipsoid_rotation = _lib.pw85_ellipsoid_rotation
+_c_ellipsoid_quaternion = _lib.pw85_ellipsoid_quaternion
+_c_principal_axes = _lib.pw85_principal_axes
+_c_contact_geometry = _lib.pw85_contact_geometry
+_c_contact_derivatives = _lib.pw85_contact_derivatives
 
 
 # ---------------------------------------------------------------------------
@@ -427,7 +456,7 @@ def _residual(lambda_, r12, q1, q2, out=None):
     return out
 
 
-def contact_function(r12, q1, q2, out=None):
+def contact_function(r12, q1, q2, out=None, *, threads=1):
     """Return the contact function μ² of two ellipsoids and its maximiser λ.
 
     μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
@@ -450,22 +479,28 @@ def contact_function(r12, q1, q2, out=None):
 
     Parameters
     ----------
-    r12 : array_like, shape (3,)
+    r12 : array_like, shape (3,) or (..., 3)
         The centre-to-centre vector c2 − c1 (any finite vector; r12 = 0
         gives μ² = 0, λ = ½).
-    q1, q2 : array_like, shape (6,)
+    q1, q2 : array_like, shape (6,) or (..., 6)
         The quadratic forms of the two ellipsoids, symmetric positive
         definite (upper triangle, row by row), in the square of r12's unit.
         μ² is invariant under r12 → t·r12, Q → t²·Q; any finite scale is
-        accepted.
-    out : numpy.ndarray, shape (2,), float64, optional
-        Preallocated output, modified in place. A new array if None.
+        accepted. Arrays of pairs broadcast (see "Arrays of pairs").
+    out : numpy.ndarray, shape (2,) or S + (2,), float64, optional
+        Preallocated output, modified in place (S: the broadcast shape of
+        the pairs). A new array if None.
+    threads : int, optional, keyword only
+        For arrays of pairs: 1 (the default) computes them in the calling
+        thread, k > 1 on up to k OpenMP threads, 0 on OpenMP's default
+        count. The results are the same for any count.
 
     Returns
     -------
-    out : numpy.ndarray, shape (2,)
-        ``out[0] = μ²`` (dimensionless, ≥ 0) and ``out[1] = λ`` in [0, 1];
-        ``mu2, lambda_ = contact_function(r12, q1, q2)`` unpacks it.
+    out : numpy.ndarray, shape (2,) or S + (2,)
+        ``out[..., 0] = μ²`` (dimensionless, ≥ 0) and ``out[..., 1] = λ``
+        in [0, 1]; ``mu2, lambda_ = contact_function(r12, q1, q2)`` unpacks
+        a single pair.
 
     Raises
     ------
@@ -476,8 +511,11 @@ def contact_function(r12, q1, q2, out=None):
         not positive definite; `ERANGE` if μ² exceeds the largest double
         (out then holds +inf and λ) or the entries of q1 and q2 span more
         than the range of a double; `ENOMEM` (not expected). Except for the
-        first `ERANGE` case, out is untouched.
+        first `ERANGE` case, out is untouched. For arrays of pairs, the
+        first failing pair's status; the other pairs are computed.
     """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.contact_function(r12, q1, q2, out, threads)
     r12 = _vector("r12", r12, DIM)
     q1 = _vector("q1", q1, SYM)
     q2 = _vector("q2", q2, SYM)
@@ -491,7 +529,7 @@ def contact_function(r12, q1, q2, out=None):
     return out
 
 
-def overlap(r12, q1, q2):
+def overlap(r12, q1, q2, *, threads=1):
     """Do two ellipsoids overlap? A certified answer, faster than μ².
 
     Decides the sign of μ² − 1 (see `contact_function`) from bounds of μ²
@@ -500,15 +538,18 @@ def overlap(r12, q1, q2):
 
     Parameters
     ----------
-    r12 : array_like, shape (3,)
+    r12 : array_like, shape (3,) or (..., 3)
         The centre-to-centre vector c2 − c1.
-    q1, q2 : array_like, shape (6,)
+    q1, q2 : array_like, shape (6,) or (..., 6)
         The quadratic forms of the two ellipsoids, symmetric positive
         definite (upper triangle, row by row), in the square of r12's unit.
+        Arrays of pairs broadcast (see "Arrays of pairs").
+    threads : int, optional, keyword only
+        As for `contact_function`.
 
     Returns
     -------
-    int
+    int, or numpy.ndarray of dtype numpy.intc and shape S
         −1 if they overlap (μ² < 1; also for coincident centres), +1 if
         they are disjoint (μ² > 1, including μ² beyond the range of a
         double), 0 if they are tangent to the resolution of double
@@ -522,6 +563,8 @@ def overlap(r12, q1, q2):
         As `contact_function`: `EDOM`, `ENOTPOSDEF`, `ERANGE` (entries of
         q1 and q2 spanning more than the range of a double), `ENOMEM`.
     """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.overlap(r12, q1, q2, threads)
     r12 = _vector("r12", r12, DIM)
     q1 = _vector("q1", q1, SYM)
     q2 = _vector("q2", q2, SYM)
@@ -532,3 +575,298 @@ def overlap(r12, q1, q2):
         raise Error(status, "overlap",
                     "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
     return result.value
+
+
+# ---------------------------------------------------------------------------
+# Ellipsoids in full (since 2.2.0): constructors, principal axes, contact
+# geometry and derivatives. Layouts as in pw85.h.
+
+def pack_sym(a, rtol=1e-12):
+    """Return the 6-entry storage of a symmetric 3×3 matrix.
+
+    Parameters
+    ----------
+    a : array_like, shape (3, 3)
+        A symmetric matrix.
+    rtol : float, optional
+        The largest accepted asymmetry, max abs(a − aᵀ), relative to
+        max abs(a).
+
+    Returns
+    -------
+    numpy.ndarray, shape (6,)
+        ``[a00, a01, a02, a11, a12, a22]``: the upper triangle, row by row.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If a has the wrong shape or type, or is not symmetric to rtol.
+    """
+    m = np.asarray(a)
+    if m.dtype.kind not in "iuf":
+        raise TypeError("a: expected real numbers, got an array of dtype %s"
+                        % m.dtype)
+    if m.shape != (DIM, DIM):
+        raise ValueError("a: expected shape (3, 3), got %s" % (m.shape,))
+    m = m.astype(np.float64)
+    if np.abs(m - m.T).max() > rtol * np.abs(m).max():
+        raise ValueError("a: not symmetric (max abs(a - a.T) = %g)"
+                         % np.abs(m - m.T).max())
+    return m[np.triu_indices(DIM)].copy()
+
+
+def unpack_sym(q):
+    """Return the symmetric 3×3 matrix of a 6-entry storage (`pack_sym`).
+
+    Parameters
+    ----------
+    q : array_like, shape (6,)
+        ``[q00, q01, q02, q11, q12, q22]``.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3, 3)
+
+    Raises
+    ------
+    ValueError, TypeError
+        If q has the wrong shape or type.
+    """
+    q = _vector("q", q, SYM)
+    return np.array([[q[0], q[1], q[2]], [q[1], q[3], q[4]],
+                     [q[2], q[4], q[5]]])
+
+
+def _rotation(name, rot):
+    """rot as a C-contiguous float64 array of 9 entries, from (3, 3) or
+    (9,)."""
+    m = np.asarray(rot)
+    if m.shape == (DIM, DIM):
+        m = m.reshape(DIM * DIM)
+    return _vector(name, m, DIM * DIM)
+
+
+def ellipsoid_rotation(a, rot, q=None):
+    """Return Q = R·diag(a²)·Rᵀ, the ellipsoid of semi-axes a along the
+    columns of R.
+
+    Each entry is computed in double-double arithmetic and rounded once
+    (see pw85.h for the error bound); R is used as given.
+
+    Parameters
+    ----------
+    a : array_like, shape (3,)
+        The semi-axes (lengths, each > 0).
+    rot : array_like, shape (3, 3) or (9,)
+        The rotation R, column j the direction of a[j] (row by row when
+        flat: ``rot[3*i + j] = R[i, j]``), orthonormal to `UNIT_TOL`; a
+        reflection is accepted.
+    q : numpy.ndarray, shape (6,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    q : numpy.ndarray, shape (6,)
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `EDOM` (NaN or infinite input), `EINVAL` (a semi-axis not > 0, R
+        not orthonormal), `ERANGE` (a² out of the normal range). q is
+        untouched.
+    """
+    a = _vector("a", a, DIM)
+    rot = _rotation("rot", rot)
+    q = _output("q", q, SYM)
+    a, rot = _unaliased(q, a, rot)
+    status = _c_ellipsoid_rotation(a.ctypes.data, rot.ctypes.data,
+                                   q.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "ellipsoid_rotation", "a = %r, rot = %r"
+                    % (a, rot.reshape(DIM, DIM)))
+    return q
+
+
+def ellipsoid_quaternion(a, p, q=None):
+    """Return the ellipsoid of semi-axes a turned by the unit quaternion p.
+
+    Q = R(p)·diag(a²)·R(p)ᵀ, where R(p) maps the coordinate axes onto the
+    principal directions (v ↦ p·v·p*, the convention of HOOMD-blue and
+    LAMMPS); p is normalised, and computed with, in double-double.
+
+    Parameters
+    ----------
+    a : array_like, shape (3,)
+        The semi-axes (lengths, each > 0).
+    p : array_like, shape (4,)
+        The quaternion (w, x, y, z), of norm 1 to `UNIT_TOL` (on its
+        square).
+    q : numpy.ndarray, shape (6,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+
+    Returns
+    -------
+    q : numpy.ndarray, shape (6,)
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        `EDOM`, `EINVAL` (a semi-axis not > 0, p not of unit norm),
+        `ERANGE`. q is untouched.
+    """
+    a = _vector("a", a, DIM)
+    p = _vector("p", p, 4)
+    q = _output("q", q, SYM)
+    a, p = _unaliased(q, a, p)
+    status = _c_ellipsoid_quaternion(a.ctypes.data, p.ctypes.data,
+                                     q.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "ellipsoid_quaternion", "a = %r, p = %r" % (a, p))
+    return q
+
+
+def principal_axes(q):
+    """Return the semi-axes and principal directions of an ellipsoid.
+
+    The inverse of `ellipsoid_rotation`: eigenvectors from GSL's symmetric
+    eigensolver, semi-axes from their Rayleigh quotients in double-double
+    (accurate to a few ulps even for the small axes of needles and discs
+    with distinct semi-axes; see pw85.h).
+
+    Parameters
+    ----------
+    q : array_like, shape (6,)
+        The quadratic form Q.
+
+    Returns
+    -------
+    a : numpy.ndarray, shape (3,)
+        The semi-axes, in decreasing order.
+    rot : numpy.ndarray, shape (3, 3)
+        The rotation R (det +1): ``rot[:, j]`` is the direction of
+        ``a[j]``; in columns 0 and 1, the entry of largest magnitude is
+        positive.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If q has the wrong shape or type.
+    Error
+        `EDOM`, `ENOTPOSDEF`.
+    """
+    q = _vector("q", q, SYM)
+    a = np.empty(DIM)
+    rot = np.empty((DIM, DIM))
+    status = _c_principal_axes(q.ctypes.data, a.ctypes.data, rot.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "principal_axes", "q = %r" % q)
+    return a, rot
+
+
+def contact_geometry(r12, q1, q2, out=None, *, threads=1):
+    """Return μ², λ, the contact point and the common normal.
+
+    One search (that of `contact_function`: the same μ², bit for bit), λ
+    polished, then ``x − c1 = (1 − λ)·Q1·s`` and ``n = s/‖s‖`` with
+    s = Q(λ)⁻¹·r12 (seed, chapter 3, eqs. (8), (9a)). See the docs page
+    "Contact geometry, forces and torques".
+
+    Parameters
+    ----------
+    r12, q1, q2
+        As for `contact_function` (arrays of pairs included).
+    out : numpy.ndarray, shape (8,) or S + (8,), float64, optional
+        Preallocated output, modified in place. A new array if None.
+    threads : int, optional, keyword only
+        As for `contact_function`.
+
+    Returns
+    -------
+    out : numpy.ndarray, shape (8,) or S + (8,)
+        ``out[GEOM_MU2]`` = μ², ``out[GEOM_LAMBDA]`` = λ,
+        ``out[GEOM_POINT:GEOM_POINT + 3]`` = x − c1 (the point where the
+        ellipsoids scaled by μ touch), ``out[GEOM_NORMAL:GEOM_NORMAL + 3]``
+        = the unit normal there, from ellipsoid 1 towards ellipsoid 2.
+        r12 = 0 gives μ² = 0, λ = ½, zero point and normal.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If an argument has the wrong shape or type.
+    Error
+        As `contact_function`; with `ERANGE` for an overflow, out holds
+        every output (some infinite).
+    """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.contact_geometry(r12, q1, q2, out, threads)
+    r12 = _vector("r12", r12, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    out = _output("out", out, GEOM_SIZE)
+    r12, q1, q2 = _unaliased(out, r12, q1, q2)
+    status = _c_contact_geometry(r12.ctypes.data, q1.ctypes.data,
+                                 q2.ctypes.data, out.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "contact_geometry",
+                    "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
+    return out
+
+
+def contact_derivatives(r12, q1, q2, geometry=None, d=None, *, threads=1):
+    """Return the contact geometry and the first derivatives of μ².
+
+    By the envelope theorem, with s = Q(λ)⁻¹·r12: ∂μ²/∂r12 = 2λ(1−λ)·s;
+    ∂μ²/∂ω1 = 2λ(1−λ)²·s × (Q1·s) and ∂μ²/∂ω2 = 2λ²(1−λ)·s × (Q2·s) for
+    a rotation ωᵢ (radians) of ellipsoid i about its centre; and the
+    derivatives with respect to the six stored entries of q1 and q2,
+    −λ(1−λ)²·(s0², 2s0s1, 2s0s2, s1², 2s1s2, s2²) and
+    −λ²(1−λ)·(the same). For a pair energy U(μ²), the force on ellipsoid 2
+    is −U′·∂μ²/∂r12 and the torque on ellipsoid i is −U′·∂μ²/∂ωᵢ.
+
+    Parameters
+    ----------
+    r12, q1, q2
+        As for `contact_function` (arrays of pairs included).
+    geometry : numpy.ndarray, shape (8,) or S + (8,), float64, optional
+        Preallocated output for the geometry (as `contact_geometry`).
+    d : numpy.ndarray, shape (21,) or S + (21,), float64, optional
+        Preallocated output for the derivatives.
+    threads : int, optional, keyword only
+        As for `contact_function`.
+
+    Returns
+    -------
+    geometry : numpy.ndarray, shape (8,) or S + (8,)
+        As `contact_geometry`.
+    d : numpy.ndarray, shape (21,) or S + (21,)
+        ``d[DERIV_R12:DERIV_R12 + 3]``, ``d[DERIV_ROT1:DERIV_ROT1 + 3]``,
+        ``d[DERIV_ROT2:DERIV_ROT2 + 3]``, ``d[DERIV_Q1:DERIV_Q1 + 6]``,
+        ``d[DERIV_Q2:DERIV_Q2 + 6]``.
+
+    Raises
+    ------
+    ValueError, TypeError, Error
+        As `contact_geometry`.
+    """
+    if _batch.is_batch(r12, q1, q2):
+        return _batch.contact_derivatives(r12, q1, q2, geometry, d, threads)
+    r12 = _vector("r12", r12, DIM)
+    q1 = _vector("q1", q1, SYM)
+    q2 = _vector("q2", q2, SYM)
+    geometry = _output("geometry", geometry, GEOM_SIZE)
+    d = _output("d", d, DERIV_SIZE)
+    if np.may_share_memory(geometry, d):
+        raise ValueError("geometry and d: expected separate arrays")
+    r12, q1, q2 = _unaliased(geometry, r12, q1, q2)
+    r12, q1, q2 = _unaliased(d, r12, q1, q2)
+    status = _c_contact_derivatives(r12.ctypes.data, q1.ctypes.data,
+                                    q2.ctypes.data, geometry.ctypes.data,
+                                    d.ctypes.data)
+    if status != SUCCESS:
+        raise Error(status, "contact_derivatives",
+                    "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
+    return geometry, d

@@ -6,8 +6,10 @@ documentation says the same to users):
 
 1. the environment variable named by the caller (``PW85_LIBRARY`` or
    ``PW85_LEGACY_LIBRARY``), a full path, if set and not empty;
-2. the absolute path where ``meson install`` put the library, recorded in
-   ``pypw85/_paths.py`` at configure time;
+2. the path where ``meson install`` put the library, recorded in
+   ``pypw85/_paths.py`` at configure time: absolute, or relative to the
+   package's directory (a wheel, installed by pip, holds the library
+   beside this file);
 3. the dynamic loader's usual search for the soname (``libpw85.so.2``);
 4. ``ctypes.util.find_library``.
 
@@ -101,6 +103,8 @@ def load_library(name, env_var, paths_key, symbols, check=None):
     """
     so = soname(name)
     installed = getattr(_paths, paths_key, None)
+    if installed is not None:  # relative: in the package (a wheel)
+        installed = os.path.join(_PACKAGE_DIR, installed)
     candidates = []  # (where, path or None, reason if None)
     env_path = os.environ.get(env_var)
     if env_path:

@@ -13,6 +13,8 @@ import ctypes
 _DOUBLE_P = ctypes.c_void_p  # double * (or double const *)
 _DOUBLE = ctypes.c_double
 _INT = ctypes.c_int
+_SIZE = ctypes.c_size_t
+_BATCH_INPUTS = [_SIZE] + [_DOUBLE_P, _SIZE] * 3
 
 #: libpw85 (include/pw85/pw85.h).
 LIBPW85 = {
@@ -28,6 +30,21 @@ LIBPW85 = {
                                      _DOUBLE_P]),
     "pw85_overlap": (_INT, [_DOUBLE_P, _DOUBLE_P, _DOUBLE_P,
                             ctypes.POINTER(_INT)]),
+    "pw85_ellipsoid_rotation": (_INT, [_DOUBLE_P] * 3),
+    "pw85_ellipsoid_quaternion": (_INT, [_DOUBLE_P] * 3),
+    "pw85_principal_axes": (_INT, [_DOUBLE_P] * 3),
+    "pw85_contact_geometry": (_INT, [_DOUBLE_P] * 4),
+    "pw85_contact_derivatives": (_INT, [_DOUBLE_P] * 5),
+    # The batches: n, then (address, stride) of r12, q1 and q2, then the
+    # outputs, the statuses and the thread count.
+    "pw85_batch_threads": (_INT, [_INT, _SIZE]),
+    "pw85_contact_function_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2
+                                    + [_INT]),
+    "pw85_overlap_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2 + [_INT]),
+    "pw85_contact_geometry_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2
+                                    + [_INT]),
+    "pw85_contact_derivatives_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 3
+                                       + [_INT]),
 }
 
 #: libpw85_legacy (include/pw85/pw85_legacy.h).

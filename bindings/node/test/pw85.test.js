@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+'use strict';
+// node --test: the package against the library of PW85_LIBRARY, whose
+// version is PW85_EXPECTED_VERSION (both set by meson).
+const test = require('node:test');
+const assert = require('node:assert/strict');
+const pw85 = require('..');
+
+// The tutorial's pair (seed chapter 2.2, tutorial/tutorial.c).
+const q1 = pw85.spheroid(10, 0.1, [0, 0, 1]);
+const q2 = pw85.spheroid(0.5, 5, [1, 0, 0]);
+const r12 = [0.7, -0.7, 1.1];
+
+test('version is that of the library built', () => {
+  assert.equal(pw85.version(), process.env.PW85_EXPECTED_VERSION);
+});
+
+test('spheroid: Q = a²I + (c² − a²)nnᵀ', () => {
+  assert.ok(q1 instanceof Float64Array);
+  assert.deepEqual(Array.from(q1), [100, 0, 0, 100, 0, 0.1 * 0.1]);
+  assert.deepEqual(Array.from(q2), [25, 0, 0, 0.25, 0, 0.25]);
+});
+
+test('contactFunction: the tutorial figures, exactly', () => {
+  const { mu2, lambda } = pw85.contactFunction(r12, q1, q2);
+  assert.equal(mu2, 3.3627060406386291);
+  assert.equal(lambda, 0.16685895534055478);
+  assert.equal(mu2.toPrecision(6), '3.36271');
+  assert.equal(lambda.toPrecision(6), '0.166859');
+});
+
+test('contactFunction: typed arrays and plain arrays agree', () => {
+  const a = pw85.contactFunction(Float64Array.from(r12), q1, q2);
+  const b = pw85.contactFunction(r12, Array.from(q1), Array.from(q2));
+  assert.deepEqual(a, b);
+});
+
+test('overlap: disjoint, overlapping, coincident', () => {
+  assert.equal(pw85.overlap(r12, q1, q2), 1);
+  assert.equal(pw85.overlap(r12.map((x) => x / 10), q1, q2), -1);
+  assert.equal(pw85.overlap([0, 0, 0], q1, q2), -1);
+});
+
+test('errors are Pw85Error with the status and pw85\'s message', () => {
+  const bad = Array.from(q1);
+  bad[3] = -1;
+  assert.throws(() => pw85.contactFunction(r12, bad, q2), (e) =>
+    e instanceof pw85.Pw85Error &&
+    e.status === pw85.status.PW85_ENOTPOSDEF &&
+    e.code === 'PW85_ENOTPOSDEF' &&
+    e.message === 'pw85_contact_function: ' +
+      pw85.strerror(pw85.status.PW85_ENOTPOSDEF));
+  assert.throws(() => pw85.overlap([NaN, 0, 0], q1, q2),
+    (e) => e instanceof pw85.Pw85Error && e.code === 'PW85_EDOM');
+  assert.throws(() => pw85.contactFunction(r12, q1, ['x', 0, 0, 1, 0, 1]),
+    (e) => e.code === 'PW85_EDOM');
+});
+
+test('wrong lengths are RangeErrors, before any call', () => {
+  assert.throws(() => pw85.contactFunction([1, 2], q1, q2), RangeError);
+  assert.throws(() => pw85.overlap(r12, q1.subarray(1), q2), RangeError);
+  assert.throws(() => pw85.spheroid(1, 2, [0, 0, 1, 0]), RangeError);
+  assert.throws(() => pw85.contactFunction(r12, null, q2), RangeError);
+});
+
+test('strerror names every status, and an unknown one', () => {
+  const messages = new Set(Object.values(pw85.status).map(pw85.strerror));
+  assert.equal(messages.size, Object.keys(pw85.status).length);
+  assert.ok(pw85.strerror(-1).length > 0);
+});

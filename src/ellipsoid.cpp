@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Ellipsoids from semi-axes and a rotation or a quaternion (ellipsoid.hpp).
+#include "ellipsoid.hpp"
+
+#include <cfloat>
+#include <cmath>
+
+#include "checks.hpp"
+#include "dd.hpp"
+
+namespace pw85::detail {
+
+namespace {
+
+// aₘ² exactly, as double-doubles; false when one is not > 0 (invalid) or
+// leaves the normal range (*range).
+bool squares(double const a[dim], dd a2[dim], bool *range) noexcept {
+  *range = true;
+  for (int m = 0; m < dim; ++m) {
+    if (!(a[m] > 0.0)) return false;
+    a2[m] = two_prod(a[m], a[m]);
+    if (!(a2[m].hi >= DBL_MIN && a2[m].hi <= DBL_MAX)) *range = false;
+  }
+  return true;
+}
+
+// q[k] = Σₘ R_im·R_jm·aₘ² for entry k = (i, j), in double-double, rounded
+// once. Each product and sum errs by at most a few 2⁻¹⁰⁶ of the magnitudes
+// involved: less than 2⁻¹⁰⁰·Σₘ |R_im·R_jm|·aₘ² in all (pw85.h).
+void form(dd const r[dim * dim], dd const a2[dim], double q[sym]) noexcept {
+  for (int k = 0; k < sym; ++k) {
+    int const i = row_of[k], j = col_of[k];
+    dd acc{0.0, 0.0};
+    for (int m = 0; m < dim; ++m)
+      acc = dd_add(acc, dd_mul(dd_mul(r[dim * i + m], r[dim * j + m]), a2[m]));
+    q[k] = acc.hi;  // dd_add normalises: hi is hi + lo rounded
+  }
+}
+
+}  // namespace
+
+Status ellipsoid_rotation(double const a[dim], double const rot[dim * dim],
+                          double q[sym]) noexcept {
+  if (!(all_finite<dim>(a) && all_finite<dim * dim>(rot)))
+    return Status::not_finite;
+  dd a2[dim];
+  bool in_range = true;
+  if (!squares(a, a2, &in_range)) return Status::invalid_argument;
+  // RᵀR = I to PW85_UNIT_TOL, entry by entry (plain double suffices: the
+  // tolerance is far above its rounding).
+  for (int i = 0; i < dim; ++i)
+    for (int j = i; j < dim; ++j) {
+      double g = 0.0;
+      for (int m = 0; m < dim; ++m) g += rot[dim * m + i] * rot[dim * m + j];
+      if (!(std::fabs(g - (i == j ? 1.0 : 0.0)) <= unit_tol))
+        return Status::invalid_argument;
+    }
+  if (!in_range) return Status::out_of_range;
+  dd r[dim * dim];
+  for (int k = 0; k < dim * dim; ++k) r[k] = dd{rot[k], 0.0};
+  form(r, a2, q);
+  return Status::success;
+}
+
+Status ellipsoid_quaternion(double const a[dim], double const p[4],
+                            double q[sym]) noexcept {
+  if (!(all_finite<dim>(a) && all_finite<4>(p))) return Status::not_finite;
+  dd a2[dim];
+  bool in_range = true;
+  if (!squares(a, a2, &in_range)) return Status::invalid_argument;
+  // n = ‖p‖² and the products pₖ·pₗ, exactly (two_prod), barring underflow.
+  dd pp[4][4];
+  for (int k = 0; k < 4; ++k)
+    for (int l = k; l < 4; ++l) pp[k][l] = pp[l][k] = two_prod(p[k], p[l]);
+  dd const n = dd_add(dd_add(pp[0][0], pp[1][1]), dd_add(pp[2][2], pp[3][3]));
+  if (!(std::fabs(n.hi - 1.0) <= unit_tol)) return Status::invalid_argument;
+  if (!in_range) return Status::out_of_range;
+  // R(p/‖p‖) = I + (2/n)·(w·[u]× + [u]×²), u = (x, y, z): the rotation
+  // v ↦ p·v·p* written with the products of the components of p.
+  dd const c = dd_div(dd{2.0, 0.0}, n);
+  int constexpr w = 0, x = 1, y = 2, z = 3;
+  dd const diag[dim] = {dd_add(pp[y][y], pp[z][z]), dd_add(pp[x][x], pp[z][z]),
+                        dd_add(pp[x][x], pp[y][y])};
+  dd r[dim * dim];
+  for (int i = 0; i < dim; ++i)
+    r[dim * i + i] = dd_sub(dd{1.0, 0.0}, dd_mul(c, diag[i]));
+  r[1] = dd_mul(c, dd_sub(pp[x][y], pp[w][z]));  // R01
+  r[3] = dd_mul(c, dd_add(pp[x][y], pp[w][z]));  // R10
+  r[2] = dd_mul(c, dd_add(pp[x][z], pp[w][y]));  // R02
+  r[6] = dd_mul(c, dd_sub(pp[x][z], pp[w][y]));  // R20
+  r[5] = dd_mul(c, dd_sub(pp[y][z], pp[w][x]));  // R12
+  r[7] = dd_mul(c, dd_add(pp[y][z], pp[w][x]));  // R21
+  form(r, a2, q);
+  return Status::success;
+}
+
+}  // namespace pw85::detail

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Ellipsoids from semi-axes and an orientation, and back (private; seed
+// ch. 3, eq. (2): Q = Σ aᵢ²·vᵢ·vᵢᵀ).
+#ifndef PW85_SRC_ELLIPSOID_HPP
+#define PW85_SRC_ELLIPSOID_HPP
+
+#include "status.hpp"
+#include "sym3.hpp"
+
+namespace pw85::detail {
+
+// The tolerance of pw85.h's PW85_UNIT_TOL.
+constexpr double unit_tol = 1e-6;
+
+// pw85_ellipsoid_rotation(): Q = R·diag(a²)·Rᵀ, rot[3i + j] = R_ij, in
+// double-double, rounded once. Pointers valid. Returns Status::success,
+// not_finite, invalid_argument or out_of_range; q is written on success
+// only.
+Status ellipsoid_rotation(double const a[dim], double const rot[dim * dim],
+                          double q[sym]) noexcept;
+
+// pw85_ellipsoid_quaternion(): the same with R = R(p/‖p‖), p = (w, x, y, z).
+Status ellipsoid_quaternion(double const a[dim], double const p[4],
+                            double q[sym]) noexcept;
+
+// pw85_principal_axes() (principal_axes.cpp: GSL's gsl_eigen_symmv).
+// Returns Status::success, not_finite, not_positive_definite or
+// out_of_range (cond(Q) above about 1e270); a and rot are written on
+// success only.
+Status principal_axes(double const q[sym], double a[dim],
+                      double rot[dim * dim]) noexcept;
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_ELLIPSOID_HPP

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The contact geometry and the derivatives of μ² (geometry.hpp). Everything
+// is computed in the problem of the search (rescaled, oriented), then mapped
+// to the input: swapping the ellipsoids then mirrors every output bit for
+// bit (but the contact point, which is measured from the other centre).
+#include "geometry.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "checks.hpp"
+#include "compensated.hpp"
+#include "compiler.hpp"
+#include "contact.hpp"
+#include "dd.hpp"
+#include "evaluate.hpp"
+#include "scaling.hpp"
+#include "tolerances.hpp"
+
+namespace pw85::detail {
+
+namespace {
+
+// Newton steps on the compensated ω (eq. (5.6) of docs/optimisation.rst;
+// its root is λ*, seed ch. 3, eq. (13)), with the plain ω′ (eq. (5.7)) as
+// slope: the slope only sets the rate, the compensated ω sets the root.
+// Returns the polished λ, or λ0 where an evaluation fails.
+template <bool Fast>
+PW85_INLINE double polish(Problem const &p, double lambda0) noexcept {
+  double lambda = lambda0;
+  for (int k = 0; k < polish_iter; ++k) {
+    PlainPoint pt;
+    NewtonStep plain_step;
+    if (!evaluate_plain<Fast>(lambda, p, &pt) || !newton_step(pt, &plain_step))
+      break;
+    double hi[sym], lo[sym];
+    combine_dd(lambda, p.q1, p.q2, hi, lo);  // hi: Q(λ) as pt factorised it
+    Compensated a;
+    compensated_from<true>(lambda, p.r, p.q1, p.q2, hi, lo, pt.sol, &a);
+    double const omega = lambda * std::sqrt(a.p2 / a.p1) - (1.0 - lambda);
+    double const step = omega / plain_step.domega;
+    double const size = std::min(lambda, 1.0 - lambda);
+    if (!(std::fabs(step) <= polish_max_step * size)) break;
+    lambda -= step;
+    if (std::fabs(step) <= polish_accept * size) break;
+  }
+  return lambda;
+}
+
+// s = Q(λ)⁻¹·r as s + s_lo (tolerances.hpp, geometry_refine_cond); false
+// when no factorisation succeeds, or s is not finite or is zero (both only
+// far beyond the domain).
+// A usable solution: finite, with a finite low part, and not zero.
+PW85_INLINE bool usable(double const s[dim], double const s_lo[dim]) noexcept {
+  return all_finite<dim>(s) && all_finite<dim>(s_lo) &&
+         (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0);
+}
+
+PW85_INLINE bool solve_accurately(Problem const &p, double lambda, double s[dim],
+                      double s_lo[dim]) noexcept {
+  double hi[sym], lo[sym];
+  combine_dd(lambda, p.q1, p.q2, hi, lo);
+  Ldl fac;
+  bool const plain = ldl_decomp(hi, &fac);
+  if (plain && ldl_cond_bound(hi, fac) <= geometry_refine_cond) {
+    double rho[dim], ds[dim];
+    ldl_solve(fac, p.r, s);
+    compensated_residual(hi, lo, p.r, s, rho);
+    ldl_solve(fac, rho, ds);
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) {
+      dd const t = two_sum(s[i], ds[i]);
+      s[i] = t.hi;
+      s_lo[i] = t.lo;
+    }
+    if (usable(s, s_lo)) return true;
+  }
+  if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo) && usable(s, s_lo))
+    return true;
+  // Beyond the domain (entries spanning most of the range of a double),
+  // where even the double-double factors fail: the plain solve, if any.
+  if (!plain) return false;
+  ldl_solve(fac, p.r, s);
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) s_lo[i] = 0.0;
+  return usable(s, s_lo);
+}
+
+// Q·s for s = s + s_lo, as t + t_lo (t = the rounded value).
+PW85_INLINE void sym_mul_dd(double const q[sym], double const s[dim],
+                double const s_lo[dim], double t[dim],
+                double t_lo[dim]) noexcept {
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    Dot2 acc{0.0, 0.0};
+    double tail = 0.0;
+    PW85_UNROLL
+    for (int j = 0; j < dim; ++j) {
+      double const qij = q[sym_index(i, j)];
+      acc.add_product(qij, s[j]);
+      tail += qij * s_lo[j];
+    }
+    dd const v = two_sum(acc.sum, acc.err + tail);
+    t[i] = v.hi;
+    t_lo[i] = v.lo;
+  }
+}
+
+// a × b for a = a + a_lo, b = b + b_lo, each component as in twice the
+// working precision then rounded: no cancellation error when a is nearly
+// parallel to b (s nearly an eigenvector of Qᵢ, for instance).
+PW85_INLINE void cross_dd(double const a[dim], double const a_lo[dim],
+              double const b[dim], double const b_lo[dim],
+              double c[dim]) noexcept {
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    int const j = (i + 1) % dim, k = (i + 2) % dim;
+    Dot2 acc{0.0, 0.0};
+    acc.add_product(a[j], b[k]);
+    acc.add_product(-a[k], b[j]);
+    acc.err += (a[j] * b_lo[k] + a_lo[j] * b[k]) -
+               (a[k] * b_lo[j] + a_lo[k] * b[j]);
+    c[i] = acc.value();
+  }
+}
+
+// x · 2^k for the 3 or 6 entries of x.
+PW85_INLINE void scale_back(double *x, int n, int k) noexcept {
+  PW85_UNROLL
+  for (int i = 0; i < n; ++i) x[i] = times_pow2(x[i], k);
+}
+
+PW85_INLINE bool any_infinite(double const *x, int n) noexcept {
+  PW85_UNROLL
+  for (int i = 0; i < n; ++i)
+    if (std::isinf(x[i])) return true;
+  return false;
+}
+
+// Steps after the search: the polish of λ, s, and every output, into out
+// and der (scaled back to the input's units). Compiled for CPUs with and
+// without FMA (the double-double kernels use std::fma). Returns false
+// when no s can be solved for (far beyond the domain).
+PW85_FMA_CLONES
+bool outputs(Contact const &c, double out[geom::size],
+             double der[deriv::size]) noexcept {
+  Problem const &p = c.p;
+  out[geom::mu2] = c.mu2;
+  out[geom::lambda] = 0.5;
+  if (!p.r_is_zero) {
+    // λ' and s of the problem; (1 − λ', Q1') and (λ', Q2') are the weights
+    // and forms of (9a) and (9b) in the problem's orientation.
+    double const lambda =
+        p.moderate ? polish<true>(p, c.lambda) : polish<false>(p, c.lambda);
+    double s[dim], s_lo[dim];
+    if (!solve_accurately(p, lambda, s, s_lo)) return false;
+    // Everything below is computed from s·2^−es and Qᵢ'·2^−eq, both of
+    // magnitude below 1 (exact scalings by powers of two), so that no
+    // product overflows whatever the input's range; the exponents are
+    // put back at the end.
+    int const es = exponent(std::max(std::max(std::fabs(s[0]), std::fabs(s[1])),
+                                     std::fabs(s[2])));
+    int const eq = exponent(std::max(std::max(std::max(p.q1[0], p.q1[3]), p.q1[5]),
+                                     std::max(std::max(p.q2[0], p.q2[3]), p.q2[5])));
+    double q1[sym], q2[sym];
+    PW85_UNROLL
+    for (int k = 0; k < sym; ++k) {
+      q1[k] = times_pow2(p.q1[k], -eq);
+      q2[k] = times_pow2(p.q2[k], -eq);
+    }
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) {
+      s[i] = times_pow2(s[i], -es);
+      s_lo[i] = times_pow2(s_lo[i], -es);
+    }
+    double const u = lambda, v = 1.0 - lambda;
+    double t1[dim], t1_lo[dim], t2[dim], t2_lo[dim];
+    sym_mul_dd(q1, s, s_lo, t1, t1_lo);  // Q1'·s, scaled
+    sym_mul_dd(q2, s, s_lo, t2, t2_lo);  // Q2'·s, scaled
+    // s is that of the input (Q'(λ') = Q(λ), r unchanged), and x − c1 is
+    // (1 − λ)·Q1·s (9a) in the input's terms: (1 − λ')·Q1'·s, or λ'·Q2'·s
+    // when the problem is swapped.
+    double *point = out + geom::point;
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) point[i] = p.swapped ? u * t2[i] : v * t1[i];
+    // n = s/‖s‖ (s scaled: no square overflows).
+    double const norm = std::sqrt(dot(s, s));
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) out[geom::normal + i] = s[i] / norm;
+    out[geom::lambda] = p.swapped ? v : u;
+    // The envelope theorem: ∂μ²/∂y = ∂f/∂y at λ* for every input y.
+    double const w = u * v;
+    double const w1 = u * (v * v);  // λ(1 − λ)² of Q1'
+    double const w2 = (u * u) * v;  // λ²(1 − λ) of Q2'
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) der[deriv::r12 + i] = 2.0 * w * s[i];
+    double rot1[dim], rot2[dim];
+    cross_dd(s, s_lo, t1, t1_lo, rot1);
+    cross_dd(s, s_lo, t2, t2_lo, rot2);
+    int const first = p.swapped ? deriv::rot2 : deriv::rot1;
+    int const second = p.swapped ? deriv::rot1 : deriv::rot2;
+    PW85_UNROLL
+    for (int i = 0; i < dim; ++i) {
+      der[first + i] = 2.0 * w1 * rot1[i];
+      der[second + i] = 2.0 * w2 * rot2[i];
+    }
+    int const first_q = p.swapped ? deriv::q2 : deriv::q1;
+    int const second_q = p.swapped ? deriv::q1 : deriv::q2;
+    PW85_UNROLL
+    for (int k = 0; k < sym; ++k) {
+      // ∂(sᵀQs)/∂q[k]: s_i², or 2·s_i·s_j for an off-diagonal entry.
+      double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;
+      double const ss = factor * s[row_of[k]] * s[col_of[k]];
+      der[first_q + k] = -w1 * ss;
+      der[second_q + k] = -w2 * ss;
+    }
+    // Back to the input's scale: r = r'·2^a, Q = Q'·2^b, so s = s'·2^(a−b),
+    // x − c1 scales as r, ∂μ²/∂r as s, ∂μ²/∂ω as μ², ∂μ²/∂q as s²; and the
+    // scalings by 2^es and 2^eq above.
+    int const a = p.r_exp, b = p.q_exp;
+    scale_back(point, dim, a + eq + es);
+    scale_back(der + deriv::r12, dim, a - b + es);
+    scale_back(der + deriv::rot1, 2 * dim, 2 * a - b + 2 * es + eq);
+    scale_back(der + deriv::q1, 2 * sym, 2 * (a - b + es));
+  }
+  return true;
+}
+
+}  // namespace
+
+Status contact_geometry(double const r[dim], double const q1[sym],
+                        double const q2[sym], double geometry[geom::size],
+                        double d[deriv::size]) noexcept {
+  Contact c;
+  Status const status = contact_search(r, q1, q2, &c);
+  if (status != Status::success) return status;
+  double out[geom::size] = {0.0};
+  double der[deriv::size] = {0.0};
+  if (!outputs(c, out, der)) return Status::out_of_range;
+  bool const overflow = std::isinf(out[geom::mu2]) ||
+                        any_infinite(out + geom::point, dim) ||
+                        (d != nullptr && any_infinite(der, deriv::size));
+  PW85_UNROLL
+  for (int i = 0; i < geom::size; ++i) geometry[i] = out[i];
+  if (d != nullptr)
+    PW85_UNROLL
+    for (int i = 0; i < deriv::size; ++i) d[i] = der[i];
+  return overflow ? Status::out_of_range : Status::success;
+}
+
+}  // namespace pw85::detail
