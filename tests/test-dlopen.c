@@ -147,11 +147,11 @@ int main(int argc, char **argv) {
   CHECK(fabs(out[0] - 3.3627060406386292) < 1e-12);
   CHECK(contact_p(r, q1, NULL, out) == 1);
 
-  /* The index: two unit sphedecision 1.5 apart in a periodic box of side 10,
+  /* The index: two unit spheres 1.5 apart in a periodic box of side 10,
    * the second also through its image at x − 10. */
   void *index = NULL;
   double const box[3] = {10., 10., 10.}, unit[6] = {1., 0., 0., 1., 0., 1.};
-  double const centdecision[6] = {0., 0., 0., 1.5, 0., 0.};
+  double const centres[6] = {0., 0., 0., 1.5, 0., 0.};
   double units[12];
   memcpy(units, unit, sizeof unit);
   memcpy(units + 6, unit, sizeof unit);
@@ -161,21 +161,21 @@ int main(int argc, char **argv) {
   double c[3], q[6], ml[2];
   CHECK(index_openmp_p() == 0 || index_openmp_p() == 1);
   CHECK(index_create_p(box, &index) == 0);
-  CHECK(index_insert_many_p(index, 2, ids, centdecision, units) == 0);
-  CHECK(index_insert_p(index, 2, centdecision + 3, unit) == 0);
+  CHECK(index_insert_many_p(index, 2, ids, centres, units) == 0);
+  CHECK(index_insert_p(index, 2, centres + 3, unit) == 0);
   CHECK(index_remove_p(index, 2) == 0);
-  CHECK(index_update_p(index, 1, centdecision + 3, unit) == 0);
+  CHECK(index_update_p(index, 1, centres + 3, unit) == 0);
   CHECK(index_count_p(index, &n) == 0 && n == 2);
   CHECK(index_get_p(index, 1, c, q) == 0 && c[0] == 1.5 && q[5] == 1.);
   CHECK(index_overlapping_p(index, 2, 1, pair, shift, &decision, &n) == 0);
   CHECK(n == 1 && pair[0] == 0 && pair[1] == 1 && decision == -1);
   CHECK(index_pairs_within_p(index, 1., 1, 1, pair, shift, ml, &n) == 0);
   CHECK(n == 1 && ml[0] == 0.5625);
-  CHECK(index_overlap_any_p(index, centdecision, unit, 0, &decision, &found) == 0);
+  CHECK(index_overlap_any_p(index, centres, unit, 0, &decision, &found) == 0);
   CHECK(decision == -1 && found == 1);
-  CHECK(index_within_p(index, centdecision + 3, unit, 1., 1, 1, pair, shift, ml, &n) == 0);
+  CHECK(index_within_p(index, centres + 3, unit, 1., 1, 1, pair, shift, ml, &n) == 0);
   CHECK(n == 1 && pair[0] == 0 && ml[0] == 0.5625);
-  CHECK(index_insert_p(index, 0, centdecision, unit) == 7); /* PW85_EINVAL */
+  CHECK(index_insert_p(index, 0, centres, unit) == 7); /* PW85_EINVAL */
   index_destroy_p(index);
 
   CHECK(dlclose(lib) == 0);
