@@ -129,7 +129,17 @@ AVAILABLE = {
     "accuracy-f": (DOCS / "accuracy" / "accuracy-f.png").is_file(),
     "accuracy-mu2": (DOCS / "accuracy" / "accuracy-mu2.png").is_file(),
     "legacy-header": "pw85_legacy.h" in _documented_headers(),
+    "matplotlib": _importable("matplotlib") and _importable("pypw85"),
 }
+
+# The figure of assemblies.rst is drawn at build time (plot_section.py).
+if AVAILABLE["matplotlib"]:
+    extensions.append("matplotlib.sphinxext.plot_directive")
+    plot_formats = [("png", 110)]
+    plot_html_show_source_link = False
+    plot_html_show_formats = False
+    plot_include_source = False
+    plot_working_directory = str(DOCS)  # plot_section.py finds ../tutorial
 
 
 class OptionalContent(SphinxDirective):

@@ -44,20 +44,21 @@ else
   echo "valgrind not found: memcheck run skipped"
 fi
 # ThreadSanitizer: the multi-threaded tests (test-threads; test-batch,
-# whose batches run concurrently from several threads), in a build whose
-# kernels have no target_clones (fma_clones=false: TSan crashes in their
-# ifunc resolver at start-up) and without OpenMP (openmp=disabled: libgomp
-# is not instrumented, and TSan reports its fork and join as races; the
-# batches then run in the calling thread there, and their OpenMP threads
-# are tested for identical results in the other builds). Only what they
-# need is built.
+# whose batches run concurrently from several threads; test-index, whose
+# queries run from several threads at once), in a build whose kernels have
+# no target_clones (fma_clones=false: TSan crashes in their ifunc resolver
+# at start-up) and without OpenMP (openmp=disabled: libgomp is not
+# instrumented, and TSan reports its fork and join as races; the batches
+# and the all-pairs queries then run in the calling thread there, and their
+# OpenMP threads are tested for identical results in the other builds).
+# Only what they need is built.
 [ -f build-tsan/build.ninja ] ||
   meson setup build-tsan -Db_sanitize=thread -Dfma_clones=false \
     -Ddocs=disabled -Dpython=disabled -Dopenmp=disabled
 meson configure build-tsan -Dopenmp=disabled
-ninja -C build-tsan -j2 tests/test-threads tests/test-batch
+ninja -C build-tsan -j2 tests/test-threads tests/test-batch tests/test-index
 TSAN_OPTIONS=halt_on_error=1 \
-  meson test -C build-tsan --no-rebuild --print-errorlogs threads batch
+  meson test -C build-tsan --no-rebuild --print-errorlogs threads batch index
 # --- end of checkers ----------------------------------------------------
 
 # ---- fuzz (issue 14, item 1) ------------------------------------------

@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* Compiled as C (several standards, -Werror -pedantic): pw85.h stands alone,
- * twice included, and its prototypes accept const arrays. */
+/* Compiled as C (several standards, -Werror -pedantic): pw85.h and
+ * pw85_index.h stand alone, twice included, and their prototypes accept
+ * const arrays. */
+#include <pw85/pw85_index.h>
+#include <pw85/pw85_index.h>
 #include <pw85/pw85.h>
 #include <pw85/pw85.h>
 #include <pw85.h>
@@ -29,5 +32,12 @@ int main(void) {
                                          2) == PW85_SUCCESS;
   ok = ok && pw85_contact_derivatives_batch(1, r, 0, q, 0, q, 0, g, d, NULL,
                                             1) == PW85_SUCCESS;
+  pw85_index *index = NULL;
+  size_t count = 1;
+  ok = ok && pw85_index_create(NULL, &index) == PW85_SUCCESS;
+  ok = ok && pw85_index_insert(index, 0, r, q) == PW85_SUCCESS;
+  ok = ok && pw85_index_pairs_within(index, 1., 1, 0, NULL, NULL, NULL,
+                                     &count) == PW85_SUCCESS && count == 0;
+  pw85_index_destroy(index);
   return ok ? 0 : 1;
 }

@@ -39,6 +39,25 @@ typedef int (*batch_fn)(size_t, double const *, size_t, double const *,
 typedef int (*derivatives_batch_fn)(size_t, double const *, size_t,
                                     double const *, size_t, double const *,
                                     size_t, double *, double *, int *, int);
+/* pw85_index.h, with the opaque handle as void * */
+typedef int (*index_create_fn)(double const *, void **);
+typedef void (*index_destroy_fn)(void *);
+typedef int (*index_openmp_fn)(void);
+typedef int (*index_count_fn)(void const *, size_t *);
+typedef int (*index_insert_fn)(void *, size_t, double const *, double const *);
+typedef int (*index_insert_many_fn)(void *, size_t, size_t const *,
+                                    double const *, double const *);
+typedef int (*index_remove_fn)(void *, size_t);
+typedef int (*index_get_fn)(void const *, size_t, double *, double *);
+typedef int (*index_overlap_any_fn)(void const *, double const *,
+                                    double const *, size_t, int *, size_t *);
+typedef int (*index_within_fn)(void const *, double const *, double const *,
+                               double, size_t, size_t, size_t *, int *,
+                               double *, size_t *);
+typedef int (*index_overlapping_fn)(void const *, int, size_t, size_t *, int *,
+                                    int *, size_t *);
+typedef int (*index_pairs_within_fn)(void const *, double, int, size_t,
+                                     size_t *, int *, double *, size_t *);
 
 static void *sym(void *lib, const char *name) {
   void *p = dlsym(lib, name);
@@ -74,6 +93,18 @@ int main(int argc, char **argv) {
   threads_fn threads_p;
   batch_fn cf_batch_p, overlap_batch_p, geometry_batch_p;
   derivatives_batch_fn derivatives_batch_p;
+  index_create_fn index_create_p;
+  index_destroy_fn index_destroy_p;
+  index_openmp_fn index_openmp_p;
+  index_count_fn index_count_p;
+  index_insert_fn index_insert_p, index_update_p;
+  index_insert_many_fn index_insert_many_p;
+  index_remove_fn index_remove_p;
+  index_get_fn index_get_p;
+  index_overlap_any_fn index_overlap_any_p;
+  index_within_fn index_within_p;
+  index_overlapping_fn index_overlapping_p;
+  index_pairs_within_fn index_pairs_within_p;
   void *p;
 #define LOAD(var, name)      \
   p = sym(lib, name);        \
@@ -98,6 +129,19 @@ int main(int argc, char **argv) {
   LOAD(overlap_batch_p, "pw85_overlap_batch");
   LOAD(geometry_batch_p, "pw85_contact_geometry_batch");
   LOAD(derivatives_batch_p, "pw85_contact_derivatives_batch");
+  LOAD(index_create_p, "pw85_index_create");
+  LOAD(index_destroy_p, "pw85_index_destroy");
+  LOAD(index_openmp_p, "pw85_index_openmp");
+  LOAD(index_count_p, "pw85_index_count");
+  LOAD(index_insert_p, "pw85_index_insert");
+  LOAD(index_update_p, "pw85_index_update");
+  LOAD(index_insert_many_p, "pw85_index_insert_many");
+  LOAD(index_remove_p, "pw85_index_remove");
+  LOAD(index_get_p, "pw85_index_get");
+  LOAD(index_overlap_any_p, "pw85_index_overlap_any");
+  LOAD(index_within_p, "pw85_index_within");
+  LOAD(index_overlapping_p, "pw85_index_overlapping_pairs");
+  LOAD(index_pairs_within_p, "pw85_index_pairs_within");
 
   CHECK(strcmp(strerror_p(0), "success") == 0);
   CHECK(strcmp(version_p(), PW85_EXPECTED_VERSION) == 0);
@@ -163,6 +207,39 @@ int main(int argc, char **argv) {
         outs[8 * (n - 1)] == g[0]);
   CHECK(derivatives_batch_p(n, rs, 3, q1, 0, q2, 0, outs, ds, NULL, 2) == 0 &&
         ds[21 * (n - 1)] == d[0]);
+
+  {
+    /* The index: two unit spheres 1.5 apart in a periodic box of side 10,
+     * the second also through its image at x − 10. */
+    void *index = NULL;
+    double const box[3] = {10., 10., 10.}, unit[6] = {1., 0., 0., 1., 0., 1.};
+    double const centres[6] = {0., 0., 0., 1.5, 0., 0.};
+    double units[12];
+    memcpy(units, unit, sizeof unit);
+    memcpy(units + 6, unit, sizeof unit);
+    size_t const ids[2] = {0, 1};
+    size_t n = 0, pair[2], found = 9;
+    int shift[3], decision = 0;
+    double c[3], q[6], ml[2];
+    CHECK(index_openmp_p() == 0 || index_openmp_p() == 1);
+    CHECK(index_create_p(box, &index) == 0);
+    CHECK(index_insert_many_p(index, 2, ids, centres, units) == 0);
+    CHECK(index_insert_p(index, 2, centres + 3, unit) == 0);
+    CHECK(index_remove_p(index, 2) == 0);
+    CHECK(index_update_p(index, 1, centres + 3, unit) == 0);
+    CHECK(index_count_p(index, &n) == 0 && n == 2);
+    CHECK(index_get_p(index, 1, c, q) == 0 && c[0] == 1.5 && q[5] == 1.);
+    CHECK(index_overlapping_p(index, 2, 1, pair, shift, &decision, &n) == 0);
+    CHECK(n == 1 && pair[0] == 0 && pair[1] == 1 && decision == -1);
+    CHECK(index_pairs_within_p(index, 1., 1, 1, pair, shift, ml, &n) == 0);
+    CHECK(n == 1 && ml[0] == 0.5625);
+    CHECK(index_overlap_any_p(index, centres, unit, 0, &decision, &found) == 0);
+    CHECK(decision == -1 && found == 1);
+    CHECK(index_within_p(index, centres + 3, unit, 1., 1, 1, pair, shift, ml, &n) == 0);
+    CHECK(n == 1 && pair[0] == 0 && ml[0] == 0.5625);
+    CHECK(index_insert_p(index, 0, centres, unit) == 7); /* PW85_EINVAL */
+    index_destroy_p(index);
+  }
 
   CHECK(dlclose(lib) == 0);
   printf("dlopen: every exported function called\n");

@@ -103,6 +103,7 @@ from ._libpw85 import lib as _lib, version as _library_version
 # loaded from; the ABI this package expects).
 from ._libpw85 import path as _library_path
 from ._loader import ABI_MAJOR as _ABI_MAJOR
+from .index import Index  # pw85_index.h: pypw85.index.Index
 
 __all__ = [
     "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER", "UNIT_TOL",

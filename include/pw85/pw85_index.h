@@ -1,0 +1,325 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/**
+ * @file pw85_index.h
+ * @brief A spatial index of ellipsoids, in an open domain or a periodic
+ *        box: overlap and near-contact queries certified as
+ *        pw85_overlap() and pw85_contact_function() decide them.
+ *
+ * Conventions of pw85.h (vectors `double[3]`, symmetric forms `double[6]`,
+ * an ellipsoid {m : (m − c)ᵀ Q⁻¹ (m − c) ≤ 1}); lengths in the caller's
+ * unit, Q in that unit squared. Arrays of n vectors or forms are
+ * contiguous, row by row: `centres[3·i + k]`, `q[6·i + k]`.
+ *
+ * Ellipsoids are named by ids chosen by the caller, integers from 0 to
+ * PW85_INDEX_MAX_ID; the index keeps a table indexed by id, so its memory
+ * grows with the largest id in use (about 100 bytes per id): use small
+ * ids, such as the positions of the ellipsoids in the caller's arrays.
+ *
+ * Domain. Open: any finite centre. Periodic: an orthorhombic box of sides
+ * L = (L0, L1, L2); an ellipsoid stands for all its images c + n∘L,
+ * n ∈ ℤ³ (n∘L = (n0·L0, n1·L1, n2·L2)); centres need not be wrapped into
+ * the box, but |c_k| ≤ 2²⁹·L_k. Each stored ellipsoid must be narrower
+ * than the box along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that it
+ * cannot meet its own images; the queries consider every image of every
+ * stored ellipsoid (not only the nearest), so the box may be as small as
+ * that rule allows, and a pair may meet through several images.
+ *
+ * Images. A result names a stored ellipsoid j by its id and an image
+ * shift n (three ints; 0 in an open domain); the vector from the query's
+ * centre c to that image is, in double arithmetic and in this order,
+ * r = (c_j + n∘L) − c, each product n_k·L_k rounded once: the r12 given to
+ * pw85_overlap() or pw85_contact_function(), whose results the queries
+ * return bit for bit. Periodic images of the query ellipsoid itself are
+ * not considered by the queries on a candidate.
+ *
+ * Certification. The broad phase (a grid over the axis-aligned bounding
+ * boxes of the ellipsoids, whose half-widths are √Q_kk exactly, then the
+ * projections of the two ellipsoids on the line of their centres) only
+ * discards pairs with μ² > t·(1 + 2⁻²⁰), far outside the rounding of any
+ * decision; every other pair is decided by the logic of pw85_overlap() or
+ * by pw85_contact_function(). The answers are therefore those of a brute
+ * force loop calling these functions on every pair and every image.
+ *
+ * Memory and threads. The index allocates from the heap (that is its
+ * job), and every allocation that fails is reported as PW85_ENOMEM, never
+ * by an abort; a failed call leaves the index as it was. Calls that modify
+ * an index (insert, update, remove, destroy) need exclusive access to it;
+ * queries only read it and may run concurrently with each other from
+ * several threads. The all-pairs queries start `threads` OpenMP threads
+ * when libpw85 was built with OpenMP (see pw85_index_openmp()), and run
+ * serially otherwise; their output is the same, bit for bit, for any
+ * number of threads. No other function starts a thread.
+ *
+ * Outputs that may not fit take a capacity (a number of results) and
+ * return the number of results in *count, as snprintf does: the first
+ * min(count, capacity) results are written, in the documented order;
+ * output arrays may be NULL when capacity is 0 (to ask for the count).
+ *
+ * @since 2.2.0
+ */
+#ifndef PW85_INDEX_H
+#define PW85_INDEX_H
+
+#include <stddef.h>
+
+#include "pw85.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The largest id of an ellipsoid: 2³² − 2.
+ *  @since 2.2.0 */
+#define PW85_INDEX_MAX_ID ((size_t)0xFFFFFFFEu)
+/** No id: the `exclude` argument of the queries on a candidate when no
+ *  stored ellipsoid is to be skipped, and the id returned when none was
+ *  found.
+ *  @since 2.2.0 */
+#define PW85_INDEX_NO_ID ((size_t)-1)
+
+/** An index of ellipsoids (opaque).
+ *  @since 2.2.0 */
+typedef struct pw85_index pw85_index;
+
+/**
+ * @brief Create an empty index, for an open domain or a periodic box.
+ *
+ * @param[in] box NULL for an open domain; else the sides L0, L1, L2 of the
+ *            periodic box (lengths, each > 0 and finite).
+ * @param[out] index the new index, to be freed with pw85_index_destroy().
+ * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EDOM if a side
+ *         is not finite; PW85_EINVAL if a side is not > 0; PW85_ENOMEM.
+ *         *index is written on success only.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_create(double const box[PW85_DIM],
+                               pw85_index **index) PW85_NOEXCEPT;
+
+/**
+ * @brief Free an index and everything it holds. NULL is accepted (and
+ *        does nothing).
+ * @param[in] index the index.
+ * @since 2.2.0
+ */
+PW85_API void pw85_index_destroy(pw85_index *index) PW85_NOEXCEPT;
+
+/**
+ * @brief Does this copy of libpw85 run the all-pairs queries on several
+ *        threads?
+ * @return 1 if it was built with OpenMP, 0 if `threads` > 1 runs serially.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_openmp(void) PW85_NOEXCEPT;
+
+/**
+ * @brief The number of ellipsoids in an index.
+ * @param[in] index the index.
+ * @param[out] count the number of ellipsoids stored.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_count(pw85_index const *index,
+                              size_t *count) PW85_NOEXCEPT;
+
+/**
+ * @brief Insert an ellipsoid (O(1) amortised).
+ *
+ * @param[in,out] index the index.
+ * @param[in] id its id, not in use, at most PW85_INDEX_MAX_ID.
+ * @param[in] centre its centre c.
+ * @param[in] q its quadratic form Q.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
+ *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
+ *         positive definite (the rule of pw85.h); PW85_EINVAL if id is in
+ *         use or above PW85_INDEX_MAX_ID, or, in a periodic box, if
+ *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k for some k;
+ *         PW85_ENOMEM. The index is unchanged on error.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_insert(pw85_index *index, size_t id,
+                               double const centre[PW85_DIM],
+                               double const q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Insert n ellipsoids, all or none.
+ *
+ * As n calls of pw85_index_insert(), in order, except that on error none
+ * is inserted.
+ * @param[in,out] index the index.
+ * @param[in] n the number of ellipsoids (0 does nothing).
+ * @param[in] ids their ids (n values, distinct, not in use).
+ * @param[in] centres their centres (3·n doubles).
+ * @param[in] q their quadratic forms (6·n doubles).
+ * @return the statuses of pw85_index_insert() (the first error met, in the
+ *         order of the arrays); the index is unchanged on error.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_insert_many(pw85_index *index, size_t n,
+                                    size_t const *ids, double const *centres,
+                                    double const *q) PW85_NOEXCEPT;
+
+/**
+ * @brief Move or reshape a stored ellipsoid (O(1) amortised).
+ * @param[in,out] index the index.
+ * @param[in] id the id of a stored ellipsoid.
+ * @param[in] centre its new centre.
+ * @param[in] q its new quadratic form.
+ * @return the statuses of pw85_index_insert(); PW85_EINVAL if id is not
+ *         stored. The index is unchanged on error.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_update(pw85_index *index, size_t id,
+                               double const centre[PW85_DIM],
+                               double const q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Remove a stored ellipsoid (O(1)); its id becomes free.
+ * @param[in,out] index the index.
+ * @param[in] id the id of a stored ellipsoid.
+ * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EINVAL if id is
+ *         not stored (the index is then unchanged).
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_remove(pw85_index *index, size_t id) PW85_NOEXCEPT;
+
+/**
+ * @brief The centre and quadratic form of a stored ellipsoid, as given.
+ * @param[in] index the index.
+ * @param[in] id the id of a stored ellipsoid.
+ * @param[out] centre its centre (as inserted: not wrapped into the box).
+ * @param[out] q its quadratic form.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EINVAL if
+ *         id is not stored. The outputs are written on success only.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_get(pw85_index const *index, size_t id,
+                            double centre[PW85_DIM],
+                            double q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Does a candidate ellipsoid overlap a stored one? Stops at the
+ *        first overlap found: the inner loop of random sequential
+ *        addition and of hard-particle Monte Carlo.
+ *
+ * Every image of every stored ellipsoid but `exclude` is decided as
+ * pw85_overlap(r, q, q_j) decides it (r as in the file description).
+ * @param[in] index the index.
+ * @param[in] centre the candidate's centre c (in a periodic box,
+ *            |c_k| ≤ 2²⁹·L_k).
+ * @param[in] q the candidate's quadratic form Q.
+ * @param[in] exclude the id of a stored ellipsoid to skip (the one the
+ *            candidate would replace, in a Monte Carlo move), or
+ *            PW85_INDEX_NO_ID; an id not stored skips nothing.
+ * @param[out] result −1 if some stored ellipsoid overlaps the candidate
+ *             (pw85_overlap() gives −1), else 0 if some is tangent to it
+ *             (gives 0), else +1; the least result of pw85_overlap() over
+ *             all pairs.
+ * @param[out] id the id of an ellipsoid with that result (which one, when
+ *             several, depends on the history of the index), or
+ *             PW85_INDEX_NO_ID for +1.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
+ *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
+ *         positive definite; PW85_EINVAL if |c_k| > 2²⁹·L_k in a periodic
+ *         box; PW85_ERANGE if a pair's forms span more than the range of
+ *         a double (as pw85_overlap()); PW85_ENOMEM (not expected, as
+ *         pw85_overlap()). The outputs are written on success only.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_overlap_any(pw85_index const *index,
+                                    double const centre[PW85_DIM],
+                                    double const q[PW85_SYM], size_t exclude,
+                                    int *result, size_t *id) PW85_NOEXCEPT;
+
+/**
+ * @brief Every stored ellipsoid, and image, within μ² < t of a candidate.
+ *
+ * μ² and λ of pw85_contact_function(r, q, q_j) (r as in the file
+ * description): λ is the weight of the stored ellipsoid's form. The
+ * results are sorted by id, then by image shift (lexicographically).
+ * @param[in] index the index.
+ * @param[in] centre the candidate's centre (as pw85_index_overlap_any()).
+ * @param[in] q the candidate's quadratic form.
+ * @param[in] t the threshold (dimensionless, > 0 and finite; 1 for
+ *            overlaps, above 1 for near neighbours).
+ * @param[in] exclude as pw85_index_overlap_any().
+ * @param[in] capacity the number of results the arrays below can hold.
+ * @param[out] ids the ids (capacity values).
+ * @param[out] shifts the image shifts (3·capacity ints).
+ * @param[out] mu2_lambda μ² and λ (2·capacity doubles).
+ * @param[out] count the number of results (which may exceed capacity).
+ * @return the statuses of pw85_index_overlap_any(); PW85_EFAULT also if
+ *         an array is NULL while capacity > 0; PW85_EDOM if t is not
+ *         finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE if the reach of the
+ *         query, √t times the bounding boxes, spans more than 2²⁰ boxes
+ *         along an axis. Nothing is written on error.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_within(pw85_index const *index,
+                               double const centre[PW85_DIM],
+                               double const q[PW85_SYM], double t,
+                               size_t exclude, size_t capacity, size_t *ids,
+                               int *shifts, double *mu2_lambda,
+                               size_t *count) PW85_NOEXCEPT;
+
+/**
+ * @brief Every overlapping (or tangent) pair of stored ellipsoids, each
+ *        once, with its image shift.
+ *
+ * A pair is (i, j, n), i < j, decided by pw85_overlap(r, q_i, q_j) with
+ * r = (c_j + n∘L) − c_i; it is reported when the result is −1 or 0 (the
+ * side rule of a periodic box keeps an ellipsoid from meeting its own
+ * images). Sorted by i, then j, then n; the same output, bit for bit, for
+ * any number of threads.
+ * @param[in] index the index.
+ * @param[in] threads the number of threads (≥ 1; see the file description).
+ * @param[in] capacity the number of pairs the arrays below can hold.
+ * @param[out] ids i and j of each pair (2·capacity values).
+ * @param[out] shifts n (3·capacity ints).
+ * @param[out] results −1 (overlap) or 0 (tangent to 4 ulps), as
+ *             pw85_overlap() (capacity ints).
+ * @param[out] count the number of pairs (which may exceed capacity).
+ * @return PW85_SUCCESS; PW85_EFAULT if index or count is NULL, or an array
+ *         is NULL while capacity > 0; PW85_EINVAL if threads < 1;
+ *         PW85_ERANGE as pw85_overlap() on some pair; PW85_ENOMEM.
+ *         Nothing is written on error.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_overlapping_pairs(pw85_index const *index,
+                                          int threads, size_t capacity,
+                                          size_t *ids, int *shifts,
+                                          int *results,
+                                          size_t *count) PW85_NOEXCEPT;
+
+/**
+ * @brief Every pair of stored ellipsoids, and image, with μ² < t, each
+ *        once.
+ *
+ * A pair (i, j, n) as in pw85_index_overlapping_pairs(), with μ² and λ of
+ * pw85_contact_function(r, q_i, q_j). With t > 1 an ellipsoid may be
+ * within reach of its own image: such a pair is (i, i, n), reported once,
+ * with n lexicographically positive. Sorted by i, then j, then n; the same
+ * output, bit for bit, for any number of threads.
+ * @param[in] index the index.
+ * @param[in] t the threshold (> 0 and finite).
+ * @param[in] threads the number of threads (≥ 1).
+ * @param[in] capacity the number of pairs the arrays below can hold.
+ * @param[out] ids i and j of each pair (2·capacity values).
+ * @param[out] shifts n (3·capacity ints).
+ * @param[out] mu2_lambda μ² and λ (2·capacity doubles).
+ * @param[out] count the number of pairs (which may exceed capacity).
+ * @return the statuses of pw85_index_overlapping_pairs(); PW85_EDOM if t
+ *         is not finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE also as
+ *         pw85_index_within(). Nothing is written on error.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_pairs_within(pw85_index const *index, double t,
+                                     int threads, size_t capacity,
+                                     size_t *ids, int *shifts,
+                                     double *mu2_lambda,
+                                     size_t *count) PW85_NOEXCEPT;
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* PW85_INDEX_H */

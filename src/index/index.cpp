@@ -1,0 +1,432 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The index's storage and the queries on a candidate (index.hpp).
+#include "index.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "checks.hpp"
+#include "contact.hpp"
+#include "overlap.hpp"
+
+namespace pw85::detail {
+
+void half_widths(double const q[sym], double h[dim]) noexcept {
+  for (int k = 0; k < dim; ++k) h[k] = std::sqrt(q[diag_of[k]]);
+}
+
+Index::Index(double const box[dim]) noexcept : periodic_(box != nullptr) {
+  if (periodic_)
+    for (int k = 0; k < dim; ++k) box_[k] = box[k];
+}
+
+Status Index::check_centre(double const c[dim]) const noexcept {
+  if (!all_finite<dim>(c)) return Status::not_finite;
+  if (periodic_)
+    for (int k = 0; k < dim; ++k)
+      if (!(std::fabs(c[k]) <= max_wraps * box_[k]))
+        return Status::invalid_argument;
+  return Status::success;
+}
+
+Status Index::check_ellipsoid(double const c[dim], double const q[sym]) const
+    noexcept {
+  if (!(all_finite<dim>(c) && all_finite<sym>(q))) return Status::not_finite;
+  if (!is_positive_definite(q)) return Status::not_positive_definite;
+  return check_centre(c);
+}
+
+void Index::make_entry(std::size_t id, double const c[dim],
+                       double const q[sym], Entry *e) const noexcept {
+  for (int k = 0; k < dim; ++k) {
+    e->c[k] = c[k];
+    e->wrap[k] = periodic_
+                     ? static_cast<std::int32_t>(std::floor(c[k] / box_[k]))
+                     : 0;
+  }
+  for (int k = 0; k < sym; ++k) e->q[k] = q[k];
+  half_widths(q, e->h);
+  e->id = static_cast<std::uint32_t>(id);
+}
+
+void Index::init_level(Level *lv, int exponent) const noexcept {
+  lv->exponent = exponent;
+  double const side = std::ldexp(1.0, exponent + hash_cell_octaves);
+  for (int k = 0; k < dim; ++k) {
+    if (periodic_) {
+      double const n = std::min(std::max(std::floor(box_[k] / side), 1.0),
+                                max_span);
+      lv->n[k] = static_cast<std::int64_t>(n);
+      lv->side[k] = box_[k] / n;
+      lv->inv[k] = n / box_[k];
+    } else {
+      lv->n[k] = 0;
+      lv->side[k] = side;
+      lv->inv[k] = std::ldexp(1.0, -exponent - hash_cell_octaves);
+    }
+  }
+}
+
+int Index::level_of(Entry const &e) const noexcept {
+  int exponent = 0;
+  std::frexp(std::max(std::max(e.h[0], e.h[1]), e.h[2]), &exponent);
+  int l = 0;
+  while (l < int(levels_.size()) && levels_[l].exponent != exponent) ++l;
+  return l;
+}
+
+namespace {
+
+// The packed key of cell coordinates u_k in [0, 2²¹).
+std::uint64_t pack(std::uint64_t const u[dim]) noexcept {
+  return (u[0] << 42) | (u[1] << 21) | u[2];
+}
+
+// An open domain's cell coordinates are clamped to [−2²⁰, 2²⁰) (the clamp
+// is monotone: a range of positions maps onto the range of their cells).
+constexpr double open_half = 0x1p20;
+
+double clamp_open(double m) noexcept {
+  return std::min(std::max(m, -open_half), open_half - 1.0);
+}
+
+}  // namespace
+
+std::uint64_t Index::cell_key(Level const &lv, Entry const &e) const
+    noexcept {
+  std::uint64_t u[dim];
+  for (int k = 0; k < dim; ++k) {
+    if (periodic_) {
+      double const w = e.c[k] - e.wrap[k] * box_[k];
+      double const m = std::min(std::max(std::floor(w * lv.inv[k]), 0.0),
+                                double(lv.n[k] - 1));
+      u[k] = static_cast<std::uint64_t>(m);
+    } else {
+      u[k] = static_cast<std::uint64_t>(
+          clamp_open(std::floor(e.c[k] * lv.inv[k])) + open_half);
+    }
+  }
+  return pack(u);
+}
+
+bool Index::reserve_for(Entry const &e) noexcept {
+  int const l = level_of(e);
+  if (l == int(levels_.size())) {
+    int exponent = 0;
+    std::frexp(std::max(std::max(e.h[0], e.h[1]), e.h[2]), &exponent);
+    Level lv;
+    init_level(&lv, exponent);
+    if (!levels_.push_back(static_cast<Level &&>(lv))) return false;
+  }
+  Level &lv = levels_[l];
+  std::uint64_t const key = cell_key(lv, e);
+  std::uint32_t c = lv.map.find(key);
+  if (c == CellMap::absent) {
+    // A new empty cell is a valid state: it is registered at once.
+    Cell cell;
+    if (lv.cells.size() >= no_id || !lv.map.reserve_one() ||
+        !lv.cells.grow_for(1) || !cell.grow_for(1))
+      return false;
+    c = static_cast<std::uint32_t>(lv.cells.size());
+    lv.cells.push_back_reserved(static_cast<Cell &&>(cell));
+    lv.map.insert_reserved(key, c);
+  }
+  return lv.cells[c].grow_for(1);
+}
+
+void Index::insert_entry(Entry const &e) noexcept {
+  int const l = level_of(e);
+  Level &lv = levels_[l];
+  std::uint32_t const c = lv.map.find(cell_key(lv, e));
+  Cell &cell = lv.cells[c];
+  Entry copy = e;
+  cell.push_back_reserved(static_cast<Entry &&>(copy));
+  slots_[e.id] = Slot{l, c, static_cast<std::uint32_t>(cell.size() - 1)};
+  ++lv.count;
+  for (int k = 0; k < dim; ++k) {
+    lv.hmax[k] = std::max(lv.hmax[k], e.h[k]);
+    cmax_ = std::max(cmax_, std::fabs(e.c[k]));
+  }
+  ++count_;
+}
+
+void Index::erase(std::size_t id) noexcept {
+  Slot const s = slots_[id];
+  Level &lv = levels_[s.level];
+  Cell &cell = lv.cells[s.cell];
+  if (s.index + 1 != cell.size()) {  // the last entry takes its place
+    cell[s.index] = cell.back();
+    slots_[cell[s.index].id].index = s.index;
+  }
+  cell.pop_back();
+  slots_[id] = Slot{};
+  if (--lv.count == 0)
+    for (int k = 0; k < dim; ++k) lv.hmax[k] = 0.0;
+  --count_;
+}
+
+Status Index::insert(std::size_t id, double const c[dim],
+                     double const q[sym]) noexcept {
+  Status const s = check_ellipsoid(c, q);
+  if (s != Status::success) return s;
+  if (id > max_id || (id < slots_.size() && slots_[id].level >= 0))
+    return Status::invalid_argument;
+  Entry e;
+  make_entry(id, c, q, &e);
+  if (periodic_)
+    for (int k = 0; k < dim; ++k)
+      if (!(2.0 * e.h[k] * (1.0 + broad_margin) < box_[k]))
+        return Status::invalid_argument;
+  if ((id >= slots_.size() && !slots_.resize(id + 1)) || !reserve_for(e))
+    return Status::no_memory;
+  insert_entry(e);
+  return Status::success;
+}
+
+Status Index::insert_many(std::size_t n, std::size_t const *ids,
+                          double const *c, double const *q) noexcept {
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < n; ++i) top = std::max(top, ids[i]);
+  if (n > 0 && top <= max_id && top >= slots_.size() &&
+      !slots_.resize(top + 1))
+    return Status::no_memory;
+  // One by one; on error, the ones inserted are removed in reverse order,
+  // each the last entry of its cell then, which restores every cell as it
+  // was.
+  for (std::size_t i = 0; i < n; ++i) {
+    Status const s = insert(ids[i], c + dim * i, q + sym * i);
+    if (s != Status::success) {
+      while (i-- > 0) erase(ids[i]);
+      return s;
+    }
+  }
+  return Status::success;
+}
+
+Status Index::update(std::size_t id, double const c[dim],
+                     double const q[sym]) noexcept {
+  Status const s = check_ellipsoid(c, q);
+  if (s != Status::success) return s;
+  if (id >= slots_.size() || slots_[id].level < 0)
+    return Status::invalid_argument;
+  Entry e;
+  make_entry(id, c, q, &e);
+  if (periodic_)
+    for (int k = 0; k < dim; ++k)
+      if (!(2.0 * e.h[k] * (1.0 + broad_margin) < box_[k]))
+        return Status::invalid_argument;
+  if (!reserve_for(e)) return Status::no_memory;
+  erase(id);
+  insert_entry(e);
+  return Status::success;
+}
+
+Status Index::remove(std::size_t id) noexcept {
+  if (id >= slots_.size() || slots_[id].level < 0)
+    return Status::invalid_argument;
+  erase(id);
+  return Status::success;
+}
+
+Status Index::get(std::size_t id, double c[dim], double q[sym]) const
+    noexcept {
+  if (id >= slots_.size() || slots_[id].level < 0)
+    return Status::invalid_argument;
+  Slot const s = slots_[id];
+  Entry const &e = levels_[s.level].cells[s.cell][s.index];
+  for (int k = 0; k < dim; ++k) c[k] = e.c[k];
+  for (int k = 0; k < sym; ++k) q[k] = e.q[k];
+  return Status::success;
+}
+
+// ---- queries on a candidate -------------------------------------------
+
+template <typename F>
+Status Index::visit_level(Level const &lv, double const c[dim],
+                          double const q[sym], double const h[dim],
+                          double sqrt_t,
+                          std::uint32_t exclude, bool *go_on, F &f) const
+    noexcept {
+  double reach[dim], lo[dim], hi[dim];
+  double cells = 1.0;
+  for (int k = 0; k < dim; ++k) {
+    reach[k] = sqrt_t * (h[k] + lv.hmax[k]) * (1.0 + broad_margin);
+    double const slack = cell_slack(cmax_, c[k], reach[k], box_[k]);
+    lo[k] = std::floor((c[k] - reach[k] - slack) * lv.inv[k]);
+    hi[k] = std::floor((c[k] + reach[k] + slack) * lv.inv[k]);
+    if (!periodic_) {
+      lo[k] = clamp_open(lo[k]);
+      hi[k] = clamp_open(hi[k]);
+    }
+    cells *= hi[k] - lo[k] + 1.0;
+  }
+  // The exact test of one image; false stops the visit.
+  auto test = [&](Entry const &e, std::int32_t const shift[dim]) {
+    double r[dim];
+    for (int k = 0; k < dim; ++k) {
+      r[k] = (e.c[k] + shift[k] * box_[k]) - c[k];
+      if (!(std::fabs(r[k]) <= sqrt_t * (h[k] + e.h[k]) * (1.0 + broad_margin)))
+        return true;
+    }
+    if (separated_along_r(r, q, h, e.q, e.h, sqrt_t)) return true;
+    return f(e, shift, r);
+  };
+
+  if (cells > 2.0 * double(lv.cells.size()) + 8.0) {
+    // Wider than the level: every entry, with the shifts in reach.
+    for (std::size_t ci = 0; ci < lv.cells.size(); ++ci) {
+      Cell const &cell = lv.cells[ci];
+      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+        Entry const &e = cell[ei];
+        if (e.id == exclude) continue;
+        std::int64_t nlo[dim] = {0, 0, 0}, nhi[dim] = {0, 0, 0};
+        if (periodic_) {
+          for (int k = 0; k < dim; ++k) {
+            double const slack = cell_slack(cmax_, c[k], reach[k], box_[k]);
+            double const a = std::floor((c[k] - reach[k] - slack - e.c[k]) / box_[k]);
+            double const b = std::floor((c[k] + reach[k] + slack - e.c[k]) / box_[k]) + 1.0;
+            if (b - a + 1.0 > max_span) return Status::out_of_range;
+            nlo[k] = static_cast<std::int64_t>(a);
+            nhi[k] = static_cast<std::int64_t>(b);
+          }
+        }
+        std::int32_t shift[dim];
+        for (std::int64_t a = nlo[0]; a <= nhi[0]; ++a)
+          for (std::int64_t b = nlo[1]; b <= nhi[1]; ++b)
+            for (std::int64_t d = nlo[2]; d <= nhi[2]; ++d) {
+              shift[0] = std::int32_t(a);
+              shift[1] = std::int32_t(b);
+              shift[2] = std::int32_t(d);
+              if (!test(e, shift)) {
+                *go_on = false;
+                return Status::success;
+              }
+            }
+      }
+    }
+    return Status::success;
+  }
+
+  std::int64_t m[dim];
+  std::uint64_t u[dim];
+  std::int32_t shift[dim];
+  for (m[0] = std::int64_t(lo[0]); m[0] <= std::int64_t(hi[0]); ++m[0])
+    for (m[1] = std::int64_t(lo[1]); m[1] <= std::int64_t(hi[1]); ++m[1])
+      for (m[2] = std::int64_t(lo[2]); m[2] <= std::int64_t(hi[2]); ++m[2]) {
+        std::int64_t copy[dim] = {0, 0, 0};
+        for (int k = 0; k < dim; ++k) {
+          if (periodic_) {
+            copy[k] = floor_div(m[k], lv.n[k]);
+            u[k] = static_cast<std::uint64_t>(m[k] - copy[k] * lv.n[k]);
+          } else {
+            u[k] = static_cast<std::uint64_t>(m[k] + std::int64_t(open_half));
+          }
+        }
+        std::uint32_t const ci = lv.map.find(pack(u));
+        if (ci == CellMap::absent) continue;
+        Cell const &cell = lv.cells[ci];
+        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+          Entry const &e = cell[ei];
+          if (e.id == exclude) continue;
+          for (int k = 0; k < dim; ++k)
+            shift[k] = static_cast<std::int32_t>(copy[k] - e.wrap[k]);
+          if (!test(e, shift)) {
+            *go_on = false;
+            return Status::success;
+          }
+        }
+      }
+  return Status::success;
+}
+
+template <typename F>
+Status Index::visit(double const c[dim], double const q[sym],
+                    double const h[dim], double sqrt_t,
+                    std::uint32_t exclude, F &&f) const noexcept {
+  bool go_on = true;
+  for (std::size_t l = 0; l < levels_.size() && go_on; ++l) {
+    if (levels_[l].count == 0) continue;
+    Status const s =
+        visit_level(levels_[l], c, q, h, sqrt_t, exclude, &go_on, f);
+    if (s != Status::success) return s;
+  }
+  return Status::success;
+}
+
+namespace {
+
+std::uint32_t to_exclude(std::size_t id) noexcept {
+  return id > max_id ? no_id : static_cast<std::uint32_t>(id);
+}
+
+}  // namespace
+
+Status Index::overlap_any(double const c[dim], double const q[sym],
+                          std::size_t exclude, int *result,
+                          std::size_t *id) const noexcept {
+  Status s = check_ellipsoid(c, q);
+  if (s != Status::success) return s;
+  double h[dim];
+  half_widths(q, h);
+  Status failed = Status::success;
+  int best = 1;
+  std::uint32_t best_id = no_id;
+  s = visit(c, q, h, 1.0, to_exclude(exclude),
+            [&](Entry const &e, std::int32_t const *, double const r[dim]) {
+              int res = 1;
+              failed = overlap(r, q, e.q, &res);
+              if (failed != Status::success) return false;
+              if (res < best) {
+                best = res;
+                best_id = e.id;
+              }
+              return best > -1;
+            });
+  if (s == Status::success) s = failed;
+  if (s != Status::success) return s;
+  *result = best;
+  *id = best_id == no_id ? std::size_t(-1) : std::size_t(best_id);
+  return Status::success;
+}
+
+Status Index::within(double const c[dim], double const q[sym], double t,
+                     std::size_t exclude, Buffer<Hit> *hits) const noexcept {
+  Status s = check_ellipsoid(c, q);
+  if (s != Status::success) return s;
+  if (!std::isfinite(t)) return Status::not_finite;
+  if (!(t > 0.0)) return Status::invalid_argument;
+  double h[dim];
+  half_widths(q, h);
+  Status failed = Status::success;
+  s = visit(c, q, h, std::sqrt(t), to_exclude(exclude),
+            [&](Entry const &e, std::int32_t const *shift,
+                double const r[dim]) {
+              double out[2] = {NAN, NAN};
+              Status const st = contact_function(r, q, e.q, out);
+              if (st == Status::out_of_range && out[0] == HUGE_VAL)
+                return true;  // μ² overflows: not within t
+              if (st != Status::success) {
+                failed = st;
+                return false;
+              }
+              if (!(out[0] < t)) return true;
+              Hit hit{e.id, {shift[0], shift[1], shift[2]}, 0, out[0], out[1]};
+              if (!hits->push_back(hit)) {
+                failed = Status::no_memory;
+                return false;
+              }
+              return true;
+            });
+  if (s == Status::success) s = failed;
+  if (s != Status::success) return s;
+  std::sort(hits->data(), hits->data() + hits->size(),
+            [](Hit const &a, Hit const &b) {
+              if (a.id != b.id) return a.id < b.id;
+              for (int k = 0; k < dim; ++k)
+                if (a.shift[k] != b.shift[k]) return a.shift[k] < b.shift[k];
+              return false;
+            });
+  return Status::success;
+}
+
+}  // namespace pw85::detail

@@ -1,0 +1,438 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The all-pairs queries (index.hpp): a dense snapshot of the grid, the
+// search from every ellipsoid, on `threads` OpenMP threads, and a merge
+// into the order (i, j, shift), which makes the output independent of the
+// number of threads and of the schedule.
+//
+// Snapshot: per level e, a dense grid (cells of side ≥ 2^e, coarsened until
+// there are at most 2·count + 64 cells) whose entries are sorted by cell
+// (a counting sort), so that the entries of a row of cells along axis 2
+// are contiguous, and neighbours in space are neighbours in memory. The
+// hot fields (centre, half-widths, wrap, id) and the forms are separate
+// arrays.
+//
+// Each pair is found from both ellipsoids and kept from the one with the
+// smaller id (from its own images, i = j, with a positive shift), so that
+// the work of a thread depends on nothing but its ellipsoids.
+#include <algorithm>
+#include <cmath>
+
+#include "contact.hpp"
+#include "index.hpp"
+#include "overlap.hpp"
+
+#if defined(PW85_OPENMP)
+#include <omp.h>
+#endif
+
+namespace pw85::detail {
+
+namespace {
+
+struct Hot {
+  double c[dim];
+  double h[dim];
+  std::int32_t wrap[dim];
+  std::uint32_t id;
+};
+
+struct Form {
+  double q[sym];
+};
+
+struct Grid {
+  double origin[dim];  // open: the least centre; periodic: 0
+  double inv[dim];     // 1/side of a cell
+  std::int64_t n[dim];
+  double hmax[dim];
+  std::size_t first;    // the level's entries: [first, first + count)
+  std::size_t count;
+  std::size_t cells;    // n0·n1·n2
+  Buffer<std::uint32_t> start;  // cells + 1 offsets, relative to first
+};
+
+struct Snapshot {
+  Buffer<Grid> grids;
+  Buffer<Hot> hot;
+  Buffer<Form> forms;
+};
+
+std::int64_t cell_along(Grid const &g, Hot const &e, double const box[dim],
+                        bool periodic, int k) noexcept {
+  double const x = periodic ? e.c[k] - e.wrap[k] * box[k] : e.c[k] - g.origin[k];
+  double const m = std::floor(x * g.inv[k]);
+  return static_cast<std::int64_t>(
+      std::min(std::max(m, 0.0), double(g.n[k] - 1)));
+}
+
+std::size_t cell_of(Grid const &g, Hot const &e, double const box[dim],
+                    bool periodic) noexcept {
+  std::int64_t m[dim];
+  for (int k = 0; k < dim; ++k) m[k] = cell_along(g, e, box, periodic, k);
+  return static_cast<std::size_t>((m[0] * g.n[1] + m[1]) * g.n[2] + m[2]);
+}
+
+// The snapshot of every non-empty level; false when an allocation fails.
+bool take_snapshot(Index const &index, Snapshot *s) noexcept {
+  Buffer<Level> const &levels = index.levels();
+  double const *box = index.box();
+  bool const periodic = index.periodic();
+  if (!s->hot.reserve(index.count()) || !s->forms.reserve(index.count()) ||
+      !s->grids.reserve(levels.size()))
+    return false;
+  Buffer<Hot> hot;
+  Buffer<Form> forms;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    Level const &lv = levels[l];
+    if (lv.count == 0) continue;
+    Grid g;
+    g.first = s->hot.size();
+    g.count = lv.count;
+    hot.clear();
+    forms.clear();
+    if (!hot.reserve(lv.count) || !forms.reserve(lv.count)) return false;
+    double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (std::size_t ci = 0; ci < lv.cells.size(); ++ci)
+      for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei) {
+        Entry const &e = lv.cells[ci][ei];
+        Hot x;
+        Form f;
+        for (int k = 0; k < dim; ++k) {
+          x.c[k] = e.c[k];
+          x.h[k] = e.h[k];
+          x.wrap[k] = e.wrap[k];
+          lo[k] = std::min(lo[k], e.c[k]);
+          hi[k] = std::max(hi[k], e.c[k]);
+        }
+        x.id = e.id;
+        for (int k = 0; k < sym; ++k) f.q[k] = e.q[k];
+        hot.push_back_reserved(static_cast<Hot &&>(x));
+        forms.push_back_reserved(static_cast<Form &&>(f));
+      }
+    double cells = 1.0;
+    for (int k = 0; k < dim; ++k) {
+      g.hmax[k] = lv.hmax[k];
+      double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
+      if (periodic) {
+        g.origin[k] = 0.0;
+        g.n[k] = static_cast<std::int64_t>(std::min(
+            std::max(std::floor(box[k] / side), 1.0), max_span));
+        g.inv[k] = double(g.n[k]) / box[k];
+      } else {
+        g.origin[k] = lo[k];
+        g.inv[k] = 1.0 / side;
+        g.n[k] = static_cast<std::int64_t>(std::min(
+            std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
+      }
+      cells *= double(g.n[k]);
+    }
+    // Coarsen the widest axis until the grid is no larger than its entries.
+    double const most = 2.0 * double(lv.count) + 64.0;
+    while (cells > most) {
+      int k = 0;
+      for (int a = 1; a < dim; ++a)
+        if (g.n[a] > g.n[k]) k = a;
+      cells /= double(g.n[k]);
+      g.n[k] = (g.n[k] + 1) / 2;
+      cells *= double(g.n[k]);
+      g.inv[k] = periodic ? double(g.n[k]) / box[k] : 0.5 * g.inv[k];
+    }
+    g.cells = static_cast<std::size_t>(cells);
+    if (!g.start.resize(g.cells + 1)) return false;
+    // Counting sort by cell.
+    Buffer<std::uint32_t> where;
+    if (!where.resize(lv.count)) return false;
+    for (std::size_t i = 0; i < lv.count; ++i) {
+      std::size_t const c = cell_of(g, hot[i], box, periodic);
+      where[i] = static_cast<std::uint32_t>(c);
+      ++g.start[c + 1];
+    }
+    for (std::size_t c = 0; c < g.cells; ++c) g.start[c + 1] += g.start[c];
+    Buffer<std::uint32_t> next;
+    if (!next.resize(g.cells)) return false;
+    for (std::size_t c = 0; c < g.cells; ++c) next[c] = g.start[c];
+    if (!s->hot.resize(g.first + lv.count) ||
+        !s->forms.resize(g.first + lv.count))
+      return false;
+    for (std::size_t i = 0; i < lv.count; ++i) {
+      std::size_t const to = g.first + next[where[i]]++;
+      s->hot[to] = hot[i];
+      s->forms[to] = forms[i];
+    }
+    s->grids.push_back_reserved(static_cast<Grid &&>(g));
+  }
+  return true;
+}
+
+bool shift_positive(std::int32_t const n[dim]) noexcept {
+  for (int k = 0; k < dim; ++k)
+    if (n[k] != 0) return n[k] > 0;
+  return false;
+}
+
+bool pair_less(PairHit const &a, PairHit const &b) noexcept {
+  if (a.i != b.i) return a.i < b.i;
+  if (a.j != b.j) return a.j < b.j;
+  for (int k = 0; k < dim; ++k)
+    if (a.shift[k] != b.shift[k]) return a.shift[k] < b.shift[k];
+  return false;
+}
+
+// One thread's share: its pairs, its count of broad-phase candidates, and
+// the least pair (in the output order) on which the narrow phase failed.
+struct Share {
+  Buffer<PairHit> pairs;
+  std::size_t candidates = 0;
+  Status status = Status::success;
+  PairHit failed_at{};
+};
+
+class Search {
+ public:
+  Search(Index const &index, Snapshot const &s, bool within, double t)
+      : periodic_(index.periodic()),
+        box_(index.box()),
+        cmax_(index.coordinate_bound()),
+        s_(s),
+        within_(within),
+        t_(t),
+        sqrt_t_(std::sqrt(t)) {}
+
+  // The pairs found from entry a (an index into the snapshot).
+  void from(std::size_t a, Share *share) const noexcept {
+    for (std::size_t g = 0; g < s_.grids.size(); ++g) {
+      if (!grid(s_.grids[g], a, share)) return;
+    }
+  }
+
+ private:
+  void fail(Share *share, Status status, PairHit const &at) const noexcept {
+    if (share->status == Status::success ||
+        (share->status != Status::no_memory && pair_less(at, share->failed_at))) {
+      share->status = status;
+      share->failed_at = at;
+    }
+  }
+
+  // Entry b's image `shift` against a; false stops (no memory).
+  bool test(std::size_t a, std::size_t b, std::int32_t const shift[dim],
+            Share *share) const noexcept {
+    Hot const &x = s_.hot[a];
+    Hot const &y = s_.hot[b];
+    double r[dim];
+    for (int k = 0; k < dim; ++k) {
+      r[k] = (y.c[k] + shift[k] * box_[k]) - x.c[k];
+      if (!(std::fabs(r[k]) <=
+            sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin)))
+        return true;
+    }
+    double const *q1 = s_.forms[a].q;
+    double const *q2 = s_.forms[b].q;
+    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_)) return true;
+    ++share->candidates;
+    PairHit hit{x.id, y.id, {shift[0], shift[1], shift[2]}, 0, 0.0, 0.0};
+    if (within_) {
+      double out[2] = {NAN, NAN};
+      Status const st = contact_function(r, q1, q2, out);
+      if (st == Status::out_of_range && out[0] == HUGE_VAL) return true;
+      if (st != Status::success) {
+        fail(share, st, hit);
+        return true;
+      }
+      if (!(out[0] < t_)) return true;
+      hit.mu2 = out[0];
+      hit.lambda = out[1];
+    } else {
+      int res = 1;
+      Status const st = overlap(r, q1, q2, &res);
+      if (st != Status::success) {
+        fail(share, st, hit);
+        return true;
+      }
+      if (res > 0) return true;
+      hit.result = res;
+    }
+    if (!share->pairs.push_back(hit)) {
+      share->status = Status::no_memory;
+      return false;
+    }
+    return true;
+  }
+
+  // Keeps each pair once: b's id above a's, or a's own image with a
+  // positive shift.
+  bool keep(std::size_t a, std::size_t b,
+            std::int32_t const shift[dim]) const noexcept {
+    std::uint32_t const i = s_.hot[a].id, j = s_.hot[b].id;
+    return j > i || (j == i && shift_positive(shift));
+  }
+
+  bool grid(Grid const &g, std::size_t a, Share *share) const noexcept {
+    Hot const &x = s_.hot[a];
+    double reach[dim], lo[dim], hi[dim];
+    double cells = 1.0;
+    for (int k = 0; k < dim; ++k) {
+      reach[k] = sqrt_t_ * (x.h[k] + g.hmax[k]) * (1.0 + broad_margin);
+      double const slack = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
+      double const c = x.c[k] - g.origin[k];
+      lo[k] = std::floor((c - reach[k] - slack) * g.inv[k]);
+      hi[k] = std::floor((c + reach[k] + slack) * g.inv[k]);
+      if (!periodic_) {  // clamped as the entries' cells are (monotone)
+        double const last = double(g.n[k] - 1);
+        lo[k] = std::min(std::max(lo[k], 0.0), last);
+        hi[k] = std::min(std::max(hi[k], 0.0), last);
+      }
+      cells *= hi[k] - lo[k] + 1.0;
+    }
+    std::int32_t shift[dim] = {0, 0, 0};
+    if (cells > 2.0 * double(g.cells) + 8.0) {
+      // Wider than the grid: every entry, with the shifts in reach.
+      for (std::size_t b = g.first; b < g.first + g.count; ++b) {
+        Hot const &y = s_.hot[b];
+        if (y.id < x.id) continue;
+        std::int64_t nlo[dim] = {0, 0, 0}, nhi[dim] = {0, 0, 0};
+        if (periodic_) {
+          for (int k = 0; k < dim; ++k) {
+            double const slack = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
+            double const u = std::floor((x.c[k] - reach[k] - slack - y.c[k]) / box_[k]);
+            double const v = std::floor((x.c[k] + reach[k] + slack - y.c[k]) / box_[k]) + 1.0;
+            if (v - u + 1.0 > max_span) {
+              fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+              return true;
+            }
+            nlo[k] = static_cast<std::int64_t>(u);
+            nhi[k] = static_cast<std::int64_t>(v);
+          }
+        }
+        for (std::int64_t u = nlo[0]; u <= nhi[0]; ++u)
+          for (std::int64_t v = nlo[1]; v <= nhi[1]; ++v)
+            for (std::int64_t w = nlo[2]; w <= nhi[2]; ++w) {
+              shift[0] = std::int32_t(u);
+              shift[1] = std::int32_t(v);
+              shift[2] = std::int32_t(w);
+              if (keep(a, b, shift) && !test(a, b, shift, share)) return false;
+            }
+      }
+      return true;
+    }
+    std::int64_t const lo2 = std::int64_t(lo[2]), hi2 = std::int64_t(hi[2]);
+    for (std::int64_t m0 = std::int64_t(lo[0]); m0 <= std::int64_t(hi[0]); ++m0) {
+      std::int64_t const p0 = periodic_ ? floor_div(m0, g.n[0]) : 0;
+      std::int64_t const u0 = m0 - p0 * g.n[0];
+      for (std::int64_t m1 = std::int64_t(lo[1]); m1 <= std::int64_t(hi[1]); ++m1) {
+        std::int64_t const p1 = periodic_ ? floor_div(m1, g.n[1]) : 0;
+        std::int64_t const u1 = m1 - p1 * g.n[1];
+        std::size_t const row = static_cast<std::size_t>((u0 * g.n[1] + u1) * g.n[2]);
+        // Along axis 2, one contiguous run of entries per copy of the box.
+        std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[2]) : 0;
+        std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[2]) : 0;
+        for (std::int64_t p2 = plo; p2 <= phi; ++p2) {
+          std::int64_t const z0 = std::max(lo2, p2 * g.n[2]) - p2 * g.n[2];
+          std::int64_t const z1 = std::min(hi2, p2 * g.n[2] + g.n[2] - 1) - p2 * g.n[2];
+          std::size_t const b0 = g.first + g.start[row + std::size_t(z0)];
+          std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
+          for (std::size_t b = b0; b < b1; ++b) {
+            Hot const &y = s_.hot[b];
+            if (y.id < x.id) continue;
+            shift[0] = std::int32_t(p0 - y.wrap[0]);
+            shift[1] = std::int32_t(p1 - y.wrap[1]);
+            shift[2] = std::int32_t(p2 - y.wrap[2]);
+            if (y.id == x.id && !shift_positive(shift)) continue;
+            if (!test(a, b, shift, share)) return false;
+          }
+        }
+      }
+    }
+    return true;
+  }
+
+  bool periodic_;
+  double const *box_;
+  double cmax_;
+  Snapshot const &s_;
+  bool within_;
+  double t_, sqrt_t_;
+};
+
+}  // namespace
+
+Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
+                    std::size_t *candidates) const noexcept {
+  if (within) {
+    if (!std::isfinite(t)) return Status::not_finite;
+    if (!(t > 0.0)) return Status::invalid_argument;
+  }
+  if (threads < 1) return Status::invalid_argument;
+#if !defined(PW85_OPENMP)
+  threads = 1;
+#endif
+  Snapshot snap;
+  if (!take_snapshot(*this, &snap)) return Status::no_memory;
+  Buffer<Share> shares;
+  if (!shares.resize(std::size_t(threads))) return Status::no_memory;
+  Search const search(*this, snap, within, within ? t : 1.0);
+  std::size_t const n = snap.hot.size();
+  constexpr std::size_t chunk = 256;
+  std::size_t const chunks = (n + chunk - 1) / chunk;
+  auto run = [&](std::size_t k, Share *share) {
+    if (share->status == Status::no_memory) return;
+    std::size_t const end = std::min(n, (k + 1) * chunk);
+    for (std::size_t a = k * chunk; a < end; ++a) search.from(a, share);
+  };
+  if (threads == 1) {
+    for (std::size_t k = 0; k < chunks; ++k) run(k, &shares[0]);
+  } else {
+#if defined(PW85_OPENMP)
+    long long const nchunks = static_cast<long long>(chunks);
+#pragma omp parallel num_threads(threads)
+    {
+      Share *share = &shares[std::size_t(omp_get_thread_num())];
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nchunks; ++k) run(std::size_t(k), share);
+    }
+#endif
+  }
+
+  // The least failure in the output order, whatever the schedule.
+  Status status = Status::success;
+  PairHit at{};
+  std::size_t total = 0, found = 0;
+  for (std::size_t k = 0; k < shares.size(); ++k) {
+    Share const &sh = shares[k];
+    total += sh.pairs.size();
+    found += sh.candidates;
+    if (sh.status == Status::no_memory) return Status::no_memory;
+    if (sh.status != Status::success &&
+        (status == Status::success || pair_less(sh.failed_at, at))) {
+      status = sh.status;
+      at = sh.failed_at;
+    }
+  }
+  if (status != Status::success) return status;
+
+  // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
+  Buffer<std::size_t> first;
+  if (!first.resize(id_bound() + 1) || !out->resize(total))
+    return Status::no_memory;
+  for (std::size_t k = 0; k < shares.size(); ++k)
+    for (std::size_t p = 0; p < shares[k].pairs.size(); ++p)
+      ++first[shares[k].pairs[p].i + 1];
+  for (std::size_t i = 0; i < id_bound(); ++i) first[i + 1] += first[i];
+  for (std::size_t k = 0; k < shares.size(); ++k)
+    for (std::size_t p = 0; p < shares[k].pairs.size(); ++p) {
+      PairHit const &hit = shares[k].pairs[p];
+      (*out)[first[hit.i]++] = hit;
+    }
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i < id_bound(); ++i) {
+    std::size_t const end = first[i];  // now the end of i's pairs
+    if (end - begin > 1)
+      std::sort(out->data() + begin, out->data() + end, pair_less);
+    begin = end;
+  }
+  if (candidates != nullptr) *candidates = found;
+  return Status::success;
+}
+
+}  // namespace pw85::detail

@@ -1,0 +1,356 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Benchmark (meson test --benchmark) of the spatial index (pw85_index.h):
+// all overlapping pairs of N triaxial ellipsoids (semi-axes 1, 0.5, 0.2,
+// random orientations, uniform random centres) in a periodic cube, for
+// N = 1e4, 1e5, 1e6 at packing fractions 0.2 and 0.4, on 1 and 2 threads;
+// polydisperse (radius ratio 10) and needle (aspect ratio 100) sets; random
+// sequential addition of 1e5 ellipsoids to a packing fraction of 0.3; and,
+// in the same run, the yardsticks: the O(N²) brute force over all pairs
+// (N = 1e4, with its agreement), and FCL's dynamic AABB tree with its
+// default narrow phase in an open box (N = 1e5; when built with
+// libfcl-dev), with the pairs each misses. Ratios matter, not absolute
+// times: the machines are shared.
+//
+// Usage: bench-index [quick]  ("quick": the largest N left out).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <set>
+#include <tuple>
+#include <vector>
+
+#include "index/index.hpp"
+#include "pw85.h"
+#include "pw85_index.h"
+
+#if defined(PW85_BENCH_FCL)
+#include <fcl/fcl.h>
+#endif
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+struct Set {
+  std::vector<double> c, q, rot, axes;  // 3, 6, 9, 3 per ellipsoid
+  double side = 0.;
+  std::size_t size() const { return axes.size() / 3; }
+};
+
+// A random rotation R (row by row) from a uniform unit quaternion.
+void random_rotation(std::mt19937_64 &rng, double r[9]) {
+  std::normal_distribution<double> g;
+  double w = g(rng), x = g(rng), y = g(rng), z = g(rng);
+  double const n = std::sqrt(w * w + x * x + y * y + z * z);
+  w /= n, x /= n, y /= n, z /= n;
+  double const m[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
+                       2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                       2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)};
+  std::memcpy(r, m, sizeof m);
+}
+
+// Q = R·diag(a²)·Rᵀ, upper triangle row by row.
+void form(double const a[3], double const r[9], double q[6]) {
+  int k = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j, ++k)
+      q[k] = r[3 * i] * a[0] * a[0] * r[3 * j] + r[3 * i + 1] * a[1] * a[1] * r[3 * j + 1] +
+             r[3 * i + 2] * a[2] * a[2] * r[3 * j + 2];
+}
+
+enum class Shapes { triaxial, poly, needles };
+
+void random_shape(std::mt19937_64 &rng, Shapes s, double a[3]) {
+  std::uniform_real_distribution<double> u(0., 1.);
+  double scale = 1.;
+  switch (s) {
+    case Shapes::triaxial: a[0] = 1., a[1] = .5, a[2] = .2; return;
+    case Shapes::poly:  // radius ratio 10, same shape
+      scale = std::pow(10., u(rng));
+      a[0] = scale, a[1] = .5 * scale, a[2] = .2 * scale;
+      return;
+    case Shapes::needles: a[0] = 1., a[1] = .01, a[2] = .01; return;
+  }
+}
+
+Set make_set(std::size_t n, double fraction, Shapes shapes, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  Set s;
+  s.c.resize(3 * n), s.q.resize(6 * n), s.rot.resize(9 * n), s.axes.resize(3 * n);
+  double volume = 0.;
+  for (std::size_t i = 0; i < n; ++i) {
+    random_shape(rng, shapes, &s.axes[3 * i]);
+    random_rotation(rng, &s.rot[9 * i]);
+    form(&s.axes[3 * i], &s.rot[9 * i], &s.q[6 * i]);
+    volume += 4. / 3. * M_PI * s.axes[3 * i] * s.axes[3 * i + 1] * s.axes[3 * i + 2];
+  }
+  s.side = std::cbrt(volume / fraction);
+  std::uniform_real_distribution<double> u(0., s.side);
+  for (double &x : s.c) x = u(rng);
+  return s;
+}
+
+using PairKey = std::tuple<std::size_t, std::size_t>;
+
+struct Run {
+  double seconds;
+  std::size_t pairs, candidates;
+};
+
+// All overlapping pairs through the core (pw85_index_overlapping_pairs
+// without the copy out), best of `reps`.
+Run all_pairs(pw85::detail::Index const &index, int threads, int reps,
+              std::set<PairKey> *keys = nullptr) {
+  Run best{1e300, 0, 0};
+  for (int r = 0; r < reps; ++r) {
+    pw85::detail::Buffer<pw85::detail::PairHit> out;
+    auto const t0 = Clock::now();
+    pw85::detail::Status const s = index.pairs(false, 1., threads, &out, &best.candidates);
+    double const t = seconds_since(t0);
+    if (s != pw85::detail::Status::success) {
+      std::printf("pairs failed\n");
+      std::exit(1);
+    }
+    best.seconds = std::min(best.seconds, t);
+    best.pairs = out.size();
+    if (keys != nullptr && r == 0)
+      for (std::size_t k = 0; k < out.size(); ++k) keys->insert({out[k].i, out[k].j});
+  }
+  return best;
+}
+
+void fill(pw85::detail::Index *index, Set const &s) {
+  std::vector<std::size_t> ids(s.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  if (index->insert_many(ids.size(), ids.data(), s.c.data(), s.q.data()) !=
+      pw85::detail::Status::success) {
+    std::printf("insert failed\n");
+    std::exit(1);
+  }
+}
+
+void row(char const *what, std::size_t n, Run const &one, Run const &two) {
+  std::printf("  %-34s %8zu %9.3f %9.3f %9.0f %6.2f %8.2f %9.2f\n", what, n,
+              one.seconds, two.seconds, 1e9 * two.seconds / double(n),
+              one.seconds / two.seconds, double(one.candidates) / double(n),
+              double(one.pairs) / double(n));
+}
+
+// The O(N²) brute force: pw85_overlap on every pair, minimum image (exact
+// here: the box is wider than 4 semi-axes).
+double brute_force(Set const &s, std::set<PairKey> *keys) {
+  auto const t0 = Clock::now();
+  std::size_t const n = s.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      double r[3];
+      for (int k = 0; k < 3; ++k) {
+        double d = s.c[3 * j + k] - s.c[3 * i + k];
+        d -= s.side * std::nearbyint(d / s.side);
+        r[k] = d;
+      }
+      int res = 1;
+      pw85_overlap(r, &s.q[6 * i], &s.q[6 * j], &res);
+      if (res <= 0) keys->insert({i, j});
+    }
+  return seconds_since(t0);
+}
+
+#if defined(PW85_BENCH_FCL)
+// FCL 0.7: a dynamic AABB tree over the ellipsoids (semi-axes and rotation
+// given, no eigendecomposition), and fcl::collide on each pair it reports.
+double fcl_pairs(Set const &s, std::set<PairKey> *keys) {
+  using namespace fcl;
+  std::size_t const n = s.size();
+  std::vector<CollisionObjectd *> objects(n);
+  std::vector<std::size_t> ids(n);
+  auto const t0 = Clock::now();
+  for (std::size_t i = 0; i < n; ++i) {
+    ids[i] = i;
+    auto geom = std::make_shared<Ellipsoidd>(s.axes[3 * i], s.axes[3 * i + 1], s.axes[3 * i + 2]);
+    Matrix3d rot;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) rot(a, b) = s.rot[9 * i + 3 * a + b];
+    objects[i] = new CollisionObjectd(geom, rot, Vector3d(s.c[3 * i], s.c[3 * i + 1], s.c[3 * i + 2]));
+    objects[i]->setUserData(&ids[i]);
+  }
+  DynamicAABBTreeCollisionManagerd manager;
+  manager.registerObjects(objects);
+  manager.setup();
+  struct Data {
+    std::set<PairKey> *keys;
+  } data{keys};
+  manager.collide(&data, [](CollisionObjectd *o1, CollisionObjectd *o2, void *p) {
+    CollisionRequestd request;
+    CollisionResultd result;
+    collide(o1, o2, request, result);
+    if (result.isCollision()) {
+      std::size_t a = *static_cast<std::size_t *>(o1->getUserData());
+      std::size_t b = *static_cast<std::size_t *>(o2->getUserData());
+      static_cast<Data *>(p)->keys->insert({std::min(a, b), std::max(a, b)});
+    }
+    return false;
+  });
+  double const t = seconds_since(t0);
+  for (auto *o : objects) delete o;
+  return t;
+}
+#endif
+
+std::size_t missing(std::set<PairKey> const &ref, std::set<PairKey> const &got) {
+  std::size_t m = 0;
+  for (auto const &k : ref) m += got.count(k) == 0;
+  return m;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  if (argc > 2 && std::strcmp(argv[1], "profile") == 0) {
+    // bench-index profile N: the all-pairs query of N ellipsoids at a
+    // packing fraction of 0.4, 1 thread, for a profiler.
+    Set const s = make_set(std::strtoul(argv[2], nullptr, 10), 0.4, Shapes::triaxial, 5);
+    double const box[3] = {s.side, s.side, s.side};
+    pw85::detail::Index index(box);
+    auto const t0 = Clock::now();
+    fill(&index, s);
+    std::printf("fill: %.3f s\n", seconds_since(t0));
+    Run const r = all_pairs(index, 1, 3);
+    std::printf("pairs: %.3f s, %zu candidates, %zu pairs\n", r.seconds, r.candidates, r.pairs);
+    return 0;
+  }
+  bool const quick = argc > 1 && std::strcmp(argv[1], "quick") == 0;
+  bool const rsa_only = argc > 1 && std::strcmp(argv[1], "rsa") == 0;
+  std::printf("pw85 %s index benchmark (OpenMP: %s; ratios are the result, "
+              "times are noisy)\n", pw85_version(), pw85_index_openmp() ? "yes" : "no");
+  std::printf("\nall overlapping pairs, periodic cube (seconds, best of 3; "
+              "ns/ell. on 2 threads; cand.: AABB candidate pairs per "
+              "ellipsoid)\n");
+  std::printf("  %-34s %8s %9s %9s %9s %6s %8s %9s\n", "set", "N", "1 thread",
+              "2 threads", "ns/ell.", "x2thr", "cand.", "pairs");
+  std::vector<std::size_t> sizes = {10000, 100000};
+  if (rsa_only) sizes.clear();
+  if (!quick) sizes.push_back(1000000);
+  double per_ell_small = 0., per_ell_large = 0.;
+  for (double fraction : {0.2, 0.4}) {
+    for (std::size_t n : sizes) {
+      Set const s = make_set(n, fraction, Shapes::triaxial, 7 + unsigned(n));
+      double const box[3] = {s.side, s.side, s.side};
+      pw85::detail::Index index(box);
+      fill(&index, s);
+      int const reps = n >= 1000000 ? 2 : 3;
+      Run const one = all_pairs(index, 1, reps), two = all_pairs(index, 2, reps);
+      char what[64];
+      std::snprintf(what, sizeof what, "1 : 0.5 : 0.2, fraction %.1f", fraction);
+      row(what, n, one, two);
+      if (fraction == 0.4 && n == sizes.front()) per_ell_small = two.seconds / double(n);
+      if (fraction == 0.4 && n == sizes.back()) per_ell_large = two.seconds / double(n);
+    }
+  }
+  if (!rsa_only) {
+  std::printf("  time per ellipsoid, N = %zu over N = %zu (fraction 0.4, 2 threads): %.2f\n",
+              sizes.back(), sizes.front(), per_ell_large / per_ell_small);
+  {
+    Set const s = make_set(100000, 0.3, Shapes::poly, 11);
+    double const box[3] = {s.side, s.side, s.side};
+    pw85::detail::Index index(box);
+    fill(&index, s);
+    row("polydisperse (radii 1 to 10), 0.3", s.size(), all_pairs(index, 1, 3),
+        all_pairs(index, 2, 3));
+    Set const t = make_set(100000, 0.02, Shapes::needles, 13);
+    double const box2[3] = {t.side, t.side, t.side};
+    pw85::detail::Index needles(box2);
+    fill(&needles, t);
+    row("needles 1 : 0.01 : 0.01, 0.02", t.size(), all_pairs(needles, 1, 3),
+        all_pairs(needles, 2, 3));
+  }
+
+  // The brute force, in the same run.
+  {
+    Set const s = make_set(10000, 0.4, Shapes::triaxial, 7 + 10000);
+    double const box[3] = {s.side, s.side, s.side};
+    pw85::detail::Index index(box);
+    fill(&index, s);
+    std::set<PairKey> ref, got;
+    double const t_brute = brute_force(s, &ref);
+    Run const r = all_pairs(index, 1, 3, &got);
+    std::printf("\nbrute force O(N^2), N = 10000, fraction 0.4: %.3f s; index "
+                "(1 thread) %.2e s: %.0fx faster; pairs %zu and %zu, %zu missed, "
+                "%zu extra\n", t_brute, r.seconds, t_brute / r.seconds, ref.size(),
+                got.size(), missing(ref, got), missing(got, ref));
+  }
+
+#if defined(PW85_BENCH_FCL)
+  {
+    Set const s = make_set(100000, 0.4, Shapes::triaxial, 17);
+    pw85::detail::Index index(nullptr);  // FCL has no periodic box
+    fill(&index, s);
+    std::set<PairKey> ours, theirs;
+    Run const r1 = all_pairs(index, 1, 3, &ours);
+    Run const r2 = all_pairs(index, 2, 3);
+    double const t_fcl = fcl_pairs(s, &theirs);
+    std::printf("\nFCL %s dynamic AABB tree + default narrow phase, open box, N = "
+                "100000, fraction 0.4: %.3f s; index %.3f s on 1 thread (%.1fx "
+                "faster), %.3f s on 2 (%.1fx); FCL misses %zu of %zu pairs and "
+                "reports %zu extra\n", FCL_VERSION, t_fcl, r1.seconds,
+                t_fcl / r1.seconds, r2.seconds, t_fcl / r2.seconds,
+                missing(ours, theirs), ours.size(), missing(theirs, ours));
+  }
+#else
+  std::printf("\nFCL: not built (libfcl-dev not found)\n");
+#endif
+  }  // !rsa_only
+
+  // Random sequential addition through the C API, to packing fractions
+  // of 0.2 and 0.25 (this shape saturates near 0.29: 0.3 is out of reach),
+  // at most 100000 failed attempts in a row.
+  for (double const target : {0.2, 0.25}) {
+    std::size_t const n = 100000;
+    double const a[3] = {1., .5, .2};
+    double const volume = 4. / 3. * M_PI * .1;
+    double const side = std::cbrt(n * volume / target);
+    double const box[3] = {side, side, side};
+    pw85_index *index = nullptr;
+    pw85_index_create(box, &index);
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0., side);
+    std::size_t attempts = 0, placed = 0, failures = 0;
+    auto const t0 = Clock::now();
+    while (placed < n && failures < 100000) {
+      double c[3] = {u(rng), u(rng), u(rng)}, r[9], q[6];
+      random_rotation(rng, r);
+      form(a, r, q);
+      ++attempts;
+      int result = 0;
+      std::size_t id = 0;
+      pw85_index_overlap_any(index, c, q, PW85_INDEX_NO_ID, &result, &id);
+      if (result > 0) {
+        pw85_index_insert(index, placed++, c, q);
+        failures = 0;
+      } else {
+        ++failures;
+      }
+    }
+    double const t = seconds_since(t0);
+    std::size_t count = 1;
+    auto const t1 = Clock::now();
+    pw85_index_overlapping_pairs(index, 2, 0, nullptr, nullptr, nullptr, &count);
+    double const t_check = seconds_since(t1);
+    std::printf("\nrandom sequential addition, 1 : 0.5 : 0.2, periodic: %zu "
+                "placed, fraction %.4f (target %.2f): %.3f s, %zu attempts, "
+                "%.0f ns per attempt; all-pairs check (2 threads): %zu "
+                "overlapping pairs (%.3f s)\n", placed,
+                double(placed) * volume / (side * side * side), target, t,
+                attempts, 1e9 * t / double(attempts), count, t_check);
+    pw85_index_destroy(index);
+  }
+  return 0;
+}

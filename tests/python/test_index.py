@@ -1,0 +1,146 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""pypw85.Index against a brute force over pairs and periodic images that
+calls pypw85.overlap and pypw85.contact_function itself."""
+
+import itertools
+
+import numpy as np
+import pytest
+
+import pypw85
+from pypw85.index import NO_ID, OPENMP
+
+
+def random_forms(rng, n, axes=(1.0, 0.5, 0.2)):
+    """n forms R·diag(a²)·Rᵀ of random rotations, (n, 6)."""
+    q = np.empty((n, 6))
+    a2 = np.square(axes)
+    for k in range(n):
+        r, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        m = (r * a2) @ r.T
+        q[k] = m[np.triu_indices(3)]
+    return q
+
+
+def configuration(seed=3, n=120, side=6.0):
+    rng = np.random.default_rng(seed)
+    return rng.uniform(-0.5 * side, 1.5 * side, (n, 3)), random_forms(rng, n)
+
+
+def brute_pairs(c, q, box, t=None):
+    """{(i, j, shift): value}: overlap results <= 0, or mu2 < t."""
+    out = {}
+    n = len(c)
+    for i in range(n):
+        for j in range(i, n):
+            reach = 1.01 * np.sqrt(t or 1.0) * (
+                np.sqrt(q[i][[0, 3, 5]].sum()) + np.sqrt(q[j][[0, 3, 5]].sum()))
+            d = c[i] - c[j]
+            ranges = [range(int(np.floor((d[k] - reach) / box[k])),
+                            int(np.ceil((d[k] + reach) / box[k])) + 1)
+                      for k in range(3)]
+            for s in itertools.product(*ranges):
+                if i == j and not s > (0, 0, 0):
+                    continue
+                r = (c[j] + np.array(s) * box) - c[i]
+                if t is None:
+                    res = pypw85.overlap(r, q[i], q[j])
+                    if res <= 0:
+                        out[(i, j, s)] = res
+                else:
+                    mu2, lam = pypw85.contact_function(r, q[i], q[j])
+                    if mu2 < t:
+                        out[(i, j, s)] = (mu2, lam)
+    return out
+
+
+@pytest.fixture
+def periodic():
+    c, q = configuration()
+    box = np.array([6.0, 6.6, 5.4])
+    with pypw85.Index(box) as index:
+        index.insert(np.arange(len(c)), c, q)
+        yield index, c, q, box
+
+
+def test_overlapping_pairs(periodic):
+    index, c, q, box = periodic
+    ids, shifts, results = index.overlapping_pairs()
+    got = {(int(i), int(j), tuple(int(x) for x in s)): int(r)
+           for (i, j), s, r in zip(ids, shifts, results)}
+    assert got == brute_pairs(c, q, box)
+    assert len(got) > 0
+    keys = [(i, j, tuple(s)) for (i, j), s in zip(ids.tolist(), shifts.tolist())]
+    assert keys == sorted(keys)
+
+
+def test_pairs_within_and_threads(periodic):
+    index, c, q, box = periodic
+    ids, shifts, ml = index.pairs_within(2.0)
+    got = {(int(i), int(j), tuple(int(x) for x in s)): tuple(v)
+           for (i, j), s, v in zip(ids, shifts, ml)}
+    assert got == brute_pairs(c, q, box, t=2.0)
+    for threads in (2, 8):
+        ids2, shifts2, ml2 = index.pairs_within(2.0, threads=threads)
+        assert np.array_equal(ids, ids2) and np.array_equal(shifts, shifts2)
+        assert np.array_equal(ml, ml2)  # bit for bit
+
+
+def test_candidate_queries(periodic):
+    index, c, q, box = periodic
+    rng = np.random.default_rng(5)
+    for k in range(10):
+        cc = rng.uniform(0, 6, 3)
+        qq = random_forms(rng, 1)[0]
+        ids, shifts, ml = index.within(cc, qq, t=1.5)
+        ref = {}
+        for j in range(len(c)):
+            for s in itertools.product(range(-2, 3), repeat=3):
+                r = (c[j] + np.array(s) * box) - cc
+                mu2, lam = pypw85.contact_function(r, qq, q[j])
+                if mu2 < 1.5:
+                    ref[(j, s)] = (mu2, lam)
+        got = {(int(j), tuple(int(x) for x in s)): tuple(v)
+               for j, s, v in zip(ids, shifts, ml)}
+        assert got == ref
+        result, found = index.overlap_any(cc, qq)
+        best = min([pypw85.overlap((c[j] + np.array(s) * box) - cc, qq, q[j])
+                    for j, s in ref] + [1])
+        assert result == best
+        assert (found is None) == (best == 1)
+
+
+def test_insert_update_remove():
+    with pypw85.Index() as index:
+        q = np.array([1.0, 0, 0, 1, 0, 1])
+        index.insert(3, [0, 0, 0], q)
+        index.insert([5, 7], [[1.5, 0, 0], [10, 0, 0]], [q, q])
+        assert len(index) == 3
+        ids, _, res = index.overlapping_pairs()
+        assert ids.tolist() == [[3, 5]] and res.tolist() == [-1]
+        index.update(5, [3.0, 0, 0], q)
+        assert index.overlapping_pairs()[0].shape == (0, 2)
+        assert index.overlap_any([2.9, 0, 0], q) == (-1, 5)
+        assert index.overlap_any([2.9, 0, 0], q, exclude=5) == (1, None)
+        c, qq = index.get(5)
+        assert c.tolist() == [3.0, 0, 0] and qq.tolist() == q.tolist()
+        index.remove(5)
+        assert len(index) == 2
+        with pytest.raises(pypw85.Error) as e:
+            index.remove(5)
+        assert e.value.status == pypw85.EINVAL
+        with pytest.raises(pypw85.Error) as e:  # all or none
+            index.insert([8, 3], [[0, 0, 0], [0, 0, 0]], [q, q])
+        assert e.value.status == pypw85.EINVAL and len(index) == 2
+        with pytest.raises(pypw85.Error) as e:
+            index.insert(9, [0, 0, 0], [1.0, 2, 0, 1, 0, 1])
+        assert e.value.status == pypw85.ENOTPOSDEF
+        with pytest.raises(ValueError):
+            index.insert([1, 2], [[0, 0, 0]], [q, q])
+        with pytest.raises(pypw85.Error) as e:
+            index.pairs_within(1.0, threads=0)
+        assert e.value.status == pypw85.EINVAL
+    with pytest.raises(pypw85.Error) as e:
+        pypw85.Index([1.0, 0.0, 1.0])
+    assert e.value.status == pypw85.EINVAL
+    assert NO_ID == 2**64 - 1 and OPENMP in (True, False)

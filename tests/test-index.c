@@ -1,0 +1,759 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* The spatial index (pw85_index.h) against a brute force over every pair
+ * and every periodic image, which calls pw85_overlap() and
+ * pw85_contact_function() itself: on random configurations (monodisperse,
+ * polydisperse, needles, discs, dense and dilute, centres straddling the
+ * faces and corners of the box or outside it, boxes small enough for
+ * several images), after random sequences of insert, update and remove;
+ * the all-pairs queries on 1, 2 and 8 threads, bit for bit; every bad
+ * input. PW85_TEST_SMALL (set for the sanitizer and valgrind runs) makes
+ * the configurations smaller. */
+#include <pw85/pw85_index.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "testutil.h"
+
+/* ---- configurations ---------------------------------------------------- */
+
+typedef enum { MONO, POLY, NEEDLES, DISCS } Shapes;
+
+typedef struct {
+  const char *name;
+  Shapes shapes;
+  int periodic;
+  int n;            /* ellipsoids (divided by 5 when small) */
+  double fraction;  /* packing fraction of the box (or of the open cube) */
+  int straddle;     /* centres on the faces, edges and corners */
+} Config;
+
+static gboolean small_run(void) { return g_getenv("PW85_TEST_SMALL") != NULL; }
+
+/* The mirror of an index: what the brute force sees. */
+typedef struct {
+  int periodic;
+  double box[3];
+  size_t cap; /* ids 0 .. cap-1 */
+  gboolean *present;
+  double *c, *q;
+} Mirror;
+
+static void semi_axes(GRand *rng, Shapes shapes, double a[3]) {
+  double s = 1.;
+  a[0] = a[1] = a[2] = 1.;
+  switch (shapes) {
+    case MONO:
+      a[0] = 1., a[1] = .5, a[2] = .2;
+      return;
+    case POLY: /* radius ratio 10 */
+      s = pow(10., g_rand_double(rng));
+      a[0] = s, a[1] = .6 * s, a[2] = .3 * s;
+      return;
+    case NEEDLES: /* aspect ratio 100 */
+      s = g_rand_double_range(rng, .5, 1.);
+      a[0] = s, a[1] = .01 * s, a[2] = .01 * s;
+      return;
+    case DISCS:
+      s = g_rand_double_range(rng, .5, 1.);
+      a[0] = s, a[1] = s, a[2] = .01 * s;
+      return;
+  }
+}
+
+static double mean_volume(Shapes shapes) {
+  switch (shapes) {
+    case MONO: return 4. / 3. * G_PI * .1;
+    case POLY: return 4. / 3. * G_PI * .18 * 144.8; /* E[s³], s = 10^U */
+    case NEEDLES: return 4. / 3. * G_PI * 1e-4 * .586;
+    case DISCS: return 4. / 3. * G_PI * .01 * .586;
+  }
+  return 1.;
+}
+
+static void random_ellipsoid(GRand *rng, Config const *cf, double side,
+                             double c[3], double q[6]) {
+  double a[3], e[3];
+  semi_axes(rng, cf->shapes, a);
+  for (int k = 0; k < 3; k++) e[k] = a[k] * a[k];
+  random_form_with_eigenvalues(rng, e, q);
+  for (int k = 0; k < 3; k++) {
+    if (cf->straddle) { /* near 0 or L, either side; or anywhere */
+      double const u = g_rand_double(rng);
+      double const base = u < .4 ? 0. : (u < .8 ? side : g_rand_double(rng) * side);
+      c[k] = base + g_rand_double_range(rng, -1., 1.);
+    } else {
+      c[k] = g_rand_double_range(rng, -.5 * side, 1.5 * side); /* unwrapped */
+    }
+  }
+}
+
+/* ---- brute force ------------------------------------------------------- */
+
+typedef struct {
+  size_t i, j;
+  int n[3];
+  int result;
+  double mu2, lambda;
+} Ref;
+
+static int ref_cmp(const void *pa, const void *pb) {
+  Ref const *a = pa, *b = pb;
+  if (a->i != b->i) return a->i < b->i ? -1 : 1;
+  if (a->j != b->j) return a->j < b->j ? -1 : 1;
+  for (int k = 0; k < 3; k++)
+    if (a->n[k] != b->n[k]) return a->n[k] < b->n[k] ? -1 : 1;
+  return 0;
+}
+
+/* The radius of a sphere containing the ellipsoid: √tr Q. */
+static double radius(double const q[6]) { return sqrt(q[0] + q[3] + q[5]); }
+
+/* Every image shift n of ellipsoid j that could be within μ² < t of
+ * ellipsoid (c, q): μ² > t wherever |r| > √t·(√tr Q + √tr Q_j) (the
+ * bounding spheres), widened by 1%; independent of the index's own
+ * bounds. */
+static void image_range(Mirror const *m, double const c[3], double const q[6],
+                        size_t j, double t, int lo[3], int hi[3]) {
+  double const reach = 1.01 * sqrt(t) * (radius(q) + radius(m->q + 6 * j));
+  for (int k = 0; k < 3; k++) {
+    if (!m->periodic) {
+      lo[k] = hi[k] = 0;
+      continue;
+    }
+    double const d = c[k] - m->c[3 * j + k];
+    lo[k] = (int)floor((d - reach) / m->box[k]);
+    hi[k] = (int)ceil((d + reach) / m->box[k]);
+  }
+}
+
+static void image_vector(Mirror const *m, double const c[3], size_t j,
+                         int const n[3], double r[3]) {
+  for (int k = 0; k < 3; k++)
+    r[k] = (m->c[3 * j + k] + (double)n[k] * (m->periodic ? m->box[k] : 0.)) - c[k];
+}
+
+static gboolean shift_positive(int const n[3]) {
+  for (int k = 0; k < 3; k++)
+    if (n[k] != 0) return n[k] > 0;
+  return FALSE;
+}
+
+/* Every pair of the mirror: overlap mode (within = FALSE, results ≤ 0) or
+ * μ² < t. Sorted. */
+static GArray *brute_pairs(Mirror const *m, gboolean within, double t) {
+  GArray *out = g_array_new(FALSE, FALSE, sizeof(Ref));
+  for (size_t i = 0; i < m->cap; i++) {
+    if (!m->present[i]) continue;
+    for (size_t j = i; j < m->cap; j++) {
+      if (!m->present[j]) continue;
+      int lo[3], hi[3], n[3];
+      image_range(m, m->c + 3 * i, m->q + 6 * i, j, t, lo, hi);
+      for (n[0] = lo[0]; n[0] <= hi[0]; n[0]++)
+        for (n[1] = lo[1]; n[1] <= hi[1]; n[1]++)
+          for (n[2] = lo[2]; n[2] <= hi[2]; n[2]++) {
+            if (j == i && !shift_positive(n)) continue;
+            double r[3];
+            image_vector(m, m->c + 3 * i, j, n, r);
+            Ref ref = {i, j, {n[0], n[1], n[2]}, 0, 0., 0.};
+            if (within) {
+              double out2[2];
+              int const s = pw85_contact_function(r, m->q + 6 * i, m->q + 6 * j, out2);
+              g_assert_cmpint(s, ==, PW85_SUCCESS);
+              if (!(out2[0] < t)) continue;
+              ref.mu2 = out2[0], ref.lambda = out2[1];
+            } else {
+              int res;
+              g_assert_cmpint(pw85_overlap(r, m->q + 6 * i, m->q + 6 * j, &res), ==,
+                              PW85_SUCCESS);
+              if (res > 0) continue;
+              ref.result = res;
+            }
+            g_array_append_val(out, ref);
+          }
+    }
+  }
+  g_array_sort(out, ref_cmp);
+  return out;
+}
+
+/* The candidate (c, q) against every stored ellipsoid but exclude. */
+static GArray *brute_candidate(Mirror const *m, double const c[3],
+                               double const q[6], size_t exclude,
+                               gboolean within, double t) {
+  GArray *out = g_array_new(FALSE, FALSE, sizeof(Ref));
+  for (size_t j = 0; j < m->cap; j++) {
+    if (!m->present[j] || j == exclude) continue;
+    int lo[3], hi[3], n[3];
+    image_range(m, c, q, j, t, lo, hi);
+    for (n[0] = lo[0]; n[0] <= hi[0]; n[0]++)
+      for (n[1] = lo[1]; n[1] <= hi[1]; n[1]++)
+        for (n[2] = lo[2]; n[2] <= hi[2]; n[2]++) {
+          double r[3];
+          image_vector(m, c, j, n, r);
+          Ref ref = {PW85_INDEX_NO_ID, j, {n[0], n[1], n[2]}, 0, 0., 0.};
+          if (within) {
+            double o[2];
+            g_assert_cmpint(pw85_contact_function(r, q, m->q + 6 * j, o), ==,
+                            PW85_SUCCESS);
+            if (!(o[0] < t)) continue;
+            ref.mu2 = o[0], ref.lambda = o[1];
+          } else {
+            int res;
+            g_assert_cmpint(pw85_overlap(r, q, m->q + 6 * j, &res), ==, PW85_SUCCESS);
+            if (res > 0) continue;
+            ref.result = res;
+          }
+          g_array_append_val(out, ref);
+        }
+  }
+  g_array_sort(out, ref_cmp);
+  return out;
+}
+
+/* ---- the index's answers ----------------------------------------------- */
+
+typedef struct {
+  size_t count;
+  size_t *ids;
+  int *shifts;
+  int *results;
+  double *mu2_lambda;
+} Pairs;
+
+static void pairs_clear(Pairs *p) {
+  g_free(p->ids), g_free(p->shifts), g_free(p->results), g_free(p->mu2_lambda);
+  memset(p, 0, sizeof *p);
+}
+
+/* The all-pairs query, asked for its count first, then with room. */
+static Pairs index_pairs(pw85_index const *ix, gboolean within, double t,
+                         int threads) {
+  Pairs p = {0, NULL, NULL, NULL, NULL};
+  size_t count = 0;
+  int s = within ? pw85_index_pairs_within(ix, t, threads, 0, NULL, NULL, NULL, &count)
+                 : pw85_index_overlapping_pairs(ix, threads, 0, NULL, NULL, NULL, &count);
+  g_assert_cmpint(s, ==, PW85_SUCCESS);
+  size_t const cap = count + 1;
+  p.ids = g_new0(size_t, 2 * cap);
+  p.shifts = g_new0(int, 3 * cap);
+  p.results = g_new0(int, cap);
+  p.mu2_lambda = g_new0(double, 2 * cap);
+  s = within ? pw85_index_pairs_within(ix, t, threads, cap, p.ids, p.shifts,
+                                       p.mu2_lambda, &p.count)
+             : pw85_index_overlapping_pairs(ix, threads, cap, p.ids, p.shifts,
+                                            p.results, &p.count);
+  g_assert_cmpint(s, ==, PW85_SUCCESS);
+  g_assert_cmpuint(p.count, ==, count);
+  return p;
+}
+
+static void compare_pairs(const char *what, Pairs const *p, GArray *ref,
+                          gboolean within) {
+  if (p->count != ref->len)
+    test_mismatch("%s: %zu pairs, brute force %u", what, p->count, ref->len);
+  size_t const n = MIN(p->count, (size_t)ref->len);
+  for (size_t k = 0; k < n; k++) {
+    Ref const *r = &g_array_index(ref, Ref, k);
+    gboolean same = p->ids[2 * k] == r->i && p->ids[2 * k + 1] == r->j &&
+                    memcmp(p->shifts + 3 * k, r->n, sizeof r->n) == 0;
+    if (same && within)
+      same = p->mu2_lambda[2 * k] == r->mu2 && p->mu2_lambda[2 * k + 1] == r->lambda;
+    if (same && !within) same = p->results[k] == r->result;
+    if (!same) {
+      test_mismatch("%s: pair %zu is (%zu, %zu, [%d %d %d]), brute force "
+                    "(%zu, %zu, [%d %d %d]) mu2 %.17g", what, k, p->ids[2 * k],
+                    p->ids[2 * k + 1], p->shifts[3 * k], p->shifts[3 * k + 1],
+                    p->shifts[3 * k + 2], r->i, r->j, r->n[0], r->n[1], r->n[2],
+                    r->mu2);
+      return;
+    }
+  }
+}
+
+static gboolean pairs_equal(Pairs const *a, Pairs const *b) {
+  return a->count == b->count &&
+         memcmp(a->ids, b->ids, 2 * a->count * sizeof(size_t)) == 0 &&
+         memcmp(a->shifts, b->shifts, 3 * a->count * sizeof(int)) == 0 &&
+         memcmp(a->results, b->results, a->count * sizeof(int)) == 0 &&
+         memcmp(a->mu2_lambda, b->mu2_lambda, 2 * a->count * sizeof(double)) == 0;
+}
+
+/* ---- the test of a configuration --------------------------------------- */
+
+static void check_candidates(pw85_index const *ix, Mirror const *m,
+                             GRand *rng, Config const *cf, double side,
+                             int count) {
+  for (int k = 0; k < count; k++) {
+    double c[3], q[6];
+    random_ellipsoid(rng, cf, side, c, q);
+    size_t exclude = PW85_INDEX_NO_ID;
+    if (k % 3 == 1) { /* a Monte Carlo move: skip a stored one */
+      exclude = (size_t)g_rand_int_range(rng, 0, (gint32)m->cap);
+    }
+    /* overlap_any: the least result of the brute force */
+    GArray *ref = brute_candidate(m, c, q, exclude, FALSE, 1.);
+    int best = 1;
+    for (guint a = 0; a < ref->len; a++)
+      best = MIN(best, g_array_index(ref, Ref, a).result);
+    int result = 99;
+    size_t id = 0;
+    g_assert_cmpint(pw85_index_overlap_any(ix, c, q, exclude, &result, &id), ==,
+                    PW85_SUCCESS);
+    if (result != best)
+      test_mismatch("%s candidate %d: overlap_any %d, brute force %d", cf->name,
+                    k, result, best);
+    if (best == 1) {
+      g_assert_cmpuint(id, ==, PW85_INDEX_NO_ID);
+    } else { /* the id named has that result through some image */
+      gboolean found = FALSE;
+      for (guint a = 0; a < ref->len; a++) {
+        Ref const *r = &g_array_index(ref, Ref, a);
+        found = found || (r->j == id && r->result == best);
+      }
+      if (!found)
+        test_mismatch("%s candidate %d: id %zu does not have result %d",
+                      cf->name, k, id, best);
+    }
+    g_array_unref(ref);
+
+    /* within t, t = 1 and 2.5 */
+    double const t = k % 2 ? 1. : 2.5;
+    ref = brute_candidate(m, c, q, exclude, TRUE, t);
+    size_t n = 0;
+    g_assert_cmpint(pw85_index_within(ix, c, q, t, exclude, 0, NULL, NULL, NULL, &n),
+                    ==, PW85_SUCCESS);
+    size_t const cap = n > 1 ? n - 1 : n; /* one short: snprintf's truncation */
+    size_t *ids = g_new0(size_t, cap + 1);
+    int *shifts = g_new0(int, 3 * (cap + 1));
+    double *ml = g_new0(double, 2 * (cap + 1));
+    ids[cap] = 12345;
+    size_t n2 = 0;
+    g_assert_cmpint(pw85_index_within(ix, c, q, t, exclude, cap, ids, shifts, ml, &n2),
+                    ==, PW85_SUCCESS);
+    g_assert_cmpuint(n2, ==, n);
+    g_assert_cmpuint(ids[cap], ==, 12345); /* nothing beyond capacity */
+    if (n != ref->len)
+      test_mismatch("%s candidate %d: within %g finds %zu, brute force %u",
+                    cf->name, k, t, n, ref->len);
+    for (size_t a = 0; a < MIN(cap, (size_t)ref->len); a++) {
+      Ref const *r = &g_array_index(ref, Ref, a);
+      if (ids[a] != r->j || memcmp(shifts + 3 * a, r->n, sizeof r->n) != 0 ||
+          ml[2 * a] != r->mu2 || ml[2 * a + 1] != r->lambda) {
+        test_mismatch("%s candidate %d: hit %zu differs from the brute force",
+                      cf->name, k, a);
+        break;
+      }
+    }
+    g_free(ids), g_free(shifts), g_free(ml);
+    g_array_unref(ref);
+  }
+}
+
+static void check_pairs(pw85_index const *ix, Mirror const *m,
+                        Config const *cf, const char *stage) {
+  for (int within = 0; within <= 1; within++) {
+    double const t = within ? (m->periodic ? 3. : 1.5) : 1.;
+    GArray *ref = brute_pairs(m, within, t);
+    Pairs one = index_pairs(ix, within, t, 1);
+    char *what = g_strdup_printf("%s %s %s", cf->name, stage,
+                                 within ? "pairs_within" : "overlapping_pairs");
+    compare_pairs(what, &one, ref, within);
+    for (int threads = 2; threads <= 8; threads *= 4) {
+      Pairs more = index_pairs(ix, within, t, threads);
+      if (!pairs_equal(&one, &more))
+        test_mismatch("%s: %d threads differ from 1", what, threads);
+      pairs_clear(&more);
+    }
+    g_test_message("%s: %u pairs", what, ref->len);
+    g_free(what);
+    pairs_clear(&one);
+    g_array_unref(ref);
+  }
+}
+
+static void test_config(gconstpointer data) {
+  Config const *cf = data;
+  GRand *rng = g_rand_new_with_seed(g_str_hash(cf->name));
+  int const n = small_run() ? MAX(cf->n / 10, 8) : cf->n;
+  /* The box's sides are (1, 1.1, 0.9) times side, at least 2.3 times the
+   * largest semi-axis (the side rule of pw85_index.h). */
+  double const amax = cf->shapes == POLY ? 10. : 1.;
+  double const side = MAX(cbrt(n * mean_volume(cf->shapes) / cf->fraction),
+                          2.3 * amax / .9);
+  Mirror m = {cf->periodic, {side, side * 1.1, side * .9}, (size_t)n + n / 2,
+              NULL, NULL, NULL};
+  m.present = g_new0(gboolean, m.cap);
+  m.c = g_new0(double, 3 * m.cap);
+  m.q = g_new0(double, 6 * m.cap);
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(cf->periodic ? m.box : NULL, &ix), ==,
+                  PW85_SUCCESS);
+
+  /* The first half in one call, the rest one by one, ids shuffled. */
+  size_t *ids = g_new(size_t, n);
+  for (int i = 0; i < n; i++) ids[i] = (size_t)i;
+  for (int i = n - 1; i > 0; i--) {
+    int const k = g_rand_int_range(rng, 0, i + 1);
+    size_t const x = ids[i];
+    ids[i] = ids[k], ids[k] = x;
+  }
+  double *c = g_new(double, 3 * n), *q = g_new(double, 6 * n);
+  for (int i = 0; i < n; i++) {
+    random_ellipsoid(rng, cf, side, c + 3 * i, q + 6 * i);
+    m.present[ids[i]] = TRUE;
+    memcpy(m.c + 3 * ids[i], c + 3 * i, 3 * sizeof(double));
+    memcpy(m.q + 6 * ids[i], q + 6 * i, 6 * sizeof(double));
+  }
+  g_assert_cmpint(pw85_index_insert_many(ix, (size_t)n / 2, ids, c, q), ==,
+                  PW85_SUCCESS);
+  for (int i = n / 2; i < n; i++)
+    g_assert_cmpint(pw85_index_insert(ix, ids[i], c + 3 * i, q + 6 * i), ==,
+                    PW85_SUCCESS);
+  size_t count = 0;
+  g_assert_cmpint(pw85_index_count(ix, &count), ==, PW85_SUCCESS);
+  g_assert_cmpuint(count, ==, (size_t)n);
+  check_pairs(ix, &m, cf, "inserted");
+  check_candidates(ix, &m, rng, cf, side, small_run() ? 3 : 30);
+
+  /* Random updates (moves, reshapes), removals and new ids. */
+  for (int step = 0; step < 2 * n; step++) {
+    size_t const id = (size_t)g_rand_int_range(rng, 0, (gint32)m.cap);
+    double cc[3], qq[6];
+    random_ellipsoid(rng, cf, side, cc, qq);
+    if (!m.present[id]) {
+      g_assert_cmpint(pw85_index_insert(ix, id, cc, qq), ==, PW85_SUCCESS);
+      m.present[id] = TRUE;
+    } else if (g_rand_double(rng) < .3) {
+      g_assert_cmpint(pw85_index_remove(ix, id), ==, PW85_SUCCESS);
+      m.present[id] = FALSE;
+      continue;
+    } else {
+      if (g_rand_boolean(rng)) /* a small move, same shape */
+        for (int k = 0; k < 3; k++) {
+          memcpy(qq, m.q + 6 * id, sizeof qq);
+          cc[k] = m.c[3 * id + k] + g_rand_double_range(rng, -.3, .3);
+        }
+      g_assert_cmpint(pw85_index_update(ix, id, cc, qq), ==, PW85_SUCCESS);
+    }
+    memcpy(m.c + 3 * id, cc, sizeof cc);
+    memcpy(m.q + 6 * id, qq, sizeof qq);
+  }
+  /* get() returns what was stored. */
+  for (size_t id = 0; id < m.cap; id++) {
+    double cc[3], qq[6];
+    int const s = pw85_index_get(ix, id, cc, qq);
+    if (!m.present[id]) {
+      g_assert_cmpint(s, ==, PW85_EINVAL);
+      continue;
+    }
+    g_assert_cmpint(s, ==, PW85_SUCCESS);
+    g_assert_cmpmem(cc, sizeof cc, m.c + 3 * id, sizeof cc);
+    g_assert_cmpmem(qq, sizeof qq, m.q + 6 * id, sizeof qq);
+  }
+  check_pairs(ix, &m, cf, "after moves");
+  check_candidates(ix, &m, rng, cf, side, small_run() ? 3 : 30);
+
+  pw85_index_destroy(ix);
+  g_free(ids), g_free(c), g_free(q);
+  g_free(m.present), g_free(m.c), g_free(m.q);
+  g_rand_free(rng);
+}
+
+/* ---- bad input ----------------------------------------------------------- */
+
+static void test_bad_input(void) {
+  double const box[3] = {10., 10., 10.};
+  double const c[3] = {1., 2., 3.};
+  double const q[6] = {1., 0., 0., .25, 0., .04};
+  double const q_bad[6] = {1., 2., 0., 1., 0., 1.};  /* indefinite */
+  double const q_nan[6] = {NAN, 0., 0., 1., 0., 1.};
+  double const c_inf[3] = {INFINITY, 0., 0.};
+  double const q_wide[6] = {26., 0., 0., 1., 0., 1.}; /* 2·√26 > 10 */
+  double const c_far[3] = {1e300, 0., 0.};             /* open: fine */
+  double const c_farther[3] = {6e9, 0., 0.};           /* > 2²⁹·10 */
+  pw85_index *ix = NULL, *open = NULL;
+
+  double const box_nan[3] = {10., NAN, 10.}, box_zero[3] = {10., 0., 10.};
+  double const box_neg[3] = {10., 10., -1.};
+  g_assert_cmpint(pw85_index_create(box, NULL), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_create(box_nan, &ix), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_create(box_zero, &ix), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_create(box_neg, &ix), ==, PW85_EINVAL);
+  g_assert_null(ix);
+  g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_create(NULL, &open), ==, PW85_SUCCESS);
+  pw85_index_destroy(NULL);
+
+  size_t n = 99;
+  g_assert_cmpint(pw85_index_count(NULL, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_count(ix, NULL), ==, PW85_EFAULT);
+
+  /* insert */
+  g_assert_cmpint(pw85_index_insert(NULL, 0, c, q), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_insert(ix, 0, NULL, q), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c, NULL), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c_inf, q), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c, q_nan), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c, q_bad), ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c, q_wide), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_insert(open, 0, c, q_wide), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c_farther, q), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_insert(open, 1, c_far, q), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, PW85_INDEX_MAX_ID + 1, c, q), ==,
+                  PW85_EINVAL);
+  g_assert_cmpint(pw85_index_count(ix, &n), ==, PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, 0);
+  g_assert_cmpint(pw85_index_insert(ix, 3, c, q), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, 3, c, q), ==, PW85_EINVAL); /* in use */
+
+  /* insert_many: all or none */
+  size_t const ids[3] = {4, 5, 3};
+  double const cs[9] = {0., 0., 0., 5., 5., 5., 1., 1., 1.};
+  double qs[18];
+  for (int k = 0; k < 3; k++) memcpy(qs + 6 * k, q, sizeof q);
+  g_assert_cmpint(pw85_index_insert_many(ix, 3, NULL, cs, qs), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_insert_many(ix, 3, ids, cs, qs), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_count(ix, &n), ==, PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, 1);
+  memcpy(qs + 6, q_bad, sizeof q_bad);
+  size_t const ids2[3] = {4, 5, 6};
+  g_assert_cmpint(pw85_index_insert_many(ix, 3, ids2, cs, qs), ==, PW85_ENOTPOSDEF);
+  size_t const dup[2] = {7, 7};
+  memcpy(qs + 6, q, sizeof q);
+  g_assert_cmpint(pw85_index_insert_many(ix, 2, dup, cs, qs), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_count(ix, &n), ==, PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, 1);
+  g_assert_cmpint(pw85_index_insert_many(ix, 0, NULL, NULL, NULL), ==, PW85_SUCCESS);
+
+  /* update, remove, get: unknown ids, bad forms; the index unchanged */
+  double cc[3], qq[6];
+  g_assert_cmpint(pw85_index_update(ix, 4, c, q), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_update(ix, 3, c, q_bad), ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(pw85_index_update(ix, 3, c_inf, q), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_update(ix, 3, c, q_wide), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_update(NULL, 3, c, q), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_get(ix, 3, cc, qq), ==, PW85_SUCCESS);
+  g_assert_cmpmem(cc, sizeof cc, c, sizeof c);
+  g_assert_cmpmem(qq, sizeof qq, q, sizeof q);
+  g_assert_cmpint(pw85_index_get(ix, 2, cc, qq), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_get(ix, 1u << 30, cc, qq), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_get(ix, 3, NULL, qq), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_get(NULL, 3, cc, qq), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_remove(ix, 2), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_remove(ix, PW85_INDEX_NO_ID), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_remove(NULL, 3), ==, PW85_EFAULT);
+
+  /* queries on a candidate */
+  int result = 7;
+  size_t id = 7;
+  g_assert_cmpint(pw85_index_overlap_any(NULL, c, q, PW85_INDEX_NO_ID, &result, &id), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any(ix, NULL, q, PW85_INDEX_NO_ID, &result, &id), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c, q, PW85_INDEX_NO_ID, NULL, &id), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c, q, PW85_INDEX_NO_ID, &result, NULL), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c_inf, q, PW85_INDEX_NO_ID, &result, &id), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c, q_bad, PW85_INDEX_NO_ID, &result, &id), ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c_farther, q, PW85_INDEX_NO_ID, &result, &id), ==, PW85_EINVAL);
+  g_assert_cmpint(result, ==, 7); /* untouched on error */
+  g_assert_cmpuint(id, ==, 7);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c, q, PW85_INDEX_NO_ID, &result, &id), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, -1);
+  g_assert_cmpuint(id, ==, 3);
+  g_assert_cmpint(pw85_index_overlap_any(ix, c, q, 3, &result, &id), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 1);
+  g_assert_cmpuint(id, ==, PW85_INDEX_NO_ID);
+
+  size_t ids_out[4];
+  int shifts[12];
+  double ml[8];
+  g_assert_cmpint(pw85_index_within(ix, c, q, 1., PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, NULL), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_within(ix, c, q, 1., PW85_INDEX_NO_ID, 4, NULL, shifts, ml, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_within(ix, c, q, 1., PW85_INDEX_NO_ID, 4, ids_out, NULL, ml, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_within(ix, c, q, 1., PW85_INDEX_NO_ID, 4, ids_out, shifts, NULL, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_within(ix, c, q, NAN, PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_within(ix, c, q, INFINITY, PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_within(ix, c, q, 0., PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_within(ix, c, q, -1., PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_within(ix, c, q_nan, 1., PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_within(ix, c, q, 1e300, PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_index_within(ix, c, q, 1., PW85_INDEX_NO_ID, 4, ids_out, shifts, ml, &n), ==, PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, 1);
+  g_assert_cmpuint(ids_out[0], ==, 3);
+
+  /* all pairs */
+  g_assert_cmpint(pw85_index_overlapping_pairs(NULL, 1, 0, NULL, NULL, NULL, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlapping_pairs(ix, 1, 0, NULL, NULL, NULL, NULL), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlapping_pairs(ix, 1, 2, NULL, shifts, shifts, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlapping_pairs(ix, 0, 0, NULL, NULL, NULL, &n), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_overlapping_pairs(ix, -3, 0, NULL, NULL, NULL, &n), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_pairs_within(ix, 1., 0, 0, NULL, NULL, NULL, &n), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_pairs_within(ix, NAN, 1, 0, NULL, NULL, NULL, &n), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_index_pairs_within(ix, 0., 1, 0, NULL, NULL, NULL, &n), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_pairs_within(ix, 1., 1, 1, ids_out, NULL, ml, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_pairs_within(NULL, 1., 1, 0, NULL, NULL, NULL, &n), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_pairs_within(ix, 1e300, 1, 0, NULL, NULL, NULL, &n), ==, PW85_ERANGE);
+
+  /* Forms whose diagonals together span more than a double's range:
+   * both valid, the pair out of range (as pw85_overlap()). */
+  pw85_index *wide = NULL;
+  double const tiny[6] = {1e-320, 0., 0., 1e-320, 0., 1e-320};
+  double const huge[6] = {1e308, 0., 0., 1e308, 0., 1e308};
+  g_assert_cmpint(pw85_index_create(NULL, &wide), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(wide, 0, c, tiny), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(wide, 1, c, huge), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_overlapping_pairs(wide, 2, 0, NULL, NULL, NULL, &n), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_index_pairs_within(wide, 1., 2, 0, NULL, NULL, NULL, &n), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_index_remove(wide, 0), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_overlap_any(wide, c, tiny, PW85_INDEX_NO_ID, &result, &id), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_index_within(wide, c, tiny, 1., PW85_INDEX_NO_ID, 0, NULL, NULL, NULL, &n), ==, PW85_ERANGE);
+  pw85_index_destroy(wide);
+
+  g_assert_cmpint(pw85_index_remove(ix, 3), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_count(ix, &n), ==, PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, 0);
+  pw85_index_destroy(ix);
+  pw85_index_destroy(open);
+}
+
+/* A stored ellipsoid meets other ellipsoids through several images when
+ * the box is small: a box barely wider than the ellipsoids. */
+static void test_several_images(void) {
+  double const box[3] = {2.1, 2.1, 2.1};
+  double const q[6] = {1., 0., 0., 1., 0., 1.}; /* unit spheres */
+  double const c0[3] = {0., 0., 0.}, c1[3] = {1.05, 0., 0.};
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, 0, c0, q), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, 1, c1, q), ==, PW85_SUCCESS);
+  size_t ids[8];
+  int shifts[12], results[4];
+  size_t n = 0;
+  g_assert_cmpint(pw85_index_overlapping_pairs(ix, 1, 4, ids, shifts, results, &n),
+                  ==, PW85_SUCCESS);
+  /* 1.05 apart through n = 0 and through n = (−1, 0, 0); 2 ≥ 1.05 */
+  g_assert_cmpuint(n, ==, 2);
+  g_assert_cmpint(shifts[0], ==, -1);
+  g_assert_cmpint(shifts[3], ==, 0);
+  /* μ² < 4.5 reaches the images across the box: more pairs, and each
+   * sphere its own images, (0, 0, n) with n positive. */
+  g_assert_cmpint(pw85_index_pairs_within(ix, 4.5, 1, 0, NULL, NULL, NULL, &n), ==,
+                  PW85_SUCCESS);
+  double *ml = g_new(double, 2 * n);
+  size_t *ids2 = g_new(size_t, 2 * n);
+  int *sh2 = g_new(int, 3 * n);
+  size_t const cap = n;
+  g_assert_cmpint(pw85_index_pairs_within(ix, 4.5, 1, cap, ids2, sh2, ml, &n), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, cap);
+  gboolean self = FALSE;
+  for (size_t k = 0; k < n; k++) {
+    g_assert_cmpfloat(ml[2 * k], <, 4.5);
+    if (ids2[2 * k] == 0 && ids2[2 * k + 1] == 0) {
+      self = TRUE;
+      g_assert_true(shift_positive(sh2 + 3 * k));
+    }
+  }
+  g_assert_true(self);
+  g_test_message("%zu pairs with mu^2 < 4.5", n);
+  g_free(ml), g_free(ids2), g_free(sh2);
+  pw85_index_destroy(ix);
+}
+
+/* Queries only read an index: several threads querying one index at once
+ * get the answers of one thread, bit for bit (and ThreadSanitizer, in its
+ * build, sees no race). */
+#define QUERY_THREADS 4
+#define QUERY_CANDIDATES 40
+
+typedef struct {
+  pw85_index const *index;
+  double const *c, *q; /* the candidates */
+  int results[QUERY_CANDIDATES];
+  size_t ids[QUERY_CANDIDATES], counts[QUERY_CANDIDATES];
+  double mu2_sum[QUERY_CANDIDATES];
+  size_t pairs;
+} Queries;
+
+static gpointer run_queries(gpointer data) {
+  Queries *w = data;
+  for (int k = 0; k < QUERY_CANDIDATES; k++) {
+    double const *c = w->c + 3 * k, *q = w->q + 6 * k;
+    g_assert_cmpint(pw85_index_overlap_any(w->index, c, q, PW85_INDEX_NO_ID,
+                                           &w->results[k], &w->ids[k]), ==, PW85_SUCCESS);
+    size_t ids[64];
+    int shifts[3 * 64];
+    double ml[2 * 64];
+    g_assert_cmpint(pw85_index_within(w->index, c, q, 2., PW85_INDEX_NO_ID, 64, ids,
+                                      shifts, ml, &w->counts[k]), ==, PW85_SUCCESS);
+    w->mu2_sum[k] = 0.;
+    for (size_t a = 0; a < MIN(w->counts[k], (size_t)64); a++) w->mu2_sum[k] += ml[2 * a];
+  }
+  g_assert_cmpint(pw85_index_overlapping_pairs(w->index, 1, 0, NULL, NULL, NULL,
+                                               &w->pairs), ==, PW85_SUCCESS);
+  return NULL;
+}
+
+static void test_concurrent_queries(void) {
+  Config const cf = {"concurrent", MONO, 1, small_run() ? 40 : 300, .3, 0};
+  GRand *rng = g_rand_new_with_seed(11);
+  double const side = cbrt(cf.n * mean_volume(MONO) / cf.fraction);
+  double const box[3] = {side, side, side};
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
+  double c[3], q[6];
+  for (int i = 0; i < cf.n; i++) {
+    random_ellipsoid(rng, &cf, side, c, q);
+    g_assert_cmpint(pw85_index_insert(ix, (size_t)i, c, q), ==, PW85_SUCCESS);
+  }
+  double cs[3 * QUERY_CANDIDATES], qs[6 * QUERY_CANDIDATES];
+  for (int k = 0; k < QUERY_CANDIDATES; k++)
+    random_ellipsoid(rng, &cf, side, cs + 3 * k, qs + 6 * k);
+  Queries serial = {ix, cs, qs, {0}, {0}, {0}, {0}, 0};
+  run_queries(&serial);
+  Queries parallel[QUERY_THREADS];
+  GThread *threads[QUERY_THREADS];
+  for (int t = 0; t < QUERY_THREADS; t++) {
+    parallel[t] = (Queries){ix, cs, qs, {0}, {0}, {0}, {0}, 0};
+    threads[t] = g_thread_new("query", run_queries, &parallel[t]);
+  }
+  for (int t = 0; t < QUERY_THREADS; t++) {
+    g_thread_join(threads[t]);
+    g_assert_cmpmem(parallel[t].results, sizeof serial.results, serial.results,
+                    sizeof serial.results);
+    g_assert_cmpmem(parallel[t].ids, sizeof serial.ids, serial.ids, sizeof serial.ids);
+    g_assert_cmpmem(parallel[t].counts, sizeof serial.counts, serial.counts,
+                    sizeof serial.counts);
+    g_assert_cmpmem(parallel[t].mu2_sum, sizeof serial.mu2_sum, serial.mu2_sum,
+                    sizeof serial.mu2_sum);
+    g_assert_cmpuint(parallel[t].pairs, ==, serial.pairs);
+  }
+  pw85_index_destroy(ix);
+  g_rand_free(rng);
+}
+
+static Config const configs[] = {
+    {"mono-dense-periodic", MONO, 1, 400, .4, 0},
+    {"mono-dilute-periodic", MONO, 1, 300, .05, 0},
+    {"mono-dense-open", MONO, 0, 400, .4, 0},
+    {"poly-periodic", POLY, 1, 300, .3, 0},
+    {"poly-open", POLY, 0, 300, .3, 0},
+    {"needles-periodic", NEEDLES, 1, 400, .01, 0},
+    {"discs-periodic", DISCS, 1, 300, .1, 0},
+    {"needles-open", NEEDLES, 0, 300, .01, 0},
+    {"straddling-periodic", MONO, 1, 300, .3, 1},
+    {"small-box", MONO, 1, 6, .3, 1},
+};
+
+int main(int argc, char **argv) {
+  g_test_init(&argc, &argv, NULL);
+  install_failing_gsl_handler();
+  g_test_add_func("/pw85/index/bad-input", test_bad_input);
+  g_test_add_func("/pw85/index/several-images", test_several_images);
+  g_test_add_func("/pw85/index/concurrent-queries", test_concurrent_queries);
+  for (size_t k = 0; k < G_N_ELEMENTS(configs); k++) {
+    char *path = g_strdup_printf("/pw85/index/brute-force/%s", configs[k].name);
+    g_test_add_data_func(path, &configs[k], test_config);
+    g_free(path);
+  }
+  return g_test_run();
+}
