@@ -25,7 +25,8 @@ namespace {
 // Newton steps on the compensated ω (eq. (5.6) of docs/optimisation.rst;
 // its root is λ*, seed ch. 3, eq. (13)), with the plain ω′ (eq. (5.7)) as
 // slope: the slope only sets the rate, the compensated ω sets the root.
-// Returns the polished λ, or λ0 where an evaluation fails.
+// Returns the polished λ (the last one reached where an evaluation fails,
+// or where a step would be larger than polish_max_step).
 template <bool Fast>
 PW85_INLINE double polish(Problem const &p, double lambda0) noexcept {
   double lambda = lambda0;
