@@ -15,6 +15,10 @@ namespace pw85::detail {
 // 2·batch_grain items. A chunk of the cheapest call (pw85_overlap, ~0.1
 // µs) costs ~25 µs, far above the cost of handing it out.
 constexpr std::size_t batch_grain = 256;
+// Chunks per thread of a threaded batch (fewer when that would make them
+// smaller than batch_grain): enough for the dynamic schedule to even out
+// the threads' loads, few enough that handing them out costs nothing.
+constexpr std::size_t batch_chunks_per_thread = 32;
 
 // The first failure met: the lowest index whose code is not 0, with its
 // code; index == n (the batch's size) and code 0 when there is none.
@@ -35,9 +39,10 @@ using BatchRange = BatchFailure (*)(void const *context, std::size_t begin,
 // 1. Always 1 without OpenMP.
 int batch_threads(int requested, std::size_t n) noexcept;
 
-// Runs range over [0, n) in chunks of batch_grain on `threads` threads
-// (from batch_threads()): with 1, in the calling thread, no OpenMP call
-// made; otherwise chunks handed out dynamically. Returns the lowest
+// Runs range over [0, n) on `threads` threads (from batch_threads()):
+// with 1, in one call of range in the calling thread, no OpenMP call made;
+// otherwise in chunks of max(batch_grain, n / (batch_chunks_per_thread ·
+// threads)) consecutive indices handed out dynamically. Returns the lowest
 // failure over all chunks: the same for any thread count, since every
 // item is computed alone.
 BatchFailure run_batch(std::size_t n, int threads, BatchRange range,

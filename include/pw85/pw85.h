@@ -574,8 +574,8 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
  *  processor); k > 1: up to k. A batch of n pairs uses at most n/256
  *  threads (rounded down): no thread is started for n < 512, nor for
  *  threads = 1. pw85_batch_threads() gives the count a call would use.
- *  Pairs are handed to threads in chunks of 256 consecutive indices, as
- *  they become free. The results do not depend on the count, bit for
+ *  Pairs are handed to threads, as they become free, in chunks of
+ *  consecutive indices: about 32 per thread, of at least 256 pairs. The results do not depend on the count, bit for
  *  bit. Built without OpenMP (meson option `openmp`), every call runs in
  *  the calling thread, whatever the count. pw85 allocates nothing; the
  *  OpenMP runtime keeps its pool of threads from the first threaded call
