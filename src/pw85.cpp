@@ -110,29 +110,53 @@ core::BatchFailure run_range(void const *context, std::size_t begin,
   return first;
 }
 
-// The checks of the call itself, then every pair on the threads asked for.
-// outputs_ok: no output pointer is NULL.
-template <class Pair>
-int run(std::size_t n, Pairs const &in, bool outputs_ok, int *status,
-        int threads, Pair pair) noexcept {
+// The checks of the call itself (pointers_ok: no input or output pointer
+// is NULL; strides_ok: every stride valid), then every item on the threads
+// asked for.
+template <class Item>
+int run_items(std::size_t n, bool pointers_ok, bool strides_ok, int *status,
+              int threads, Item item) noexcept {
   if (n == 0) return PW85_SUCCESS;
   int code = PW85_SUCCESS;
-  if (in.r12 == nullptr || in.q1 == nullptr || in.q2 == nullptr ||
-      !outputs_ok)
+  if (!pointers_ok)
     code = PW85_EFAULT;
-  else if (!valid_stride(in.r12_stride, PW85_DIM) ||
-           !valid_stride(in.q1_stride, PW85_SYM) ||
-           !valid_stride(in.q2_stride, PW85_SYM) || threads < 0)
+  else if (!strides_ok || threads < 0)
     code = PW85_EINVAL;
   if (code != PW85_SUCCESS) {
     if (status != nullptr)
       for (std::size_t i = 0; i < n; ++i) status[i] = code;
     return code;
   }
-  Batch<Pair> const batch{pair, status};
+  Batch<Item> const batch{item, status};
   return core::run_batch(n, core::batch_threads(threads, n),
-                         run_range<Pair>, &batch)
+                         run_range<Item>, &batch)
       .code;
+}
+
+// A batch of pairs. outputs_ok: no output pointer is NULL.
+template <class Pair>
+int run(std::size_t n, Pairs const &in, bool outputs_ok, int *status,
+        int threads, Pair pair) noexcept {
+  return run_items(
+      n, in.r12 != nullptr && in.q1 != nullptr && in.q2 != nullptr && outputs_ok,
+      valid_stride(in.r12_stride, PW85_DIM) &&
+          valid_stride(in.q1_stride, PW85_SYM) &&
+          valid_stride(in.q2_stride, PW85_SYM),
+      status, threads, pair);
+}
+
+// pw85_spheroid() with the statuses of its batch: PW85_EDOM for a
+// non-finite input (q untouched), PW85_ERANGE for a non-finite entry of q
+// (q written).
+inline int spheroid_one(double a, double c, double const *axis,
+                        double *q) noexcept {
+  if (!std::isfinite(a) || !std::isfinite(c) || !std::isfinite(axis[0]) ||
+      !std::isfinite(axis[1]) || !std::isfinite(axis[2]))
+    return PW85_EDOM;
+  core::spheroid(a, c, axis, q);
+  for (int k = 0; k < PW85_SYM; ++k)
+    if (!std::isfinite(q[k])) return PW85_ERANGE;
+  return PW85_SUCCESS;
 }
 
 }  // namespace
@@ -307,6 +331,60 @@ int pw85_contact_derivatives_batch(size_t n, double const *r12,
                                    geometry + PW85_GEOM_SIZE * i,
                                    d + PW85_DERIV_SIZE * i);
              });
+}
+
+int pw85_spheroid_batch(size_t n, double const *a, size_t a_stride,
+                        double const *c, size_t c_stride, double const *axis,
+                        size_t axis_stride, double *q, int *status,
+                        int threads) noexcept {
+  return run_items(
+      n, a != nullptr && c != nullptr && axis != nullptr && q != nullptr,
+      valid_stride(a_stride, 1) && valid_stride(c_stride, 1) &&
+          valid_stride(axis_stride, PW85_DIM),
+      status, threads, [=](std::size_t i) noexcept {
+        return spheroid_one(a[i * a_stride], c[i * c_stride],
+                            axis + i * axis_stride, q + PW85_SYM * i);
+      });
+}
+
+int pw85_ellipsoid_rotation_batch(size_t n, double const *a, size_t a_stride,
+                                  double const *rot, size_t rot_stride,
+                                  double *q, int *status,
+                                  int threads) noexcept {
+  return run_items(
+      n, a != nullptr && rot != nullptr && q != nullptr,
+      valid_stride(a_stride, PW85_DIM) &&
+          valid_stride(rot_stride, PW85_DIM * PW85_DIM),
+      status, threads, [=](std::size_t i) noexcept {
+        return to_code(core::ellipsoid_rotation(
+            a + i * a_stride, rot + i * rot_stride, q + PW85_SYM * i));
+      });
+}
+
+int pw85_ellipsoid_quaternion_batch(size_t n, double const *a,
+                                    size_t a_stride, double const *p,
+                                    size_t p_stride, double *q, int *status,
+                                    int threads) noexcept {
+  return run_items(
+      n, a != nullptr && p != nullptr && q != nullptr,
+      valid_stride(a_stride, PW85_DIM) && valid_stride(p_stride, 4), status,
+      threads, [=](std::size_t i) noexcept {
+        return to_code(core::ellipsoid_quaternion(
+            a + i * a_stride, p + i * p_stride, q + PW85_SYM * i));
+      });
+}
+
+int pw85_principal_axes_batch(size_t n, double const *q, size_t q_stride,
+                              double *a, double *rot, int *status,
+                              int threads) noexcept {
+  return run_items(
+      n, q != nullptr && a != nullptr && rot != nullptr,
+      valid_stride(q_stride, PW85_SYM), status, threads,
+      [=](std::size_t i) noexcept {
+        return to_code(core::principal_axes(q + i * q_stride,
+                                            a + PW85_DIM * i,
+                                            rot + PW85_DIM * PW85_DIM * i));
+      });
 }
 
 }  // extern "C"

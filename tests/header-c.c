@@ -32,6 +32,15 @@ int main(void) {
                                          2) == PW85_SUCCESS;
   ok = ok && pw85_contact_derivatives_batch(1, r, 0, q, 0, q, 0, g, d, NULL,
                                             1) == PW85_SUCCESS;
+  double const c = 2., nz[PW85_DIM] = {0., 0., 1.};
+  ok = ok && pw85_spheroid_batch(1, a, 0, &c, 0, nz, 0, q2, status, 1) ==
+                 PW85_SUCCESS;
+  ok = ok && pw85_ellipsoid_rotation_batch(1, a, 0, rot, 0, q2, NULL, 1) ==
+                 PW85_SUCCESS;
+  ok = ok && pw85_ellipsoid_quaternion_batch(1, a, 0, p, 0, q2, NULL, 1) ==
+                 PW85_SUCCESS;
+  ok = ok && pw85_principal_axes_batch(1, q, 0, axes, dirs, NULL, 1) ==
+                 PW85_SUCCESS;
   pw85_index *index = NULL;
   size_t count = 1;
   ok = ok && pw85_index_create(NULL, &index) == PW85_SUCCESS;

@@ -35,5 +35,14 @@ int main() {
                                           2) == PW85_SUCCESS;
   ok = ok && pw85::contact_derivatives_batch(1, r, 0, q, 0, q2, 0, g, d,
                                              nullptr, 1) == PW85_SUCCESS;
+  double const c = 2., nz[pw85::dim] = {0., 0., 1.};
+  ok = ok && pw85::spheroid_batch(1, a, 0, &c, 0, nz, 0, q2, status, 1) ==
+                 PW85_SUCCESS;
+  ok = ok && pw85::ellipsoid_rotation_batch(1, axes, 0, rot, 0, q2, nullptr,
+                                            1) == PW85_SUCCESS;
+  ok = ok && pw85::ellipsoid_quaternion_batch(1, a, 0, p, 0, q2, nullptr,
+                                              1) == PW85_SUCCESS;
+  ok = ok && pw85::principal_axes_batch(1, q2, 0, axes, rot, nullptr, 1) ==
+                 PW85_SUCCESS;
   return ok ? 0 : 1;
 }

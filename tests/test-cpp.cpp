@@ -129,6 +129,31 @@ void test_wrappers() {
                                                   db, nullptr, 1),
                   ==, PW85_SUCCESS);
   g_assert_cmpmem(db + pw85::deriv::size, sizeof d_c, d_c, sizeof d_c);
+
+  // The constructors' batches: one item broadcast to two, as the C calls.
+  double const semi2[pw85::dim] = {3., 2., 0.5}, quat[4] = {0.5, 0.5, 0.5, 0.5};
+  double const radii[2] = {1., 4.}, axis[pw85::dim] = {0.6, 0., 0.8};
+  double qb[2 * pw85::sym], qc[pw85::sym], ab[2 * pw85::dim], rotb[18];
+  double ac[pw85::dim], rotc[9];
+  g_assert_cmpint(pw85::spheroid_batch(2, radii, 1, radii + 1, 0, axis, 0, qb,
+                                       sb, 1),
+                  ==, PW85_SUCCESS);
+  pw85_spheroid(4., 4., axis, qc);
+  g_assert_cmpmem(qb + pw85::sym, sizeof qc, qc, sizeof qc);
+  g_assert_cmpint(pw85::ellipsoid_quaternion_batch(2, semi2, 0, quat, 0, qb,
+                                                   nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_ellipsoid_quaternion(semi2, quat, qc), ==, PW85_SUCCESS);
+  g_assert_cmpmem(qb + pw85::sym, sizeof qc, qc, sizeof qc);
+  g_assert_cmpint(pw85::principal_axes_batch(2, qc, 0, ab, rotb, nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_principal_axes(qc, ac, rotc), ==, PW85_SUCCESS);
+  g_assert_cmpmem(ab + pw85::dim, sizeof ac, ac, sizeof ac);
+  g_assert_cmpmem(rotb + 9, sizeof rotc, rotc, sizeof rotc);
+  g_assert_cmpint(pw85::ellipsoid_rotation_batch(2, ac, 0, rotc, 0, qb, sb, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_ellipsoid_rotation(ac, rotc, qc), ==, PW85_SUCCESS);
+  g_assert_cmpmem(qb + pw85::sym, sizeof qc, qc, sizeof qc);
 }
 
 }  // namespace

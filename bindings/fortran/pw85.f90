@@ -50,7 +50,9 @@ module pw85
             pw85_principal_axes, pw85_contact_geometry, &
             pw85_contact_derivatives, pw85_batch_threads, &
             pw85_contact_function_batch, pw85_overlap_batch, &
-            pw85_contact_geometry_batch, pw85_contact_derivatives_batch
+            pw85_contact_geometry_batch, pw85_contact_derivatives_batch, &
+            pw85_spheroid_batch, pw85_ellipsoid_rotation_batch, &
+            pw85_ellipsoid_quaternion_batch, pw85_principal_axes_batch
   public :: pw85_contact, pw85_message, pw85_library_version
 
   interface
@@ -221,6 +223,54 @@ module pw85
       integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
       real(c_double), intent(in) :: r12(*), q1(*), q2(*)
       real(c_double), intent(inout) :: geometry(*), d(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_spheroid for n spheroids: q(PW85_SYM, n).
+    integer(c_int) function pw85_spheroid_batch(n, a, a_stride, c, &
+        c_stride, axis, axis_stride, q, status, threads) &
+        bind(C, name='pw85_spheroid_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, a_stride, c_stride, axis_stride
+      real(c_double), intent(in) :: a(*), c(*), axis(*)
+      real(c_double), intent(inout) :: q(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_ellipsoid_rotation for n ellipsoids: q(PW85_SYM, n); each
+    !> rotation's 9 entries row by row (a Fortran R(3, 3) holds Rᵀ so).
+    integer(c_int) function pw85_ellipsoid_rotation_batch(n, a, a_stride, &
+        rot, rot_stride, q, status, threads) &
+        bind(C, name='pw85_ellipsoid_rotation_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, a_stride, rot_stride
+      real(c_double), intent(in) :: a(*), rot(*)
+      real(c_double), intent(inout) :: q(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_ellipsoid_quaternion for n ellipsoids: q(PW85_SYM, n).
+    integer(c_int) function pw85_ellipsoid_quaternion_batch(n, a, a_stride, &
+        p, p_stride, q, status, threads) &
+        bind(C, name='pw85_ellipsoid_quaternion_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, a_stride, p_stride
+      real(c_double), intent(in) :: a(*), p(*)
+      real(c_double), intent(inout) :: q(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_principal_axes for n forms: a(3, n), rot(9, n).
+    integer(c_int) function pw85_principal_axes_batch(n, q, q_stride, a, &
+        rot, status, threads) bind(C, name='pw85_principal_axes_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, q_stride
+      real(c_double), intent(in) :: q(*)
+      real(c_double), intent(inout) :: a(*), rot(*)
       integer(c_int), intent(inout) :: status(*)
       integer(c_int), value :: threads
     end function

@@ -540,8 +540,11 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
                                       double d[PW85_DERIV_SIZE]) PW85_NOEXCEPT;
 
 /** @name Batches
- *  One call for n pairs (@since 2.2.0): the one path for callers that pay
- *  per call (Python, other interpreters), and the way to use threads.
+ *  One call for n pairs, or n ellipsoids for the constructors and
+ *  pw85_principal_axes() (@since 2.2.0): the one path for callers that pay
+ *  per call (Python, other interpreters), and the way to use threads. What
+ *  follows says "pair" for an item of any batch; the constructors' batches
+ *  give their own layouts.
  *
  *  Layouts. Pair i reads `r12 + i·r12_stride`, `q1 + i·q1_stride` and
  *  `q2 + i·q2_stride` (strides counted in doubles): PW85_DIM and PW85_SYM
@@ -695,6 +698,114 @@ PW85_API int pw85_contact_derivatives_batch(
     size_t n, double const *r12, size_t r12_stride, double const *q1,
     size_t q1_stride, double const *q2, size_t q2_stride, double *geometry,
     double *d, int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_spheroid() for n spheroids.
+ *
+ * Item i reads `a[i·a_stride]`, `c[i·c_stride]` and the unit vector
+ * `axis + i·axis_stride`, and writes `q + i·PW85_SYM` (strides 0 for one
+ * value or vector for every item; 1 and PW85_DIM when contiguous). Unlike
+ * pw85_spheroid(), which has no status, each item is checked: PW85_EDOM
+ * if a, c or an entry of the axis is NaN or infinite (q untouched),
+ * PW85_ERANGE if an entry of Q overflows (q written, as pw85_spheroid()
+ * writes it). The other items' forms are those of pw85_spheroid(), bit
+ * for bit. Everything else as in Batches.
+ *
+ * @param[in] n the number of spheroids (0 is valid).
+ * @param[in] a the equatorial radii (lengths).
+ * @param[in] a_stride 1 when contiguous, 0 for one radius.
+ * @param[in] c the polar radii (lengths).
+ * @param[in] c_stride 1 when contiguous, 0 for one radius.
+ * @param[in] axis the directions of the axes of revolution (unit vectors).
+ * @param[in] axis_stride PW85_DIM when contiguous, 0 for one direction.
+ * @param[out] q n·PW85_SYM doubles: item i at `q + i·PW85_SYM`.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing item;
+ *         PW85_EFAULT or PW85_EINVAL for the call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_spheroid_batch(size_t n, double const *a, size_t a_stride,
+                                 double const *c, size_t c_stride,
+                                 double const *axis, size_t axis_stride,
+                                 double *q, int *status,
+                                 int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_ellipsoid_rotation() for n ellipsoids.
+ *
+ * Item i reads the semi-axes `a + i·a_stride` and the rotation
+ * `rot + i·rot_stride` (9 doubles, row by row), and writes
+ * `q + i·PW85_SYM`; strides 0 for one record for every item.
+ *
+ * @param[in] n the number of ellipsoids (0 is valid).
+ * @param[in] a the semi-axes (lengths).
+ * @param[in] a_stride PW85_DIM when contiguous, 0 for one triple.
+ * @param[in] rot the rotations.
+ * @param[in] rot_stride 9 when contiguous, 0 for one rotation.
+ * @param[out] q n·PW85_SYM doubles: item i at `q + i·PW85_SYM`.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing item (those of
+ *         pw85_ellipsoid_rotation()); PW85_EFAULT or PW85_EINVAL for the
+ *         call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_ellipsoid_rotation_batch(size_t n, double const *a,
+                                           size_t a_stride, double const *rot,
+                                           size_t rot_stride, double *q,
+                                           int *status,
+                                           int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_ellipsoid_quaternion() for n ellipsoids.
+ *
+ * Item i reads the semi-axes `a + i·a_stride` and the quaternion
+ * `p + i·p_stride` (w, x, y, z), and writes `q + i·PW85_SYM`; strides 0
+ * for one record for every item.
+ *
+ * @param[in] n the number of ellipsoids (0 is valid).
+ * @param[in] a the semi-axes (lengths).
+ * @param[in] a_stride PW85_DIM when contiguous, 0 for one triple.
+ * @param[in] p the quaternions.
+ * @param[in] p_stride 4 when contiguous, 0 for one quaternion.
+ * @param[out] q n·PW85_SYM doubles: item i at `q + i·PW85_SYM`.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing item (those of
+ *         pw85_ellipsoid_quaternion()); PW85_EFAULT or PW85_EINVAL for
+ *         the call itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_ellipsoid_quaternion_batch(size_t n, double const *a,
+                                             size_t a_stride, double const *p,
+                                             size_t p_stride, double *q,
+                                             int *status,
+                                             int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_principal_axes() for n forms.
+ *
+ * Item i reads `q + i·q_stride` and writes `a + i·PW85_DIM` and
+ * `rot + 9·i`.
+ *
+ * @param[in] n the number of forms (0 is valid).
+ * @param[in] q the quadratic forms.
+ * @param[in] q_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] a n·PW85_DIM doubles: the semi-axes, decreasing, of item i
+ *             at `a + i·PW85_DIM`.
+ * @param[out] rot 9·n doubles: the rotation of item i at `rot + 9·i`.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing item (those of
+ *         pw85_principal_axes()); PW85_EFAULT or PW85_EINVAL for the call
+ *         itself.
+ * @since 2.2.0
+ */
+PW85_API int pw85_principal_axes_batch(size_t n, double const *q,
+                                       size_t q_stride, double *a,
+                                       double *rot, int *status,
+                                       int threads) PW85_NOEXCEPT;
 /** @} */
 
 #ifdef __cplusplus

@@ -226,6 +226,49 @@ inline int contact_derivatives_batch(std::size_t n, double const *r12,
                                         threads);
 }
 
+/** pw85_spheroid() for n spheroids, q = n×sym, with a status per item
+ *  (pw85_spheroid_batch()).
+ *  @since 2.2.0 */
+inline int spheroid_batch(std::size_t n, double const *a,
+                          std::size_t a_stride, double const *c,
+                          std::size_t c_stride, double const *axis,
+                          std::size_t axis_stride, double *q, int *status,
+                          int threads) noexcept {
+  return pw85_spheroid_batch(n, a, a_stride, c, c_stride, axis, axis_stride,
+                             q, status, threads);
+}
+
+/** ellipsoid_rotation() for n ellipsoids, q = n×sym
+ *  (pw85_ellipsoid_rotation_batch()).
+ *  @since 2.2.0 */
+inline int ellipsoid_rotation_batch(std::size_t n, double const *a,
+                                    std::size_t a_stride, double const *rot,
+                                    std::size_t rot_stride, double *q,
+                                    int *status, int threads) noexcept {
+  return pw85_ellipsoid_rotation_batch(n, a, a_stride, rot, rot_stride, q,
+                                       status, threads);
+}
+
+/** ellipsoid_quaternion() for n ellipsoids, q = n×sym
+ *  (pw85_ellipsoid_quaternion_batch()).
+ *  @since 2.2.0 */
+inline int ellipsoid_quaternion_batch(std::size_t n, double const *a,
+                                      std::size_t a_stride, double const *p,
+                                      std::size_t p_stride, double *q,
+                                      int *status, int threads) noexcept {
+  return pw85_ellipsoid_quaternion_batch(n, a, a_stride, p, p_stride, q,
+                                         status, threads);
+}
+
+/** principal_axes() for n forms, a = n×dim, rot = n×9
+ *  (pw85_principal_axes_batch()).
+ *  @since 2.2.0 */
+inline int principal_axes_batch(std::size_t n, double const *q,
+                                std::size_t q_stride, double *a, double *rot,
+                                int *status, int threads) noexcept {
+  return pw85_principal_axes_batch(n, q, q_stride, a, rot, status, threads);
+}
+
 }  // namespace pw85
 
 // C++17 or later (MSVC reports its standard in _MSVC_LANG). Doxygen, which

@@ -256,3 +256,150 @@ def test_scalar_calls_unchanged(pairs):
     assert pypw85.contact_function(r12[0], q1[0], q2[0]).shape == (2,)
     assert type(pypw85.overlap(r12[0], q1[0], q2[0])) is int
     assert pypw85.contact_geometry(list(r12[0]), q1[0], q2[0]).shape == (8,)
+
+
+# The constructors and principal_axes on arrays (pw85_*_batch of the
+# ellipsoids): the same items bit for bit as single calls, broadcasting,
+# the first failure named, scalar calls unchanged.
+
+def random_rotation(rng):
+    """A rotation matrix (3, 3) from a random unit quaternion."""
+    p = rng.normal(size=4)
+    w, x, y, z = p / np.linalg.norm(p)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+@pytest.fixture
+def ellipsoids(rng):
+    """600 items (more than two chunks of 256) for each constructor."""
+    n = 600
+    axes = 10.0 ** rng.uniform(-2.0, 2.0, (n, 3))
+    rot = np.array([random_rotation(rng) for _ in range(n)])
+    p = rng.normal(size=(n, 4))
+    p /= np.linalg.norm(p, axis=1)[:, None]
+    unit = rng.normal(size=(n, 3))
+    unit /= np.linalg.norm(unit, axis=1)[:, None]
+    q = np.array([random_spd(rng) for _ in range(n)])
+    return {"a": axes[:, 0], "c": axes[:, 1], "n": unit, "axes": axes,
+            "rot": rot, "p": p, "q": q}
+
+
+# name, its array arguments (keys of the fixture), and the items' results
+# as one flat float64 array.
+CONSTRUCTORS = {
+    "spheroid": ("a", "c", "n"),
+    "ellipsoid_rotation": ("axes", "rot"),
+    "ellipsoid_quaternion": ("axes", "p"),
+    "principal_axes": ("q",),
+}
+
+
+def flat(name, result, lead):
+    if name == "principal_axes":
+        a, rot = result
+        return np.concatenate([a.reshape(lead + (3,)),
+                               rot.reshape(lead + (9,))], axis=-1)
+    return result
+
+
+@pytest.mark.parametrize("name", CONSTRUCTORS)
+@pytest.mark.parametrize("threads", [1, 2, 8, 0])
+def test_constructors_same_as_single_calls(name, threads, ellipsoids):
+    args = [ellipsoids[k] for k in CONSTRUCTORS[name]]
+    function = getattr(pypw85, name)
+    result = flat(name, function(*args, threads=threads), (600,))
+    expected = np.array([flat(name, function(*item), ())
+                         for item in zip(*args)])
+    assert result.shape == expected.shape
+    assert np.array_equal(result, expected)  # bit for bit
+    # Leading axes (20, 30): the same numbers in that shape.
+    shaped = [x.reshape((20, 30) + x.shape[1:]) for x in args]
+    result2 = flat(name, function(*shaped, threads=threads), (20, 30))
+    assert np.array_equal(result2.reshape(600, -1), expected)
+
+
+def test_constructors_broadcasting(ellipsoids):
+    e = ellipsoids
+    # One axis of revolution for every spheroid, and one radius c.
+    q = pypw85.spheroid(e["a"], 2.0, e["n"][3])
+    assert q.shape == (600, 6)
+    for i in (0, 299, 599):
+        assert np.array_equal(q[i], pypw85.spheroid(e["a"][i], 2.0,
+                                                    e["n"][3]))
+    # One rotation (3, 3) or flat (9,), many semi-axes; and a grid.
+    for rot in (e["rot"][5], e["rot"][5].reshape(9)):
+        q = pypw85.ellipsoid_rotation(e["axes"], rot)
+        assert q.shape == (600, 6)
+        assert np.array_equal(q[17], pypw85.ellipsoid_rotation(e["axes"][17],
+                                                               e["rot"][5]))
+    q = pypw85.ellipsoid_quaternion(e["axes"][:4, None], e["p"][None, :3])
+    assert q.shape == (4, 3, 6)
+    assert np.array_equal(q[2, 1], pypw85.ellipsoid_quaternion(e["axes"][2],
+                                                               e["p"][1]))
+    a, rot = pypw85.principal_axes(e["q"][:12].reshape(3, 4, 6))
+    assert a.shape == (3, 4, 3) and rot.shape == (3, 4, 3, 3)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_constructors_first_failure(threads, ellipsoids):
+    e = {k: v.copy() for k, v in ellipsoids.items()}
+    e["axes"][300, 1] = -1.0        # EINVAL
+    e["p"][450] *= 2.0              # EINVAL
+    e["axes"][500, 0] = np.nan      # EDOM
+    with pytest.raises(pypw85.Error) as info:
+        pypw85.ellipsoid_quaternion(e["axes"].reshape(2, 300, 3),
+                                    e["p"].reshape(2, 300, 4),
+                                    threads=threads)
+    err = info.value
+    assert (err.status, err.index, err.where) == (
+        pypw85.EINVAL, (1, 0), "ellipsoid_quaternion")
+    assert "item (1, 0) of (2, 300) (3 of 600 failed): a = array([" \
+        in str(err)
+    expected = np.zeros(600, dtype=np.intc)
+    expected[[300, 450, 500]] = [pypw85.EINVAL, pypw85.EINVAL, pypw85.EDOM]
+    assert np.array_equal(err.statuses.reshape(600), expected)
+    # A failing item's q untouched, the others computed.
+    q = np.full((600, 6), -7.0)
+    e["q"][10] = [1.0, 2.0, 0.0, 1.0, 0.0, 1.0]  # not positive definite
+    with pytest.raises(pypw85.Error) as info:
+        pypw85.ellipsoid_rotation(e["axes"], e["rot"], q, threads=threads)
+    assert (info.value.status, info.value.index) == (pypw85.EINVAL, (300,))
+    assert np.array_equal(q[300], np.full(6, -7.0))
+    assert np.array_equal(q[299], pypw85.ellipsoid_rotation(e["axes"][299],
+                                                            e["rot"][299]))
+    with pytest.raises(pypw85.Error) as info:
+        pypw85.principal_axes(e["q"], threads=threads)
+    assert (info.value.status, info.value.index) == (pypw85.ENOTPOSDEF, (10,))
+    c = np.ones(600)
+    c[77] = np.inf
+    with pytest.raises(pypw85.Error) as info:
+        pypw85.spheroid(e["a"], c, e["n"], threads=threads)
+    assert (info.value.status, info.value.index) == (pypw85.EDOM, (77,))
+
+
+def test_constructors_bad_arrays(ellipsoids):
+    e = ellipsoids
+    with pytest.raises(ValueError, match=r"^rot: expected shape \(3, 3\) or "
+                       r"\(\.\.\., 3, 3\), got \(600, 9\)"):
+        pypw85.ellipsoid_rotation(e["axes"], e["rot"].reshape(600, 9))
+    with pytest.raises(ValueError, match=r"^spheroid: the leading axes of "
+                       r"a \(600,\), c \(599,\) and n \(600, 3\) do not "
+                       r"broadcast"):
+        pypw85.spheroid(e["a"], e["c"][:599], e["n"])
+    with pytest.raises(ValueError, match="^threads: expected"):
+        pypw85.principal_axes(e["q"], threads=-1)
+
+
+def test_constructors_scalar_calls_unchanged(ellipsoids):
+    e = ellipsoids
+    assert pypw85.spheroid(1.0, 2.0, [0.0, 0.0, 1.0]).shape == (6,)
+    assert pypw85.ellipsoid_rotation(e["axes"][0], e["rot"][0]).shape == (6,)
+    assert pypw85.ellipsoid_quaternion(e["axes"][0], e["p"][0]).shape == (6,)
+    a, rot = pypw85.principal_axes(e["q"][0])
+    assert a.shape == (3,) and rot.shape == (3, 3)
+    # An empty batch.
+    assert pypw85.ellipsoid_quaternion(np.ones((0, 3)),
+                                       e["p"][0]).shape == (0, 6)

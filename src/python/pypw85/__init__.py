@@ -287,25 +287,31 @@ def _cholesky_solve(l, b, x=None):
     return x
 
 
-def spheroid(a, c, n, q=None):
+def spheroid(a, c, n, q=None, *, threads=1):
     """Return the quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ.
+
+    On arrays (a or c of shape (...), n of shape (..., 3), leading axes
+    broadcast together), one form per item, in one call of
+    ``pw85_spheroid_batch``.
 
     Parameters
     ----------
-    a : float
+    a : float or array_like, shape (...)
         The equatorial radius (a length).
-    c : float
+    c : float or array_like, shape (...)
         The polar radius (a length, same unit as a).
-    n : array_like, shape (3,)
+    n : array_like, shape (3,) or (..., 3)
         The direction of the axis of revolution, a unit vector (not
         normalised here: a non-unit n gives the formula's Q, which is not a
         spheroid).
-    q : numpy.ndarray, shape (6,), float64, optional
+    q : numpy.ndarray, shape (6,) or (..., 6), float64, optional
         Preallocated output, modified in place. A new array if None.
+    threads : int, optional
+        Arrays only: as in `contact_function`.
 
     Returns
     -------
-    q : numpy.ndarray, shape (6,)
+    q : numpy.ndarray, shape (6,) or (..., 6)
         The symmetric matrix Q (a squared length; upper triangle, row by
         row).
 
@@ -315,8 +321,12 @@ def spheroid(a, c, n, q=None):
         If an argument has the wrong shape or type.
     Error
         `EDOM` if a, c or an entry of n is not finite (q untouched);
-        `ERANGE` if an entry of Q overflows (q then holds it).
+        `ERANGE` if an entry of Q overflows (q then holds it). On arrays,
+        for the first failing item (`index`, `statuses`; the other items
+        computed).
     """
+    if _batch.is_batch_of((a, 0), (c, 0), (n, 1)):
+        return _batch.spheroid(a, c, n, q, threads)
     a = _real("a", a)
     c = _real("c", c)
     n = _vector("n", n, DIM)
@@ -646,27 +656,32 @@ def _rotation(name, rot):
     return _vector(name, m, DIM * DIM)
 
 
-def ellipsoid_rotation(a, rot, q=None):
+def ellipsoid_rotation(a, rot, q=None, *, threads=1):
     """Return Q = R·diag(a²)·Rᵀ, the ellipsoid of semi-axes a along the
     columns of R.
 
     Each entry is computed in double-double arithmetic and rounded once
-    (see pw85.h for the error bound); R is used as given.
+    (see pw85.h for the error bound); R is used as given. On arrays (a of
+    shape (..., 3), rot of shape (..., 3, 3), leading axes broadcast
+    together), one form per item, in one call of
+    ``pw85_ellipsoid_rotation_batch``.
 
     Parameters
     ----------
-    a : array_like, shape (3,)
+    a : array_like, shape (3,) or (..., 3)
         The semi-axes (lengths, each > 0).
-    rot : array_like, shape (3, 3) or (9,)
+    rot : array_like, shape (3, 3), (9,) or (..., 3, 3)
         The rotation R, column j the direction of a[j] (row by row when
         flat: ``rot[3*i + j] = R[i, j]``), orthonormal to `UNIT_TOL`; a
         reflection is accepted.
-    q : numpy.ndarray, shape (6,), float64, optional
+    q : numpy.ndarray, shape (6,) or (..., 6), float64, optional
         Preallocated output, modified in place. A new array if None.
+    threads : int, optional
+        Arrays only: as in `contact_function`.
 
     Returns
     -------
-    q : numpy.ndarray, shape (6,)
+    q : numpy.ndarray, shape (6,) or (..., 6)
 
     Raises
     ------
@@ -675,8 +690,11 @@ def ellipsoid_rotation(a, rot, q=None):
     Error
         `EDOM` (NaN or infinite input), `EINVAL` (a semi-axis not > 0, R
         not orthonormal), `ERANGE` (a² out of the normal range). q is
-        untouched.
+        untouched (on arrays: that item's q; the error names the first
+        failing item).
     """
+    if _batch.is_batch_of((a, 1), (rot, 2)):
+        return _batch.ellipsoid_rotation(a, rot, q, threads)
     a = _vector("a", a, DIM)
     rot = _rotation("rot", rot)
     q = _output("q", q, SYM)
@@ -689,26 +707,31 @@ def ellipsoid_rotation(a, rot, q=None):
     return q
 
 
-def ellipsoid_quaternion(a, p, q=None):
+def ellipsoid_quaternion(a, p, q=None, *, threads=1):
     """Return the ellipsoid of semi-axes a turned by the unit quaternion p.
 
     Q = R(p)·diag(a²)·R(p)ᵀ, where R(p) maps the coordinate axes onto the
     principal directions (v ↦ p·v·p*, the convention of HOOMD-blue and
-    LAMMPS); p is normalised, and computed with, in double-double.
+    LAMMPS); p is normalised, and computed with, in double-double. On
+    arrays (a of shape (..., 3), p of shape (..., 4), leading axes
+    broadcast together), one form per item, in one call of
+    ``pw85_ellipsoid_quaternion_batch``.
 
     Parameters
     ----------
-    a : array_like, shape (3,)
+    a : array_like, shape (3,) or (..., 3)
         The semi-axes (lengths, each > 0).
-    p : array_like, shape (4,)
+    p : array_like, shape (4,) or (..., 4)
         The quaternion (w, x, y, z), of norm 1 to `UNIT_TOL` (on its
         square).
-    q : numpy.ndarray, shape (6,), float64, optional
+    q : numpy.ndarray, shape (6,) or (..., 6), float64, optional
         Preallocated output, modified in place. A new array if None.
+    threads : int, optional
+        Arrays only: as in `contact_function`.
 
     Returns
     -------
-    q : numpy.ndarray, shape (6,)
+    q : numpy.ndarray, shape (6,) or (..., 6)
 
     Raises
     ------
@@ -716,8 +739,11 @@ def ellipsoid_quaternion(a, p, q=None):
         If an argument has the wrong shape or type.
     Error
         `EDOM`, `EINVAL` (a semi-axis not > 0, p not of unit norm),
-        `ERANGE`. q is untouched.
+        `ERANGE`. q is untouched (on arrays: that item's q; the error
+        names the first failing item).
     """
+    if _batch.is_batch_of((a, 1), (p, 1)):
+        return _batch.ellipsoid_quaternion(a, p, q, threads)
     a = _vector("a", a, DIM)
     p = _vector("p", p, 4)
     q = _output("q", q, SYM)
@@ -729,24 +755,28 @@ def ellipsoid_quaternion(a, p, q=None):
     return q
 
 
-def principal_axes(q):
+def principal_axes(q, *, threads=1):
     """Return the semi-axes and principal directions of an ellipsoid.
 
     The inverse of `ellipsoid_rotation`: eigenvectors from GSL's symmetric
     eigensolver, semi-axes from their Rayleigh quotients in double-double
     (accurate to a few ulps even for the small axes of needles and discs
-    with distinct semi-axes; see pw85.h).
+    with distinct semi-axes; see pw85.h). On an array of forms (shape
+    (..., 6)), the axes of each, in one call of
+    ``pw85_principal_axes_batch``.
 
     Parameters
     ----------
-    q : array_like, shape (6,)
+    q : array_like, shape (6,) or (..., 6)
         The quadratic form Q.
+    threads : int, optional
+        Arrays only: as in `contact_function`.
 
     Returns
     -------
-    a : numpy.ndarray, shape (3,)
+    a : numpy.ndarray, shape (3,) or (..., 3)
         The semi-axes, in decreasing order.
-    rot : numpy.ndarray, shape (3, 3)
+    rot : numpy.ndarray, shape (3, 3) or (..., 3, 3)
         The rotation R (det +1): ``rot[:, j]`` is the direction of
         ``a[j]``; in columns 0 and 1, the entry of largest magnitude is
         positive.
@@ -756,8 +786,11 @@ def principal_axes(q):
     ValueError, TypeError
         If q has the wrong shape or type.
     Error
-        `EDOM`, `ENOTPOSDEF`.
+        `EDOM`, `ENOTPOSDEF`, `ERANGE` (see pw85.h); on arrays, for the
+        first failing item (`index`, `statuses`).
     """
+    if _batch.is_batch_of((q, 1)):
+        return _batch.principal_axes(q, threads)
     q = _vector("q", q, SYM)
     a = np.empty(DIM)
     rot = np.empty((DIM, DIM))

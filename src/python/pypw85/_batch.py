@@ -2,10 +2,13 @@
 """Arrays of pairs: one call of a batch function of pw85.h per call.
 
 `contact_function`, `overlap`, `contact_geometry` and `contact_derivatives`
-of pypw85 come here when an input has more than one dimension. The leading
-axes of r12 (..., 3), q1 (..., 6) and q2 (..., 6) broadcast as NumPy's do;
-the outputs have the broadcast shape followed by the shape of one result.
-An input whose leading axes hold one pair is passed once, with a stride of
+of pypw85 come here when an input has more than one dimension; `spheroid`,
+`ellipsoid_rotation`, `ellipsoid_quaternion` and `principal_axes` when an
+input has more axes than one item's (a, c: 0; n, a: 1; rot: 2). The leading
+axes of r12 (..., 3), q1 (..., 6) and q2 (..., 6) (or of each input before
+its item's axes) broadcast as NumPy's do; the outputs have the broadcast
+shape followed by the shape of one result. An input whose leading axes
+hold one item is passed once, with a stride of
 0 (no copy); one of the broadcast shape is passed as is when C-contiguous
 float64; any other is copied to the broadcast shape. Then one C call does
 every pair, with the GIL released (ctypes releases it around a call); the
@@ -50,78 +53,96 @@ def threads_count(threads):
     return int(threads)
 
 
-def _real_array(name, x, size):
-    """x as a float64 array of shape (..., size), or raise."""
+def _real_array(name, x, item):
+    """x as a float64 array of shape (...,) + item, or raise."""
     try:
         a = np.asarray(x)
     except (TypeError, ValueError) as exc:
-        raise ValueError("%s: expected an array of shape (..., %d), got %s "
-                         "(%s)" % (name, size, type(x).__name__, exc)) \
+        raise ValueError("%s: expected an array of shape (...%s), got %s "
+                         "(%s)" % (name, _dims(item), type(x).__name__, exc)) \
             from None
     if a.dtype.kind not in "iuf":
         raise TypeError("%s: expected real numbers (float64), got an array "
                         "of dtype %s" % (name, a.dtype))
-    if a.ndim == 0 or a.shape[-1] != size:
-        raise ValueError("%s: expected shape (%d,) or (..., %d), got %s"
-                         % (name, size, size, a.shape))
+    if a.ndim < len(item) or a.shape[a.ndim - len(item):] != item:
+        raise ValueError("%s: expected shape %s or (...%s), got %s"
+                         % (name, item, _dims(item), a.shape))
     return a.astype(np.float64, copy=False)
 
 
-class Pairs:
-    """The inputs of a batch: broadcast shape, count, and for each input
-    the array handed to C and its stride in doubles."""
+def _dims(item):
+    return "".join(", %d" % k for k in item)
 
-    def __init__(self, where, r12, q1, q2):
+
+class Items:
+    """The inputs of a batch: broadcast shape, count, and for each input
+    the array handed to C and its stride in doubles.
+
+    inputs: (name, value, item shape) for each input of the C function, in
+    its order; `noun` names an item in messages."""
+
+    def __init__(self, where, inputs, noun="pair"):
         self.where = where
-        arrays = [_real_array("r12", r12, DIM), _real_array("q1", q1, SYM),
-                  _real_array("q2", q2, SYM)]
+        self.noun = noun
+        self.names = [name for name, _, _ in inputs]
+        arrays = [_real_array(name, x, item) for name, x, item in inputs]
+        leading = [a.shape[:a.ndim - len(item)]
+                   for a, (_, _, item) in zip(arrays, inputs)]
         try:
-            self.shape = np.broadcast_shapes(*(a.shape[:-1] for a in arrays))
+            self.shape = np.broadcast_shapes(*leading)
         except ValueError:
+            shapes = ["%s %s" % (name, a.shape)
+                      for name, a in zip(self.names, arrays)]
             raise ValueError(
-                "%s: the leading axes of r12 %s, q1 %s and q2 %s do not "
-                "broadcast together" % ((where,) + tuple(
-                    a.shape for a in arrays))) from None
+                "%s: the leading axes of %s and %s do not broadcast "
+                "together" % (where, ", ".join(shapes[:-1]), shapes[-1])) \
+                from None
         self.n = int(np.prod(self.shape, dtype=np.int64))
         self.inputs = []  # (array, stride)
-        for a in arrays:
-            size = a.shape[-1]
-            if a.size == size:  # one record for every pair
+        for a, (_, _, item) in zip(arrays, inputs):
+            size = int(np.prod(item, dtype=np.int64))
+            if a.size == size:  # one record for every item
                 a = np.ascontiguousarray(a).reshape(size)
                 stride = 0
             else:
-                if a.shape[:-1] != self.shape:
-                    a = np.broadcast_to(a, self.shape + (size,))
+                if a.shape[:a.ndim - len(item)] != self.shape:
+                    a = np.broadcast_to(a, self.shape + item)
                 a = np.ascontiguousarray(a).reshape(self.n, size)
                 stride = size
             self.inputs.append((a, stride))
 
     def arguments(self):
-        """n, then (address, stride) of r12, q1, q2: the first arguments
+        """n, then (address, stride) of each input: the first arguments
         of a batch function."""
         args = [self.n]
         for a, stride in self.inputs:
             args += [a.ctypes.data, stride]
         return args
 
-    def pair(self, i):
-        """The inputs of pair i (flat index), for messages."""
+    def item(self, i):
+        """The inputs of item i (flat index), for messages."""
         return [a if stride == 0 else a[i] for a, stride in self.inputs]
 
     def raise_first(self, code, status):
-        """Raise Error for the first failing pair (status: n ints)."""
+        """Raise Error for the first failing item (status: n ints)."""
         i = int(np.flatnonzero(status)[0])
         index = np.unravel_index(i, self.shape)
         index = tuple(int(k) for k in index)
-        r12, q1, q2 = self.pair(i)
+        values = ", ".join("%s = %r" % (name, value) for name, value
+                           in zip(self.names, self.item(i)))
         error = Error(code, self.where,
-                      "pair %s of %s (%d of %d failed): r12 = %r, q1 = %r, "
-                      "q2 = %r" % (index, self.shape,
-                                   np.count_nonzero(status), self.n, r12, q1,
-                                   q2))
+                      "%s %s of %s (%d of %d failed): %s"
+                      % (self.noun, index, self.shape,
+                         np.count_nonzero(status), self.n, values))
         error.index = index
         error.statuses = status.reshape(self.shape)
         raise error
+
+
+def pairs_of(where, r12, q1, q2):
+    """The inputs of a batch of pairs."""
+    return Items(where, [("r12", r12, (DIM,)), ("q1", q1, (SYM,)),
+                         ("q2", q2, (SYM,))])
 
 
 def output(name, out, shape, dtype=np.float64):
@@ -171,7 +192,7 @@ def _call(pairs, c_function, outputs, threads):
 
 
 def contact_function(r12, q1, q2, out, threads):
-    pairs = Pairs("contact_function", r12, q1, q2)
+    pairs = pairs_of("contact_function", r12, q1, q2)
     out = output("out", out, pairs.shape + (2,))
     _unaliased(pairs, out)
     _call(pairs, lib.pw85_contact_function_batch, [out], threads)
@@ -179,14 +200,14 @@ def contact_function(r12, q1, q2, out, threads):
 
 
 def overlap(r12, q1, q2, threads):
-    pairs = Pairs("overlap", r12, q1, q2)
+    pairs = pairs_of("overlap", r12, q1, q2)
     result = np.empty(pairs.shape, dtype=np.intc)
     _call(pairs, lib.pw85_overlap_batch, [result], threads)
     return result
 
 
 def contact_geometry(r12, q1, q2, out, threads):
-    pairs = Pairs("contact_geometry", r12, q1, q2)
+    pairs = pairs_of("contact_geometry", r12, q1, q2)
     out = output("out", out, pairs.shape + (GEOM_SIZE,))
     _unaliased(pairs, out)
     _call(pairs, lib.pw85_contact_geometry_batch, [out], threads)
@@ -194,7 +215,7 @@ def contact_geometry(r12, q1, q2, out, threads):
 
 
 def contact_derivatives(r12, q1, q2, geometry, d, threads):
-    pairs = Pairs("contact_derivatives", r12, q1, q2)
+    pairs = pairs_of("contact_derivatives", r12, q1, q2)
     geometry = output("geometry", geometry, pairs.shape + (GEOM_SIZE,))
     d = output("d", d, pairs.shape + (DERIV_SIZE,))
     if np.may_share_memory(geometry, d):
@@ -202,6 +223,57 @@ def contact_derivatives(r12, q1, q2, geometry, d, threads):
     _unaliased(pairs, geometry, d)
     _call(pairs, lib.pw85_contact_derivatives_batch, [geometry, d], threads)
     return geometry, d
+
+
+def is_batch_of(*inputs):
+    """True if an input (value, item ndim) has more axes than one item.
+
+    An input NumPy cannot convert (ragged lists) is not a batch: the
+    single-item path names it in its error."""
+    for x, k in inputs:
+        try:
+            if np.ndim(x) > k:
+                return True
+        except (TypeError, ValueError):
+            pass
+    return False
+
+
+def spheroid(a, c, n, q, threads):
+    items = Items("spheroid", [("a", a, ()), ("c", c, ()), ("n", n, (DIM,))],
+                  "item")
+    q = output("q", q, items.shape + (SYM,))
+    _unaliased(items, q)
+    _call(items, lib.pw85_spheroid_batch, [q], threads)
+    return q
+
+
+def ellipsoid_rotation(a, rot, q, threads):
+    if np.shape(rot) == (DIM * DIM,):
+        rot = np.reshape(rot, (DIM, DIM))
+    items = Items("ellipsoid_rotation",
+                  [("a", a, (DIM,)), ("rot", rot, (DIM, DIM))], "item")
+    q = output("q", q, items.shape + (SYM,))
+    _unaliased(items, q)
+    _call(items, lib.pw85_ellipsoid_rotation_batch, [q], threads)
+    return q
+
+
+def ellipsoid_quaternion(a, p, q, threads):
+    items = Items("ellipsoid_quaternion", [("a", a, (DIM,)), ("p", p, (4,))],
+                  "item")
+    q = output("q", q, items.shape + (SYM,))
+    _unaliased(items, q)
+    _call(items, lib.pw85_ellipsoid_quaternion_batch, [q], threads)
+    return q
+
+
+def principal_axes(q, threads):
+    items = Items("principal_axes", [("q", q, (SYM,))], "item")
+    a = np.empty(items.shape + (DIM,))
+    rot = np.empty(items.shape + (DIM, DIM))
+    _call(items, lib.pw85_principal_axes_batch, [a, rot], threads)
+    return a, rot
 
 
 def batch_threads(threads=0, n=2**62):

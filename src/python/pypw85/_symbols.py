@@ -45,6 +45,15 @@ LIBPW85 = {
                                     + [_INT]),
     "pw85_contact_derivatives_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 3
                                        + [_INT]),
+    # The constructors' batches: n, (address, stride) of each input, the
+    # outputs, the statuses and the thread count.
+    "pw85_spheroid_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2 + [_INT]),
+    "pw85_ellipsoid_rotation_batch": (_INT, [_SIZE] + [_DOUBLE_P, _SIZE] * 2
+                                      + [_DOUBLE_P] * 2 + [_INT]),
+    "pw85_ellipsoid_quaternion_batch": (_INT, [_SIZE] + [_DOUBLE_P, _SIZE] * 2
+                                        + [_DOUBLE_P] * 2 + [_INT]),
+    "pw85_principal_axes_batch": (_INT, [_SIZE, _DOUBLE_P, _SIZE]
+                                  + [_DOUBLE_P] * 3 + [_INT]),
 }
 
 #: libpw85_legacy (include/pw85/pw85_legacy.h).
