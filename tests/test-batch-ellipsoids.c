@@ -99,15 +99,6 @@ typedef struct {
   double *in[3];
 } Items;
 
-static void unit_quaternion(GRand *rng, double p[4]) {
-  double norm = 0.;
-  for (int k = 0; k < 4; k++) {
-    p[k] = g_rand_double_range(rng, -1., 1.);
-    norm += p[k] * p[k];
-  }
-  for (int k = 0; k < 4; k++) p[k] /= sqrt(norm);
-}
-
 /* Semi-axes from 0.01 to 100; rotations from unit quaternions (orthonormal
  * to a few ulps); forms with eigenvalues from 1e-4 to 1e4. */
 static Items make_items(Kind const *kind, guint32 seed) {
@@ -119,20 +110,14 @@ static Items make_items(Kind const *kind, guint32 seed) {
     double p[4], e[3];
     for (int k = 0; k < 3; k++)
       e[k] = pow(10., g_rand_double_range(rng, -2., 2.));
-    unit_quaternion(rng, p);
+    random_unit_quaternion(rng, p);
     if (kind->single_at == spheroid_at) {
       items.in[0][i] = e[0], items.in[1][i] = e[1];
       double const norm = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
       for (int k = 0; k < 3; k++) items.in[2][3 * i + k] = p[k] / norm;
     } else if (kind->single_at == rotation_at) {
       memcpy(items.in[0] + 3 * i, e, sizeof e);
-      double const w = p[0], x = p[1], y = p[2], z = p[3];
-      double const r[9] = {1. - 2. * (y * y + z * z), 2. * (x * y - w * z),
-                           2. * (x * z + w * y),      2. * (x * y + w * z),
-                           1. - 2. * (x * x + z * z), 2. * (y * z - w * x),
-                           2. * (x * z - w * y),      2. * (y * z + w * x),
-                           1. - 2. * (x * x + y * y)};
-      memcpy(items.in[1] + 9 * i, r, sizeof r);
+      quaternion_rotation(p, items.in[1] + 9 * i);
     } else if (kind->single_at == quaternion_at) {
       memcpy(items.in[0] + 3 * i, e, sizeof e);
       memcpy(items.in[1] + 4 * i, p, sizeof p);

@@ -141,20 +141,8 @@ static void test_hand_derived(void) {
  * to a few u), and semi-axes with aspect ratios up to max_aspect. */
 static void random_case(GRand *rng, double max_aspect, double a[3],
                         double p[4], double rot[9]) {
-  double n = 0.0;
-  for (int i = 0; i < 4; i++) {
-    p[i] = g_rand_double_range(rng, -1.0, 1.0);
-    n += p[i] * p[i];
-  }
-  n = sqrt(n);
-  for (int i = 0; i < 4; i++) p[i] /= n;
-  double const w = p[0], x = p[1], y = p[2], z = p[3];
-  double const r[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),
-                       2 * (x * z + w * y),     2 * (x * y + w * z),
-                       1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-                       2 * (x * z - w * y),     2 * (y * z + w * x),
-                       1 - 2 * (x * x + y * y)};
-  memcpy(rot, r, sizeof r);
+  random_unit_quaternion(rng, p);
+  quaternion_rotation(p, rot);
   double const size = pow(10.0, g_rand_double_range(rng, -3.0, 3.0));
   for (int i = 0; i < 3; i++)
     a[i] = size * pow(max_aspect, -g_rand_double(rng));

@@ -48,21 +48,42 @@ static inline void install_failing_gsl_handler(void) {
 
 /* q = R·diag(e)·Rᵀ (storage of pw85.h) for a random rotation R, from a
  * random unit quaternion: a symmetric form of eigenvalues e. */
+/* A random unit quaternion (w, x, y, z): uniform entries in (−1, 1),
+ * normalised in double. */
+static inline void random_unit_quaternion(GRand *rng, double p[4]) {
+  double norm = 0.;
+  for (int k = 0; k < 4; k++) {
+    p[k] = g_rand_double_range(rng, -1., 1.);
+    norm += p[k] * p[k];
+  }
+  norm = sqrt(norm);
+  for (int k = 0; k < 4; k++) p[k] /= norm;
+}
+
+/* The rotation of the unit quaternion p, row by row (v ↦ p v p*), in
+ * double: orthonormal to a few u. */
+static inline void quaternion_rotation(double const p[4], double r[9]) {
+  double const w = p[0], x = p[1], y = p[2], z = p[3];
+  double const m[9] = {1. - 2. * (y * y + z * z), 2. * (x * y - w * z),
+                       2. * (x * z + w * y),      2. * (x * y + w * z),
+                       1. - 2. * (x * x + z * z), 2. * (y * z - w * x),
+                       2. * (x * z - w * y),      2. * (y * z + w * x),
+                       1. - 2. * (x * x + y * y)};
+  for (int k = 0; k < 9; k++) r[k] = m[k];
+}
+
+/* Q = R·diag(e)·Rᵀ for a random rotation R. */
 static inline void random_form_with_eigenvalues(GRand *rng, double const e[3],
                                                 double q[6]) {
-  double w = g_rand_double_range(rng, -1., 1.), x = g_rand_double_range(rng, -1., 1.);
-  double y = g_rand_double_range(rng, -1., 1.), z = g_rand_double_range(rng, -1., 1.);
-  double const norm = sqrt(w * w + x * x + y * y + z * z);
-  w /= norm, x /= norm, y /= norm, z /= norm;
-  double const rot[3][3] = {
-      {1. - 2. * (y * y + z * z), 2. * (x * y - w * z), 2. * (x * z + w * y)},
-      {2. * (x * y + w * z), 1. - 2. * (x * x + z * z), 2. * (y * z - w * x)},
-      {2. * (x * z - w * y), 2. * (y * z + w * x), 1. - 2. * (x * x + y * y)}};
+  double p[4], rot[9];
+  random_unit_quaternion(rng, p);
+  quaternion_rotation(p, rot);
   int k = 0;
   for (int i = 0; i < 3; i++)
     for (int j = i; j < 3; j++, k++)
-      q[k] = rot[i][0] * e[0] * rot[j][0] + rot[i][1] * e[1] * rot[j][1] +
-             rot[i][2] * e[2] * rot[j][2];
+      q[k] = rot[3 * i] * e[0] * rot[3 * j] +
+             rot[3 * i + 1] * e[1] * rot[3 * j + 1] +
+             rot[3 * i + 2] * e[2] * rot[3 * j + 2];
 }
 
 #endif /* PW85_TESTUTIL_H */
