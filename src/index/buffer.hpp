@@ -122,8 +122,11 @@ class Buffer {
     return true;
   }
   // Grows to n value-initialised elements (n ≥ size()); false on failure.
+  // The capacity grows as grow_for()'s (at least doubling), so that growing
+  // one element at a time (the index's table of ids, as ids are inserted in
+  // order) is O(1) amortised, not a copy of the whole table each time.
   [[nodiscard]] bool resize(std::size_t n) noexcept {
-    if (!reserve(n)) return false;
+    if (n > size_ && !grow_for(n - size_)) return false;
     while (size_ < n) new (data_ + size_++) T();
     return true;
   }
@@ -131,7 +134,7 @@ class Buffer {
   // only, to be written before they are read); false on failure.
   [[nodiscard]] bool resize_uninitialised(std::size_t n) noexcept {
     static_assert(std::is_trivial_v<T>, "for trivial types only");
-    if (!reserve(n)) return false;
+    if (n > size_ && !grow_for(n - size_)) return false;
     size_ = n;
     return true;
   }

@@ -15,6 +15,10 @@
 // smaller id (from its own images, i = j, with a positive shift), so that
 // the work of a thread depends on nothing but its ellipsoids.
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#define TT(x) auto x = std::chrono::steady_clock::now()
+#define TD(a,b) std::chrono::duration<double>(b-a).count()
 #include <cmath>
 
 #include "contact.hpp"
@@ -462,10 +466,12 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
 #if !defined(PW85_OPENMP)
   threads = 1;
 #endif
+  TT(t0);
   Snapshot snap;
   if (!take_snapshot(*this, threads, &snap)) return Status::no_memory;
   Buffer<Share> shares;
   if (!shares.resize(std::size_t(threads))) return Status::no_memory;
+  TT(t1);
   Search const search(*this, snap, within, within ? t : 1.0);
   std::size_t const n = snap.hot.size();
   constexpr std::size_t chunk = 256;
@@ -489,6 +495,7 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
 #endif
   }
 
+  TT(t2);
   // The least failure in the output order, whatever the schedule.
   Status status = Status::success;
   PairHit at{};
@@ -569,6 +576,8 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
     }
 #endif
   }
+  TT(t3);
+  std::fprintf(stderr, "snapshot %.3f search %.3f merge %.3f\n", TD(t0,t1), TD(t1,t2), TD(t2,t3));
   if (candidates != nullptr) *candidates = found;
   return Status::success;
 }
