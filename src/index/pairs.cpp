@@ -15,10 +15,6 @@
 // smaller id (from its own images, i = j, with a positive shift), so that
 // the work of a thread depends on nothing but its ellipsoids.
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#define TT(x) auto x = std::chrono::steady_clock::now()
-#define TD(a,b) std::chrono::duration<double>(b-a).count()
 #include <cmath>
 
 #include "contact.hpp"
@@ -85,6 +81,10 @@ int threads_for(int threads, std::size_t n) noexcept {
   return std::size_t(threads) < most ? threads : int(most);
 }
 
+// The snapshot's counting sort keeps a histogram of the grid's cells per
+// thread: at most this many threads build it.
+constexpr int max_snapshot_threads = 16;
+
 // The snapshot of every non-empty level; false when an allocation fails.
 // The cells of the entries (`where`) are computed on `threads` threads;
 // the counting sort itself is serial (in the order of the level's cells,
@@ -98,7 +98,7 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
       !s->grids.reserve(levels.size()))
     return false;
   Buffer<std::size_t> base;  // the level's cells: offsets of their entries
-  Buffer<std::uint32_t> where, next;
+  Buffer<std::uint32_t> where, hist;
   std::size_t first = 0;
   for (std::size_t l = 0; l < levels.size(); ++l) {
     Level const &lv = levels[l];
@@ -153,47 +153,93 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
     g.cells = static_cast<std::size_t>(cells);
     if (!g.start.resize(g.cells + 1)) return false;
     where.clear();
-    next.clear();
-    if (!where.resize_uninitialised(lv.count) ||
-        !next.resize_uninitialised(g.cells))
-      return false;
-    // The cell of each entry, in the order of the level's cells.
-    auto locate = [&](std::size_t ci) {
-      Cell const &cell = lv.cells[ci];
-      for (std::size_t ei = 0; ei < cell.size(); ++ei)
-        where[base[ci] + ei] = static_cast<std::uint32_t>(
-            cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
+    if (!where.resize_uninitialised(lv.count)) return false;
+    // A counting sort by cell, in the order of the level's cells. On nt
+    // threads, thread t takes the level's cells [split[t], split[t + 1])
+    // (about count/nt entries) and counts its entries per dense cell in its
+    // own histogram; in each dense cell, thread t's entries then follow
+    // those of threads t' < t, which is the serial order: the snapshot is
+    // the same for any number of threads.
+    int const nt = std::min(threads_for(threads, lv.count), max_snapshot_threads);
+    std::size_t split[max_snapshot_threads + 1];
+    split[0] = 0;
+    for (int t = 1; t < nt; ++t)
+      split[t] = static_cast<std::size_t>(
+          std::lower_bound(base.data(), base.data() + ncells + 1,
+                           lv.count / std::size_t(nt) * std::size_t(t)) -
+          base.data());
+    split[nt] = ncells;
+    hist.clear();
+    if (!hist.resize(std::size_t(nt) * g.cells)) return false;
+    auto locate = [&](int t) {
+      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+        Cell const &cell = lv.cells[ci];
+        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+          std::uint32_t const w = static_cast<std::uint32_t>(
+              cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
+          where[base[ci] + ei] = w;
+          ++h[w];
+        }
+      }
     };
-    int const nt = threads_for(threads, lv.count);
+    // Each thread's histogram becomes its cursors in the cells.
+    auto cursors = [&](std::size_t c0, std::size_t c1) {
+      for (std::size_t c = c0; c < c1; ++c) {
+        std::uint32_t at = g.start[c];
+        for (int t = 0; t < nt; ++t) {
+          std::uint32_t const k = hist[std::size_t(t) * g.cells + c];
+          hist[std::size_t(t) * g.cells + c] = at;
+          at += k;
+        }
+      }
+    };
+    auto scatter = [&](int t) {
+      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+        Cell const &cell = lv.cells[ci];
+        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+          Entry const &e = cell[ei];
+          std::size_t const to = g.first + h[where[base[ci] + ei]]++;
+          Hot &x = s->hot[to];
+          for (int k = 0; k < dim; ++k) {
+            x.c[k] = e.c[k];
+            x.h[k] = e.h[k];
+            x.wrap[k] = e.wrap[k];
+          }
+          x.id = e.id;
+          for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
+        }
+      }
+    };
+    auto totals = [&]() {
+      for (std::size_t c = 0; c < g.cells; ++c) {
+        std::uint32_t k = 0;
+        for (int t = 0; t < nt; ++t) k += hist[std::size_t(t) * g.cells + c];
+        g.start[c + 1] = g.start[c] + k;
+      }
+    };
     if (nt <= 1) {
-      for (std::size_t ci = 0; ci < ncells; ++ci) locate(ci);
+      locate(0);
+      totals();
+      cursors(0, g.cells);
+      scatter(0);
     } else {
 #if defined(PW85_OPENMP)
-      long long const n = static_cast<long long>(ncells);
-#pragma omp parallel for num_threads(nt) schedule(static)
-      for (long long ci = 0; ci < n; ++ci) locate(std::size_t(ci));
-#endif
-    }
-    // Counting sort by cell.
-    for (std::size_t i = 0; i < lv.count; ++i) ++g.start[where[i] + 1];
-    for (std::size_t c = 0; c < g.cells; ++c) {
-      g.start[c + 1] += g.start[c];
-      next[c] = g.start[c];
-    }
-    for (std::size_t ci = 0; ci < ncells; ++ci) {
-      Cell const &cell = lv.cells[ci];
-      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-        Entry const &e = cell[ei];
-        std::size_t const to = g.first + next[where[base[ci] + ei]]++;
-        Hot &x = s->hot[to];
-        for (int k = 0; k < dim; ++k) {
-          x.c[k] = e.c[k];
-          x.h[k] = e.h[k];
-          x.wrap[k] = e.wrap[k];
-        }
-        x.id = e.id;
-        for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
+      long long const ncell = static_cast<long long>(g.cells);
+#pragma omp parallel num_threads(nt)
+      {
+        int const t = omp_get_thread_num();
+        locate(t);
+#pragma omp barrier
+#pragma omp single
+        totals();
+#pragma omp for schedule(static)
+        for (long long c = 0; c < ncell; c += 4096)
+          cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
+        scatter(t);
       }
+#endif
     }
     s->grids.push_back_reserved(static_cast<Grid &&>(g));
   }
@@ -466,12 +512,10 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
 #if !defined(PW85_OPENMP)
   threads = 1;
 #endif
-  TT(t0);
   Snapshot snap;
   if (!take_snapshot(*this, threads, &snap)) return Status::no_memory;
   Buffer<Share> shares;
   if (!shares.resize(std::size_t(threads))) return Status::no_memory;
-  TT(t1);
   Search const search(*this, snap, within, within ? t : 1.0);
   std::size_t const n = snap.hot.size();
   constexpr std::size_t chunk = 256;
@@ -495,7 +539,6 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
 #endif
   }
 
-  TT(t2);
   // The least failure in the output order, whatever the schedule.
   Status status = Status::success;
   PairHit at{};
@@ -576,8 +619,6 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
     }
 #endif
   }
-  TT(t3);
-  std::fprintf(stderr, "snapshot %.3f search %.3f merge %.3f\n", TD(t0,t1), TD(t1,t2), TD(t2,t3));
   if (candidates != nullptr) *candidates = found;
   return Status::success;
 }
