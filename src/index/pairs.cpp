@@ -430,15 +430,36 @@ class Search {
       slack[k] = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
     if (cells > 2.0 * double(g.cells) + 8.0) {
       // Wider than the grid: every entry, with the shifts in reach.
+      // The check of the number of images (max_span, out_of_range) is made
+      // from x against every entry y of the grid with y.id ≥ x.id, with the
+      // grid's reach, as when pairs were kept from the smaller id: whether
+      // the query fails is a function of each entry's own view, not of the
+      // order of the snapshot.
+      if (periodic_)
+        for (std::size_t b = g.first; b < g.first + g.count; ++b) {
+          Hot const &y = s_.hot[b];
+          if (y.id < x.id) continue;
+          for (int k = 0; k < dim; ++k) {
+            double const u = std::floor((x.c[k] - reach[k] - slack[k] - y.c[k]) / box_[k]);
+            double const v = std::floor((x.c[k] + reach[k] + slack[k] - y.c[k]) / box_[k]) + 1.0;
+            if (v - u + 1.0 > max_span) {
+              fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+              return true;
+            }
+          }
+        }
+      // The images of y kept from x: those within the pair's own reach
+      // √t·(h_x + h_y)·(1 + broad_margin) plus the slack, a superset of
+      // those that the AABB test keeps (at most the grid's reach).
       for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
         Hot const &y = s_.hot[b];
         std::int64_t nlo[dim] = {0, 0, 0}, nhi[dim] = {0, 0, 0};
         if (periodic_) {
           for (int k = 0; k < dim; ++k) {
-            double const slack = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
-            double const u = std::floor((x.c[k] - reach[k] - slack - y.c[k]) / box_[k]);
-            double const v = std::floor((x.c[k] + reach[k] + slack - y.c[k]) / box_[k]) + 1.0;
-            if (v - u + 1.0 > max_span) {
+            double const pr = sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin);
+            double const u = std::floor((x.c[k] - pr - slack[k] - y.c[k]) / box_[k]);
+            double const v = std::floor((x.c[k] + pr + slack[k] - y.c[k]) / box_[k]) + 1.0;
+            if (v - u + 1.0 > max_span) {  // only if y.id < x.id (see above)
               std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
               fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
               return true;
