@@ -460,6 +460,52 @@ static void test_config(gconstpointer data) {
   g_rand_free(rng);
 }
 
+/* ---- large configurations: threads ------------------------------------- */
+
+/* Configurations large enough (N ≥ 4096 per thread) for the all-pairs
+ * queries to build their snapshot and merge their pairs on several
+ * threads: the output on 2 and 8 threads is the output on 1, bit for bit
+ * (which the brute-force tests above check on the serial paths). */
+static void test_threads_large(gconstpointer data) {
+  Config const *cf = data;
+  GRand *rng = g_rand_new_with_seed(g_str_hash(cf->name));
+  int const n = small_run() ? cf->n / 2 : cf->n;
+  double const side = cbrt(n * mean_volume(cf->shapes) / cf->fraction);
+  double const box[3] = {side, side * 1.1, side * .9};
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(cf->periodic ? box : NULL, &ix), ==,
+                  PW85_SUCCESS);
+  for (int i = 0; i < n; i++) {
+    double c[3], q[6];
+    random_ellipsoid(rng, cf, side, c, q);
+    g_assert_cmpint(pw85_index_insert(ix, (size_t)(n - 1 - i), c, q), ==,
+                    PW85_SUCCESS);
+  }
+  for (int within = 0; within <= 1; within++) {
+    double const t = within ? 2. : 1.;
+    Pairs one = index_pairs(ix, within, t, 1);
+    g_assert_cmpuint(one.count, >, (size_t)n / 4);
+    for (int threads = 2; threads <= 8; threads *= 4) {
+      Pairs more = index_pairs(ix, within, t, threads);
+      if (!pairs_equal(&one, &more))
+        test_mismatch("%s %s: %d threads differ from 1", cf->name,
+                      within ? "pairs_within" : "overlapping_pairs", threads);
+      pairs_clear(&more);
+    }
+    g_test_message("%s %s: %zu pairs", cf->name,
+                   within ? "pairs_within" : "overlapping_pairs", one.count);
+    pairs_clear(&one);
+  }
+  pw85_index_destroy(ix);
+  g_rand_free(rng);
+}
+
+static Config const large_configs[] = {
+    {"mono-periodic", MONO, 1, 20000, .4, 0},
+    {"mono-open", MONO, 0, 20000, 2., 0}, /* centres over 8 times the cube */
+    {"poly-periodic", POLY, 1, 20000, .3, 0},
+};
+
 /* ---- bad input ----------------------------------------------------------- */
 
 static void test_bad_input(void) {
@@ -753,6 +799,11 @@ int main(int argc, char **argv) {
   for (size_t k = 0; k < G_N_ELEMENTS(configs); k++) {
     char *path = g_strdup_printf("/pw85/index/brute-force/%s", configs[k].name);
     g_test_add_data_func(path, &configs[k], test_config);
+    g_free(path);
+  }
+  for (size_t k = 0; k < G_N_ELEMENTS(large_configs); k++) {
+    char *path = g_strdup_printf("/pw85/index/threads-large/%s", large_configs[k].name);
+    g_test_add_data_func(path, &large_configs[k], test_threads_large);
     g_free(path);
   }
   return g_test_run();

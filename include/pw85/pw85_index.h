@@ -42,7 +42,14 @@
  *
  * Memory and threads. The index allocates from the heap (that is its
  * job), and every allocation that fails is reported as PW85_ENOMEM, never
- * by an abort; a failed call leaves the index as it was. Calls that modify
+ * by an abort; a failed call leaves the index as it was. In a periodic box
+ * it also keeps, for each octave of ellipsoid sizes in use, a table of 4
+ * bytes per cell of a grid of the box (cells 2 to 4 times as wide as the
+ * largest √Q_kk of those ellipsoids), at most 16 MiB each (a larger grid
+ * uses a hash table instead). The all-pairs queries allocate, for the time
+ * of the call, about 150 bytes per ellipsoid and 80 per pair reported
+ * (large blocks are marked for transparent huge pages on Linux, a hint
+ * that changes nothing but speed). Calls that modify
  * an index (insert, update, remove, destroy) need exclusive access to it;
  * queries only read it and may run concurrently with each other from
  * several threads. The all-pairs queries start `threads` OpenMP threads

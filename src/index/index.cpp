@@ -77,11 +77,6 @@ int Index::level_of(Entry const &e) const noexcept {
 
 namespace {
 
-// The packed key of cell coordinates u_k in [0, 2²¹).
-std::uint64_t pack(std::uint64_t const u[dim]) noexcept {
-  return (u[0] << 42) | (u[1] << 21) | u[2];
-}
-
 // An open domain's cell coordinates are clamped to [−2²⁰, 2²⁰) (the clamp
 // is monotone: a range of positions maps onto the range of their cells).
 constexpr double open_half = 0x1p20;
@@ -92,9 +87,8 @@ double clamp_open(double m) noexcept {
 
 }  // namespace
 
-std::uint64_t Index::cell_key(Level const &lv, Entry const &e) const
-    noexcept {
-  std::uint64_t u[dim];
+void Index::cell_coords(Level const &lv, Entry const &e,
+                        std::uint64_t u[dim]) const noexcept {
   for (int k = 0; k < dim; ++k) {
     if (periodic_) {
       double const w = e.c[k] - e.wrap[k] * box_[k];
@@ -106,7 +100,6 @@ std::uint64_t Index::cell_key(Level const &lv, Entry const &e) const
           clamp_open(std::floor(e.c[k] * lv.inv[k])) + open_half);
     }
   }
-  return pack(u);
 }
 
 bool Index::reserve_for(Entry const &e) noexcept {
@@ -116,20 +109,32 @@ bool Index::reserve_for(Entry const &e) noexcept {
     std::frexp(std::max(std::max(e.h[0], e.h[1]), e.h[2]), &exponent);
     Level lv;
     init_level(&lv, exponent);
+    if (periodic_) {
+      double const cells = double(lv.n[0]) * double(lv.n[1]) * double(lv.n[2]);
+      if (cells <= dense_cells) {
+        std::size_t const n = static_cast<std::size_t>(cells);
+        if (!lv.dense.resize_uninitialised(n)) return false;
+        for (std::size_t i = 0; i < n; ++i) lv.dense[i] = CellMap::absent;
+      }
+    }
     if (!levels_.push_back(static_cast<Level &&>(lv))) return false;
   }
   Level &lv = levels_[l];
-  std::uint64_t const key = cell_key(lv, e);
-  std::uint32_t c = lv.map.find(key);
+  std::uint64_t u[dim];
+  cell_coords(lv, e, u);
+  std::uint32_t c = lv.find(u);
   if (c == CellMap::absent) {
     // A new empty cell is a valid state: it is registered at once.
     Cell cell;
-    if (lv.cells.size() >= no_id || !lv.map.reserve_one() ||
+    if (lv.cells.size() >= no_id || (lv.dense.empty() && !lv.map.reserve_one()) ||
         !lv.cells.grow_for(1) || !cell.grow_for(1))
       return false;
     c = static_cast<std::uint32_t>(lv.cells.size());
     lv.cells.push_back_reserved(static_cast<Cell &&>(cell));
-    lv.map.insert_reserved(key, c);
+    if (lv.dense.empty())
+      lv.map.insert_reserved(Level::pack(u), c);
+    else
+      lv.dense[lv.dense_index(u)] = c;
   }
   return lv.cells[c].grow_for(1);
 }
@@ -137,7 +142,9 @@ bool Index::reserve_for(Entry const &e) noexcept {
 void Index::insert_entry(Entry const &e) noexcept {
   int const l = level_of(e);
   Level &lv = levels_[l];
-  std::uint32_t const c = lv.map.find(cell_key(lv, e));
+  std::uint64_t u[dim];
+  cell_coords(lv, e, u);
+  std::uint32_t const c = lv.find(u);
   Cell &cell = lv.cells[c];
   Entry copy = e;
   cell.push_back_reserved(static_cast<Entry &&>(copy));
@@ -307,35 +314,101 @@ Status Index::visit_level(Level const &lv, double const c[dim],
     return Status::success;
   }
 
-  std::int64_t m[dim];
+  // The cells in reach are gathered in batches, then their entries are
+  // tested: the cache misses of a batch (cell headers, then entries) are
+  // issued together (prefetches), not one dependent chain per cell, which
+  // made most of the time of random sequential addition (perf).
+  struct Pending {
+    Cell const *cell;
+    std::int64_t copy[dim];
+  };
+  constexpr int batch = 64;
+  Pending pending[batch];
+  int np = 0;
+  auto flush = [&]() {  // false when the visit stops
+    for (int i = 0; i < np; ++i) {
+      Cell const &cell = *pending[i].cell;
+      for (std::size_t ei = 0; ei < cell.size(); ++ei)
+        PW85_INDEX_PREFETCH(&cell[ei]);
+    }
+    std::int32_t shift[dim];
+    for (int i = 0; i < np; ++i) {
+      Cell const &cell = *pending[i].cell;
+      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+        Entry const &e = cell[ei];
+        if (e.id == exclude) continue;
+        for (int k = 0; k < dim; ++k)
+          shift[k] = static_cast<std::int32_t>(pending[i].copy[k] - e.wrap[k]);
+        if (!test(e, shift)) return false;
+      }
+    }
+    np = 0;
+    return true;
+  };
+  // Cell m (unwrapped) along axis k: cell u = m − copy·n_k of the copy
+  // ⌊m / n_k⌋ of the box (periodic); followed incrementally along each
+  // axis, without a division per cell.
+  std::int64_t m0[dim], u0[dim], copy0[dim];
+  for (int k = 0; k < dim; ++k) {
+    m0[k] = std::int64_t(lo[k]);
+    if (periodic_) {
+      copy0[k] = floor_div(m0[k], lv.n[k]);
+      u0[k] = m0[k] - copy0[k] * lv.n[k];
+    } else {
+      copy0[k] = 0;
+      u0[k] = m0[k] + std::int64_t(open_half);
+    }
+  }
+  auto advance = [&](int k, std::uint64_t *u, std::int64_t *copy) {
+    ++*u;
+    if (periodic_ && std::int64_t(*u) == lv.n[k]) {
+      *u = 0;
+      ++*copy;
+    }
+  };
   std::uint64_t u[dim];
-  std::int32_t shift[dim];
-  for (m[0] = std::int64_t(lo[0]); m[0] <= std::int64_t(hi[0]); ++m[0])
-    for (m[1] = std::int64_t(lo[1]); m[1] <= std::int64_t(hi[1]); ++m[1])
-      for (m[2] = std::int64_t(lo[2]); m[2] <= std::int64_t(hi[2]); ++m[2]) {
-        std::int64_t copy[dim] = {0, 0, 0};
-        for (int k = 0; k < dim; ++k) {
-          if (periodic_) {
-            copy[k] = floor_div(m[k], lv.n[k]);
-            u[k] = static_cast<std::uint64_t>(m[k] - copy[k] * lv.n[k]);
-          } else {
-            u[k] = static_cast<std::uint64_t>(m[k] + std::int64_t(open_half));
-          }
-        }
-        std::uint32_t const ci = lv.map.find(pack(u));
-        if (ci == CellMap::absent) continue;
-        Cell const &cell = lv.cells[ci];
-        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-          Entry const &e = cell[ei];
-          if (e.id == exclude) continue;
-          for (int k = 0; k < dim; ++k)
-            shift[k] = static_cast<std::int32_t>(copy[k] - e.wrap[k]);
-          if (!test(e, shift)) {
+  std::int64_t copy[dim];
+  if (!lv.dense.empty()) {  // the rows' first cells, fetched together
+    u[0] = std::uint64_t(u0[0]);
+    copy[0] = copy0[0];
+    for (std::int64_t a = m0[0]; a <= std::int64_t(hi[0]); ++a) {
+      u[1] = std::uint64_t(u0[1]);
+      copy[1] = copy0[1];
+      for (std::int64_t b = m0[1]; b <= std::int64_t(hi[1]); ++b) {
+        u[2] = std::uint64_t(u0[2]);
+        PW85_INDEX_PREFETCH(&lv.dense[lv.dense_index(u)]);
+        advance(1, &u[1], &copy[1]);
+      }
+      advance(0, &u[0], &copy[0]);
+    }
+  }
+  u[0] = std::uint64_t(u0[0]);
+  copy[0] = copy0[0];
+  for (std::int64_t a = m0[0]; a <= std::int64_t(hi[0]); ++a) {
+    u[1] = std::uint64_t(u0[1]);
+    copy[1] = copy0[1];
+    for (std::int64_t b = m0[1]; b <= std::int64_t(hi[1]); ++b) {
+      u[2] = std::uint64_t(u0[2]);
+      copy[2] = copy0[2];
+      for (std::int64_t d = m0[2]; d <= std::int64_t(hi[2]); ++d) {
+        std::uint32_t const ci = lv.find(u);
+        if (ci != CellMap::absent) {
+          Pending &p = pending[np++];
+          p.cell = &lv.cells[ci];
+          PW85_INDEX_PREFETCH(p.cell);
+          for (int k = 0; k < dim; ++k) p.copy[k] = copy[k];
+          if (np == batch && !flush()) {
             *go_on = false;
             return Status::success;
           }
         }
+        advance(2, &u[2], &copy[2]);
       }
+      advance(1, &u[1], &copy[1]);
+    }
+    advance(0, &u[0], &copy[0]);
+  }
+  if (!flush()) *go_on = false;
   return Status::success;
 }
 

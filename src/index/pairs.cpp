@@ -57,59 +57,71 @@ struct Snapshot {
   Buffer<Form> forms;
 };
 
-std::int64_t cell_along(Grid const &g, Hot const &e, double const box[dim],
+std::int64_t cell_along(Grid const &g, double const c[dim],
+                        std::int32_t const wrap[dim], double const box[dim],
                         bool periodic, int k) noexcept {
-  double const x = periodic ? e.c[k] - e.wrap[k] * box[k] : e.c[k] - g.origin[k];
+  double const x = periodic ? c[k] - wrap[k] * box[k] : c[k] - g.origin[k];
   double const m = std::floor(x * g.inv[k]);
   return static_cast<std::int64_t>(
       std::min(std::max(m, 0.0), double(g.n[k] - 1)));
 }
 
-std::size_t cell_of(Grid const &g, Hot const &e, double const box[dim],
+std::size_t cell_of(Grid const &g, double const c[dim],
+                    std::int32_t const wrap[dim], double const box[dim],
                     bool periodic) noexcept {
   std::int64_t m[dim];
-  for (int k = 0; k < dim; ++k) m[k] = cell_along(g, e, box, periodic, k);
+  for (int k = 0; k < dim; ++k) m[k] = cell_along(g, c, wrap, box, periodic, k);
   return static_cast<std::size_t>((m[0] * g.n[1] + m[1]) * g.n[2] + m[2]);
 }
 
+// The number of threads a loop of n iterations is worth (a thread per
+// 4096 iterations at least).
+int threads_for(int threads, std::size_t n) noexcept {
+  std::size_t const most = n / 4096 + 1;
+  return std::size_t(threads) < most ? threads : int(most);
+}
+
+// The snapshot's counting sort keeps a histogram of the grid's cells per
+// thread: at most this many threads build it.
+constexpr int max_snapshot_threads = 16;
+
 // The snapshot of every non-empty level; false when an allocation fails.
-bool take_snapshot(Index const &index, Snapshot *s) noexcept {
+// The cells of the entries (`where`) are computed on `threads` threads;
+// the counting sort itself is serial (in the order of the level's cells,
+// so that the snapshot does not depend on the number of threads).
+bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
   Buffer<Level> const &levels = index.levels();
   double const *box = index.box();
   bool const periodic = index.periodic();
-  if (!s->hot.reserve(index.count()) || !s->forms.reserve(index.count()) ||
+  if (!s->hot.resize_uninitialised(index.count()) ||
+      !s->forms.resize_uninitialised(index.count()) ||
       !s->grids.reserve(levels.size()))
     return false;
-  Buffer<Hot> hot;
-  Buffer<Form> forms;
+  Buffer<std::size_t> base;  // the level's cells: offsets of their entries
+  Buffer<std::uint32_t> where, hist;
+  std::size_t first = 0;
   for (std::size_t l = 0; l < levels.size(); ++l) {
     Level const &lv = levels[l];
     if (lv.count == 0) continue;
     Grid g;
-    g.first = s->hot.size();
+    g.first = first;
     g.count = lv.count;
-    hot.clear();
-    forms.clear();
-    if (!hot.reserve(lv.count) || !forms.reserve(lv.count)) return false;
+    first += lv.count;
+    std::size_t const ncells = lv.cells.size();
+    base.clear();
+    if (!base.resize_uninitialised(ncells + 1)) return false;
+    base[0] = 0;
+    for (std::size_t ci = 0; ci < ncells; ++ci)
+      base[ci + 1] = base[ci] + lv.cells[ci].size();
     double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for (std::size_t ci = 0; ci < lv.cells.size(); ++ci)
-      for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei) {
-        Entry const &e = lv.cells[ci][ei];
-        Hot x;
-        Form f;
-        for (int k = 0; k < dim; ++k) {
-          x.c[k] = e.c[k];
-          x.h[k] = e.h[k];
-          x.wrap[k] = e.wrap[k];
-          lo[k] = std::min(lo[k], e.c[k]);
-          hi[k] = std::max(hi[k], e.c[k]);
-        }
-        x.id = e.id;
-        for (int k = 0; k < sym; ++k) f.q[k] = e.q[k];
-        hot.push_back_reserved(static_cast<Hot &&>(x));
-        forms.push_back_reserved(static_cast<Form &&>(f));
-      }
+    if (!periodic)
+      for (std::size_t ci = 0; ci < ncells; ++ci)
+        for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei)
+          for (int k = 0; k < dim; ++k) {
+            lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
+            hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
+          }
     double cells = 1.0;
     for (int k = 0; k < dim; ++k) {
       g.hmax[k] = lv.hmax[k];
@@ -140,25 +152,94 @@ bool take_snapshot(Index const &index, Snapshot *s) noexcept {
     }
     g.cells = static_cast<std::size_t>(cells);
     if (!g.start.resize(g.cells + 1)) return false;
-    // Counting sort by cell.
-    Buffer<std::uint32_t> where;
-    if (!where.resize(lv.count)) return false;
-    for (std::size_t i = 0; i < lv.count; ++i) {
-      std::size_t const c = cell_of(g, hot[i], box, periodic);
-      where[i] = static_cast<std::uint32_t>(c);
-      ++g.start[c + 1];
-    }
-    for (std::size_t c = 0; c < g.cells; ++c) g.start[c + 1] += g.start[c];
-    Buffer<std::uint32_t> next;
-    if (!next.resize(g.cells)) return false;
-    for (std::size_t c = 0; c < g.cells; ++c) next[c] = g.start[c];
-    if (!s->hot.resize(g.first + lv.count) ||
-        !s->forms.resize(g.first + lv.count))
-      return false;
-    for (std::size_t i = 0; i < lv.count; ++i) {
-      std::size_t const to = g.first + next[where[i]]++;
-      s->hot[to] = hot[i];
-      s->forms[to] = forms[i];
+    where.clear();
+    if (!where.resize_uninitialised(lv.count)) return false;
+    // A counting sort by cell, in the order of the level's cells. On nt
+    // threads, thread t takes the level's cells [split[t], split[t + 1])
+    // (about count/nt entries) and counts its entries per dense cell in its
+    // own histogram; in each dense cell, thread t's entries then follow
+    // those of threads t' < t, which is the serial order: the snapshot is
+    // the same for any number of threads.
+    int const nt = std::min(threads_for(threads, lv.count), max_snapshot_threads);
+    std::size_t split[max_snapshot_threads + 1];
+    split[0] = 0;
+    for (int t = 1; t < nt; ++t)
+      split[t] = static_cast<std::size_t>(
+          std::lower_bound(base.data(), base.data() + ncells + 1,
+                           lv.count / std::size_t(nt) * std::size_t(t)) -
+          base.data());
+    split[nt] = ncells;
+    hist.clear();
+    if (!hist.resize(std::size_t(nt) * g.cells)) return false;
+    auto locate = [&](int t) {
+      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+        Cell const &cell = lv.cells[ci];
+        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+          std::uint32_t const w = static_cast<std::uint32_t>(
+              cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
+          where[base[ci] + ei] = w;
+          ++h[w];
+        }
+      }
+    };
+    // Each thread's histogram becomes its cursors in the cells.
+    auto cursors = [&](std::size_t c0, std::size_t c1) {
+      for (std::size_t c = c0; c < c1; ++c) {
+        std::uint32_t at = g.start[c];
+        for (int t = 0; t < nt; ++t) {
+          std::uint32_t const k = hist[std::size_t(t) * g.cells + c];
+          hist[std::size_t(t) * g.cells + c] = at;
+          at += k;
+        }
+      }
+    };
+    auto scatter = [&](int t) {
+      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+        Cell const &cell = lv.cells[ci];
+        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+          Entry const &e = cell[ei];
+          std::size_t const to = g.first + h[where[base[ci] + ei]]++;
+          Hot &x = s->hot[to];
+          for (int k = 0; k < dim; ++k) {
+            x.c[k] = e.c[k];
+            x.h[k] = e.h[k];
+            x.wrap[k] = e.wrap[k];
+          }
+          x.id = e.id;
+          for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
+        }
+      }
+    };
+    auto totals = [&]() {
+      for (std::size_t c = 0; c < g.cells; ++c) {
+        std::uint32_t k = 0;
+        for (int t = 0; t < nt; ++t) k += hist[std::size_t(t) * g.cells + c];
+        g.start[c + 1] = g.start[c] + k;
+      }
+    };
+    if (nt <= 1) {
+      locate(0);
+      totals();
+      cursors(0, g.cells);
+      scatter(0);
+    } else {
+#if defined(PW85_OPENMP)
+      long long const ncell = static_cast<long long>(g.cells);
+#pragma omp parallel num_threads(nt)
+      {
+        int const t = omp_get_thread_num();
+        locate(t);
+#pragma omp barrier
+#pragma omp single
+        totals();
+#pragma omp for schedule(static)
+        for (long long c = 0; c < ncell; c += 4096)
+          cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
+        scatter(t);
+      }
+#endif
     }
     s->grids.push_back_reserved(static_cast<Grid &&>(g));
   }
@@ -179,10 +260,42 @@ bool pair_less(PairHit const &a, PairHit const &b) noexcept {
   return false;
 }
 
+// A list of pairs in blocks that are never moved: the first of 4096
+// pairs, each next one twice as large up to 2^18 pairs (10 MB). A growing
+// array would copy its content at each doubling, and the copies into fresh
+// pages cost 8% of the all-pairs query at N = 1e6 (perf).
+class PairList {
+ public:
+  std::size_t size() const noexcept { return size_; }
+  std::size_t blocks() const noexcept { return blocks_.size(); }
+  Buffer<PairHit> const &block(std::size_t b) const noexcept {
+    return blocks_[b];
+  }
+  [[nodiscard]] bool push_back(PairHit const &hit) noexcept {
+    if (blocks_.empty() || blocks_.back().size() == blocks_.back().capacity()) {
+      std::size_t const n =
+          blocks_.empty() ? 4096
+                          : std::min<std::size_t>(2 * blocks_.back().capacity(),
+                                                  std::size_t(1) << 18);
+      Buffer<PairHit> block;
+      if (!blocks_.grow_for(1) || !block.reserve(n)) return false;
+      blocks_.push_back_reserved(static_cast<Buffer<PairHit> &&>(block));
+    }
+    PairHit copy = hit;
+    blocks_.back().push_back_reserved(static_cast<PairHit &&>(copy));
+    ++size_;
+    return true;
+  }
+
+ private:
+  Buffer<Buffer<PairHit>> blocks_;
+  std::size_t size_ = 0;
+};
+
 // One thread's share: its pairs, its count of broad-phase candidates, and
 // the least pair (in the output order) on which the narrow phase failed.
 struct Share {
-  Buffer<PairHit> pairs;
+  PairList pairs;
   std::size_t candidates = 0;
   Status status = Status::success;
   PairHit failed_at{};
@@ -215,14 +328,24 @@ class Search {
     }
   }
 
-  // Entry b's image `shift` against a; false stops (no memory).
+  // The pair of entries a and b (positions in the snapshot, a ≤ b) with
+  // b's image `shift` seen from a: put in the output's orientation, (i, j,
+  // n) with i = min id, j = max id, n = ±shift, then tested from scratch in
+  // that orientation (r = (c_j + n∘L) − c_i, the broad phase's bounds, the
+  // narrow phase), as a brute force over (i, j, n) would. False stops (no
+  // memory).
   bool test(std::size_t a, std::size_t b, std::int32_t const shift[dim],
             Share *share) const noexcept {
+    std::int32_t n[dim] = {shift[0], shift[1], shift[2]};
+    if (s_.hot[b].id < s_.hot[a].id) {
+      std::swap(a, b);
+      for (int k = 0; k < dim; ++k) n[k] = -n[k];
+    }
     Hot const &x = s_.hot[a];
     Hot const &y = s_.hot[b];
     double r[dim];
     for (int k = 0; k < dim; ++k) {
-      r[k] = (y.c[k] + shift[k] * box_[k]) - x.c[k];
+      r[k] = (y.c[k] + n[k] * box_[k]) - x.c[k];
       if (!(std::fabs(r[k]) <=
             sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin)))
         return true;
@@ -231,7 +354,7 @@ class Search {
     double const *q2 = s_.forms[b].q;
     if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_)) return true;
     ++share->candidates;
-    PairHit hit{x.id, y.id, {shift[0], shift[1], shift[2]}, 0, 0.0, 0.0};
+    PairHit hit{x.id, y.id, {n[0], n[1], n[2]}, 0, 0.0, 0.0};
     if (within_) {
       double out[2] = {NAN, NAN};
       Status const st = contact_function(r, q1, q2, out);
@@ -260,14 +383,30 @@ class Search {
     return true;
   }
 
-  // Keeps each pair once: b's id above a's, or a's own image with a
-  // positive shift.
-  bool keep(std::size_t a, std::size_t b,
-            std::int32_t const shift[dim]) const noexcept {
-    std::uint32_t const i = s_.hot[a].id, j = s_.hot[b].id;
-    return j > i || (j == i && shift_positive(shift));
+  // The AABB test of test() seen from x, as a cheap first filter inlined in
+  // the loops: true only if the test in the output's orientation (y's
+  // image seen from x, or x's seen from y) discards the pair too. Its r
+  // differs from that test's by a few roundings of magnitudes below
+  // 4·(cmax + |c_x| + reach + L) (|n_k·L_k| ≤ 2·cmax + reach + 2·L_k), far
+  // below `slack` (cell_slack() of x and the grid's reach, 2⁻⁴⁰ of them);
+  // the bound √t·(h_x + h_y)·(1 + broad_margin) is the same in both
+  // orientations (the sum commutes).
+  bool far_apart(Hot const &x, Hot const &y, std::int32_t const shift[dim],
+                 double const slack[dim]) const noexcept {
+    for (int k = 0; k < dim; ++k) {
+      double const r = (y.c[k] + shift[k] * box_[k]) - x.c[k];
+      if (std::fabs(r) >
+          sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin) + slack[k])
+        return true;
+    }
+    return false;
   }
 
+  // Each pair is found from both entries (the broad phase is symmetric):
+  // it is kept from the one earlier in the snapshot, b > a, or, for an
+  // entry's own image (b = a), with a positive shift (the pair (a, a, −n)
+  // is the same as (a, a, n)). Runs of entries wholly before a are skipped
+  // without reading them.
   bool grid(Grid const &g, std::size_t a, Share *share) const noexcept {
     Hot const &x = s_.hot[a];
     double reach[dim], lo[dim], hi[dim];
@@ -286,19 +425,43 @@ class Search {
       cells *= hi[k] - lo[k] + 1.0;
     }
     std::int32_t shift[dim] = {0, 0, 0};
+    double slack[dim];
+    for (int k = 0; k < dim; ++k)
+      slack[k] = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
     if (cells > 2.0 * double(g.cells) + 8.0) {
       // Wider than the grid: every entry, with the shifts in reach.
-      for (std::size_t b = g.first; b < g.first + g.count; ++b) {
+      // The check of the number of images (max_span, out_of_range) is made
+      // from x against every entry y of the grid with y.id ≥ x.id, with the
+      // grid's reach, as when pairs were kept from the smaller id: whether
+      // the query fails is a function of each entry's own view, not of the
+      // order of the snapshot.
+      if (periodic_)
+        for (std::size_t b = g.first; b < g.first + g.count; ++b) {
+          Hot const &y = s_.hot[b];
+          if (y.id < x.id) continue;
+          for (int k = 0; k < dim; ++k) {
+            double const u = std::floor((x.c[k] - reach[k] - slack[k] - y.c[k]) / box_[k]);
+            double const v = std::floor((x.c[k] + reach[k] + slack[k] - y.c[k]) / box_[k]) + 1.0;
+            if (v - u + 1.0 > max_span) {
+              fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+              return true;
+            }
+          }
+        }
+      // The images of y kept from x: those within the pair's own reach
+      // √t·(h_x + h_y)·(1 + broad_margin) plus the slack, a superset of
+      // those that the AABB test keeps (at most the grid's reach).
+      for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
         Hot const &y = s_.hot[b];
-        if (y.id < x.id) continue;
         std::int64_t nlo[dim] = {0, 0, 0}, nhi[dim] = {0, 0, 0};
         if (periodic_) {
           for (int k = 0; k < dim; ++k) {
-            double const slack = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
-            double const u = std::floor((x.c[k] - reach[k] - slack - y.c[k]) / box_[k]);
-            double const v = std::floor((x.c[k] + reach[k] + slack - y.c[k]) / box_[k]) + 1.0;
-            if (v - u + 1.0 > max_span) {
-              fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+            double const pr = sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin);
+            double const u = std::floor((x.c[k] - pr - slack[k] - y.c[k]) / box_[k]);
+            double const v = std::floor((x.c[k] + pr + slack[k] - y.c[k]) / box_[k]) + 1.0;
+            if (v - u + 1.0 > max_span) {  // only if y.id < x.id (see above)
+              std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
+              fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
               return true;
             }
             nlo[k] = static_cast<std::int64_t>(u);
@@ -311,12 +474,15 @@ class Search {
               shift[0] = std::int32_t(u);
               shift[1] = std::int32_t(v);
               shift[2] = std::int32_t(w);
-              if (keep(a, b, shift) && !test(a, b, shift, share)) return false;
+              if (b == a && !shift_positive(shift)) continue;
+              if (!test(a, b, shift, share)) return false;
             }
       }
       return true;
     }
     std::int64_t const lo2 = std::int64_t(lo[2]), hi2 = std::int64_t(hi[2]);
+    std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[2]) : 0;
+    std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[2]) : 0;
     for (std::int64_t m0 = std::int64_t(lo[0]); m0 <= std::int64_t(hi[0]); ++m0) {
       std::int64_t const p0 = periodic_ ? floor_div(m0, g.n[0]) : 0;
       std::int64_t const u0 = m0 - p0 * g.n[0];
@@ -325,20 +491,20 @@ class Search {
         std::int64_t const u1 = m1 - p1 * g.n[1];
         std::size_t const row = static_cast<std::size_t>((u0 * g.n[1] + u1) * g.n[2]);
         // Along axis 2, one contiguous run of entries per copy of the box.
-        std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[2]) : 0;
-        std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[2]) : 0;
         for (std::int64_t p2 = plo; p2 <= phi; ++p2) {
           std::int64_t const z0 = std::max(lo2, p2 * g.n[2]) - p2 * g.n[2];
           std::int64_t const z1 = std::min(hi2, p2 * g.n[2] + g.n[2] - 1) - p2 * g.n[2];
-          std::size_t const b0 = g.first + g.start[row + std::size_t(z0)];
           std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
+          if (b1 <= a) continue;
+          std::size_t const b0 =
+              std::max(g.first + g.start[row + std::size_t(z0)], a);
           for (std::size_t b = b0; b < b1; ++b) {
             Hot const &y = s_.hot[b];
-            if (y.id < x.id) continue;
             shift[0] = std::int32_t(p0 - y.wrap[0]);
             shift[1] = std::int32_t(p1 - y.wrap[1]);
             shift[2] = std::int32_t(p2 - y.wrap[2]);
-            if (y.id == x.id && !shift_positive(shift)) continue;
+            if (far_apart(x, y, shift, slack)) continue;
+            if (b == a && !shift_positive(shift)) continue;
             if (!test(a, b, shift, share)) return false;
           }
         }
@@ -368,7 +534,7 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
   threads = 1;
 #endif
   Snapshot snap;
-  if (!take_snapshot(*this, &snap)) return Status::no_memory;
+  if (!take_snapshot(*this, threads, &snap)) return Status::no_memory;
   Buffer<Share> shares;
   if (!shares.resize(std::size_t(threads))) return Status::no_memory;
   Search const search(*this, snap, within, within ? t : 1.0);
@@ -410,26 +576,69 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
     }
   }
   if (status != Status::success) return status;
+  snap.hot.reset();  // spare the memory before the merge's
+  snap.forms.reset();
 
   // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
+  // The keys (i, j, n) are distinct, so the order within an i before its
+  // sort does not matter: the shares are scattered concurrently (slots
+  // taken by atomic increments) and the output is still the same for any
+  // number of threads.
   Buffer<std::size_t> first;
-  if (!first.resize(id_bound() + 1) || !out->resize(total))
+  if (!first.resize(id_bound() + 1) || !out->resize_uninitialised(total))
     return Status::no_memory;
-  for (std::size_t k = 0; k < shares.size(); ++k)
-    for (std::size_t p = 0; p < shares[k].pairs.size(); ++p)
-      ++first[shares[k].pairs[p].i + 1];
-  for (std::size_t i = 0; i < id_bound(); ++i) first[i + 1] += first[i];
-  for (std::size_t k = 0; k < shares.size(); ++k)
-    for (std::size_t p = 0; p < shares[k].pairs.size(); ++p) {
-      PairHit const &hit = shares[k].pairs[p];
-      (*out)[first[hit.i]++] = hit;
+  int const nt = threads_for(threads, total);
+  std::size_t const ids = id_bound();
+  auto count_share = [&](std::size_t k, bool atomic) {
+    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
+      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        std::size_t *c = &first[p[q].i + 1];
+        if (atomic)
+          __atomic_fetch_add(c, 1, __ATOMIC_RELAXED);
+        else
+          ++*c;
+      }
     }
-  std::size_t begin = 0;
-  for (std::size_t i = 0; i < id_bound(); ++i) {
-    std::size_t const end = first[i];  // now the end of i's pairs
+  };
+  auto scatter_share = [&](std::size_t k, bool atomic) {
+    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
+      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        std::size_t *c = &first[p[q].i];
+        std::size_t const to =
+            atomic ? __atomic_fetch_add(c, 1, __ATOMIC_RELAXED) : (*c)++;
+        (*out)[to] = p[q];
+      }
+    }
+  };
+  auto sort_from = [&](std::size_t i) {
+    // first[i] is now the end of i's pairs, first[i − 1] their start.
+    std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
     if (end - begin > 1)
       std::sort(out->data() + begin, out->data() + end, pair_less);
-    begin = end;
+  };
+  if (nt <= 1) {
+    for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
+    for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
+    for (std::size_t k = 0; k < shares.size(); ++k) scatter_share(k, false);
+    for (std::size_t i = 0; i < ids; ++i) sort_from(i);
+  } else {
+#if defined(PW85_OPENMP)
+    long long const nshares = static_cast<long long>(shares.size());
+    long long const nids = static_cast<long long>(ids);
+#pragma omp parallel num_threads(nt)
+    {
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nshares; ++k) count_share(std::size_t(k), true);
+#pragma omp single
+      for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nshares; ++k) scatter_share(std::size_t(k), true);
+#pragma omp for schedule(dynamic, 4096)
+      for (long long i = 0; i < nids; ++i) sort_from(std::size_t(i));
+    }
+#endif
   }
   if (candidates != nullptr) *candidates = found;
   return Status::success;
