@@ -227,17 +227,20 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
     } else {
 #if defined(PW85_OPENMP)
       long long const ncell = static_cast<long long>(g.cells);
+      // The shares t are handed out by `omp for`, not taken from the
+      // thread's number: OpenMP may start fewer threads than asked
+      // (OMP_THREAD_LIMIT, OMP_DYNAMIC, nesting), and every share must run.
 #pragma omp parallel num_threads(nt)
       {
-        int const t = omp_get_thread_num();
-        locate(t);
-#pragma omp barrier
+#pragma omp for schedule(static, 1)
+        for (int t = 0; t < nt; ++t) locate(t);
 #pragma omp single
         totals();
 #pragma omp for schedule(static)
         for (long long c = 0; c < ncell; c += 4096)
           cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
-        scatter(t);
+#pragma omp for schedule(static, 1)
+        for (int t = 0; t < nt; ++t) scatter(t);
       }
 #endif
     }
