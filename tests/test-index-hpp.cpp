@@ -79,14 +79,16 @@ void same_shift(std::array<int, 3> const &s, int const *c_shift) {
 }
 
 // Bit for bit: μ² and λ compared as bytes.
-void same_double(double x, double y) { g_assert_cmpmem(&x, sizeof x, &y, sizeof y); }
+void same_double(double x, double y) {
+  g_assert_cmpmem(&x, sizeof x, &y, sizeof y);
+}
 
-void same_within(pw85::Index const &ix, pw85_index const *c,
-                 Ellipsoid const &e, double t, std::size_t exclude) {
+void same_within(pw85::Index const &ix, pw85_index const *c, Ellipsoid const &e,
+                 double t, std::size_t exclude) {
   Neighbours out;
   int const status = ix.within(e.c, e.q, t, exclude, out);
-  CResults r = c_query(1, [&](std::size_t cap, std::size_t *ids, int *sh,
-                              int *, double *ml, std::size_t *n) {
+  CResults r = c_query(1, [&](std::size_t cap, std::size_t *ids, int *sh, int *,
+                              double *ml, std::size_t *n) {
     return pw85_index_within(c, e.c, e.q, t, exclude, cap, ids, sh, ml, n);
   });
   g_assert_cmpint(status, ==, r.status);
@@ -121,8 +123,8 @@ void same_pairs_within(pw85::Index const &ix, pw85_index const *c, double t,
                        int threads) {
   Pairs out;
   int const status = ix.pairs_within(t, threads, out);
-  CResults r = c_query(2, [&](std::size_t cap, std::size_t *ids, int *sh,
-                              int *, double *ml, std::size_t *n) {
+  CResults r = c_query(2, [&](std::size_t cap, std::size_t *ids, int *sh, int *,
+                              double *ml, std::size_t *n) {
     return pw85_index_pairs_within(c, t, threads, cap, ids, sh, ml, n);
   });
   g_assert_cmpint(status, ==, r.status);
@@ -154,12 +156,13 @@ void same_answers(pw85::Index const &ix, pw85_index const *c, GRand *rng,
   for (int k = 0; k < 40; ++k) {
     Ellipsoid const e = random_ellipsoid(rng);
     std::size_t const exclude =
-        k % 2 ? pw85::index_no_id : (std::size_t)g_rand_int_range(rng, 0, (gint32)max_id + 1);
+        k % 2 ? pw85::index_no_id
+              : (std::size_t)g_rand_int_range(rng, 0, (gint32)max_id + 1);
     int result = 7, result_c = 7;
     std::size_t id = 7, id_c = 7;
-    g_assert_cmpint(ix.overlap_any(e.c, e.q, exclude, result, id), ==,
-                    pw85_index_overlap_any(c, e.c, e.q, exclude, &result_c,
-                                           &id_c));
+    g_assert_cmpint(
+        ix.overlap_any(e.c, e.q, exclude, result, id), ==,
+        pw85_index_overlap_any(c, e.c, e.q, exclude, &result_c, &id_c));
     g_assert_cmpint(result, ==, result_c);
     g_assert_cmpuint(id, ==, id_c);
     same_within(ix, c, e, 1., exclude);
@@ -178,9 +181,9 @@ void twin_configuration(bool periodic) {
   GRand *rng = g_rand_new_with_seed(periodic ? 16 : 61);
   pw85::Index ix;
   pw85_index *c = nullptr;
-  g_assert_cmpint(periodic ? pw85::Index::periodic(box, ix)
-                           : pw85::Index::open(ix),
-                  ==, PW85_SUCCESS);
+  g_assert_cmpint(
+      periodic ? pw85::Index::periodic(box, ix) : pw85::Index::open(ix), ==,
+      PW85_SUCCESS);
   g_assert_true(static_cast<bool>(ix));
   g_assert_cmpint(pw85_index_create(periodic ? box : nullptr, &c), ==,
                   PW85_SUCCESS);
@@ -199,9 +202,9 @@ void twin_configuration(bool periodic) {
       forms.insert(forms.end(), e.q, e.q + 6);
     }
   }
-  g_assert_cmpint(ix.insert_many(ids.size(), ids.data(), centres.data(),
-                                 forms.data()),
-                  ==, PW85_SUCCESS);
+  g_assert_cmpint(
+      ix.insert_many(ids.size(), ids.data(), centres.data(), forms.data()), ==,
+      PW85_SUCCESS);
   g_assert_cmpint(pw85_index_insert_many(c, ids.size(), ids.data(),
                                          centres.data(), forms.data()),
                   ==, PW85_SUCCESS);
@@ -269,8 +272,8 @@ void test_capacity() {
   g_assert_cmpint(ix.pairs_within(1.2, 1, pairs), ==, PW85_SUCCESS);
   g_assert_cmpuint(pairs.size(), <, big);
   g_assert_cmpuint(pairs.capacity(), >=, big);
-  CResults r = c_query(2, [&](std::size_t cap, std::size_t *ids, int *sh,
-                              int *, double *ml, std::size_t *n) {
+  CResults r = c_query(2, [&](std::size_t cap, std::size_t *ids, int *sh, int *,
+                              double *ml, std::size_t *n) {
     return pw85_index_pairs_within(c, 1.2, 1, cap, ids, sh, ml, n);
   });
   g_assert_cmpuint(pairs.size(), ==, r.ids.size() / 2);
@@ -300,8 +303,7 @@ void check_empty(pw85::Index &ix) {
   g_assert_cmpint(ix.update(0, origin, unit_q), ==, PW85_EFAULT);
   g_assert_cmpint(ix.remove(0), ==, PW85_EFAULT);
   g_assert_cmpint(ix.get(0, c, q), ==, PW85_EFAULT);
-  g_assert_cmpint(ix.overlap_any(origin, unit_q, pw85::index_no_id, result,
-                                 id),
+  g_assert_cmpint(ix.overlap_any(origin, unit_q, pw85::index_no_id, result, id),
                   ==, PW85_EFAULT);
   g_assert_cmpuint(n, ==, 7);
   g_assert_cmpuint(id, ==, 7);
@@ -396,8 +398,8 @@ Snapshot snapshot(pw85::Index const &ix) {
     s.stored.insert(s.stored.end(), q, q + pw85::sym);
   }
   double const centre[pw85::dim] = {1., 2., 3.};
-  g_assert_cmpint(ix.within(centre, unit_q, 30., pw85::index_no_id, s.near),
-                  ==, PW85_SUCCESS);
+  g_assert_cmpint(ix.within(centre, unit_q, 30., pw85::index_no_id, s.near), ==,
+                  PW85_SUCCESS);
   g_assert_cmpint(ix.pairs_within(30., 1, s.pairs), ==, PW85_SUCCESS);
   return s;
 }
@@ -435,8 +437,7 @@ void test_errors() {
   pw85::Index ix;
   double const bad_boxes[][pw85::dim] = {
       {nan, 1., 1.}, {1., inf, 1.}, {0., 1., 1.}, {1., 1., -2.}};
-  int const bad_box_status[] = {PW85_EDOM, PW85_EDOM, PW85_EINVAL,
-                                PW85_EINVAL};
+  int const bad_box_status[] = {PW85_EDOM, PW85_EDOM, PW85_EINVAL, PW85_EINVAL};
   g_assert_cmpint(pw85::Index::periodic(nullptr, ix), ==, PW85_EFAULT);
   check_empty(ix);
   for (std::size_t k = 0; k < 4; ++k) {
@@ -524,21 +525,16 @@ void test_errors() {
   Pairs pairs(1);
   pairs[0].i = 42;
   double const tiny_q[pw85::sym] = {1e-20, 0., 0., 1e-20, 0., 1e-20};
-  fails(ix, PW85_EINVAL, [&] {
-    return ix.within(c1, unit_q, 0., pw85::index_no_id, near);
-  });
-  fails(ix, PW85_EINVAL, [&] {
-    return ix.within(c1, unit_q, -1., pw85::index_no_id, near);
-  });
-  fails(ix, PW85_EDOM, [&] {
-    return ix.within(c1, unit_q, nan, pw85::index_no_id, near);
-  });
-  fails(ix, PW85_ENOTPOSDEF, [&] {
-    return ix.within(c1, q_indef, 1., pw85::index_no_id, near);
-  });
-  fails(ix, PW85_ERANGE, [&] {
-    return ix.within(c1, tiny_q, 1e300, pw85::index_no_id, near);
-  });
+  fails(ix, PW85_EINVAL,
+        [&] { return ix.within(c1, unit_q, 0., pw85::index_no_id, near); });
+  fails(ix, PW85_EINVAL,
+        [&] { return ix.within(c1, unit_q, -1., pw85::index_no_id, near); });
+  fails(ix, PW85_EDOM,
+        [&] { return ix.within(c1, unit_q, nan, pw85::index_no_id, near); });
+  fails(ix, PW85_ENOTPOSDEF,
+        [&] { return ix.within(c1, q_indef, 1., pw85::index_no_id, near); });
+  fails(ix, PW85_ERANGE,
+        [&] { return ix.within(c1, tiny_q, 1e300, pw85::index_no_id, near); });
   fails(ix, PW85_EINVAL, [&] { return ix.overlapping_pairs(0, overlaps); });
   fails(ix, PW85_EINVAL, [&] { return ix.overlapping_pairs(-3, overlaps); });
   fails(ix, PW85_EDOM, [&] { return ix.pairs_within(inf, 1, pairs); });

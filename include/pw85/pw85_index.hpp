@@ -71,20 +71,20 @@ class Index {
    *  pw85_contact_function(r, q, q_id) with r from the candidate's centre
    *  to that image (λ weighs the stored ellipsoid's form). */
   struct Neighbour {
-    std::size_t id;
-    std::array<int, dim> shift;
-    double mu2;
-    double lambda;
+    std::size_t id;              ///< the stored ellipsoid's id
+    std::array<int, dim> shift;  ///< its image shift n
+    double mu2;                  ///< μ² (dimensionless)
+    double lambda;               ///< λ, in [0, 1]
   };
 
   /** A result of overlapping_pairs(): ellipsoids i < j, the image shift n
    *  of j, and pw85_overlap(r, q_i, q_j) with r = (c_j + n∘L) − c_i: −1
    *  (overlap) or 0 (tangent to 4 ulps). */
   struct OverlappingPair {
-    std::size_t i;
-    std::size_t j;
-    std::array<int, dim> shift;
-    int result;
+    std::size_t i;               ///< the first id
+    std::size_t j;               ///< the second id, j > i
+    std::array<int, dim> shift;  ///< the image shift n of j
+    int result;                  ///< −1 (overlap) or 0 (tangent)
   };
 
   /** A result of pairs_within(): ellipsoids i ≤ j (i = j for an
@@ -92,11 +92,11 @@ class Index {
    *  positive), the image shift n of j, μ² and λ of
    *  pw85_contact_function(r, q_i, q_j) with r = (c_j + n∘L) − c_i. */
   struct Pair {
-    std::size_t i;
-    std::size_t j;
-    std::array<int, dim> shift;
-    double mu2;
-    double lambda;
+    std::size_t i;               ///< the first id
+    std::size_t j;               ///< the second id, j ≥ i
+    std::array<int, dim> shift;  ///< the image shift n of j
+    double mu2;                  ///< μ² (dimensionless)
+    double lambda;               ///< λ, in [0, 1]
   };
 
   /** An Index that holds no index (see the class description). */
@@ -109,7 +109,9 @@ class Index {
   /** Destroys the index held, if any (pw85_index_destroy()). */
   ~Index() { pw85_index_destroy(handle_); }
 
+  /** Not copyable: an index has one owner. */
   Index(Index const &) = delete;
+  /** Not copyable: an index has one owner. */
   Index &operator=(Index const &) = delete;
 
   /** Takes other's index; other then holds none. */
@@ -195,8 +197,8 @@ class Index {
    * @return the statuses of insert(), the first error met in the order of
    *         the arrays; on error none is inserted.
    */
-  int insert_many(std::size_t n, std::size_t const *ids,
-                  double const *centres, double const *q) noexcept {
+  int insert_many(std::size_t n, std::size_t const *ids, double const *centres,
+                  double const *q) noexcept {
     return pw85_index_insert_many(handle_, n, ids, centres, q);
   }
 
@@ -219,9 +221,7 @@ class Index {
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held; PW85_EINVAL if
    *         id is not stored.
    */
-  int remove(std::size_t id) noexcept {
-    return pw85_index_remove(handle_, id);
-  }
+  int remove(std::size_t id) noexcept { return pw85_index_remove(handle_, id); }
 
   /**
    * @brief The centre and form of a stored ellipsoid, as given
@@ -337,8 +337,8 @@ class Index {
     int const status = collect(
         [&](std::size_t cap, std::size_t *ids, int *shifts, double *values,
             std::size_t *n) {
-          return pw85_index_pairs_within(handle_, t, threads, cap, ids,
-                                         shifts, values, n);
+          return pw85_index_pairs_within(handle_, t, threads, cap, ids, shifts,
+                                         values, n);
         },
         out.capacity() > 64 ? out.capacity() : 64, r);
     if (status != PW85_SUCCESS) return status;
@@ -364,8 +364,6 @@ class Index {
   // or two values (μ², λ) per result.
   template <std::size_t IDS, typename Value = double>
   struct Results {
-    static constexpr std::size_t values_per =
-        std::is_same<Value, int>::value ? 1 : 2;
     std::vector<std::size_t> ids;
     std::vector<int> shifts;
     std::vector<Value> values;
@@ -399,10 +397,11 @@ class Index {
       int status = resize(r.ids, IDS * cap);
       if (status == PW85_SUCCESS) status = resize(r.shifts, dim * cap);
       if (status == PW85_SUCCESS)
-        status = resize(r.values, Results<IDS, Value>::values_per * cap);
+        status =
+            resize(r.values, (std::is_same<Value, int>::value ? 1 : 2) * cap);
       if (status == PW85_SUCCESS)
-        status = call(cap, r.ids.data(), r.shifts.data(), r.values.data(),
-                      &r.count);
+        status =
+            call(cap, r.ids.data(), r.shifts.data(), r.values.data(), &r.count);
       if (status != PW85_SUCCESS || r.count <= cap) return status;
       cap = r.count;
     }
