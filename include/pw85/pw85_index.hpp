@@ -60,8 +60,9 @@ constexpr std::size_t index_no_id = PW85_INDEX_NO_ID;
  *
  * Move-only. An Index that holds no index (default-constructed, moved
  * from, or whose creation failed) is valid: it can be destroyed, assigned
- * to, or created into again, and its other members return PW85_EFAULT
- * (the status of the C functions given a NULL index) and change nothing.
+ * to, or created into again; it converts to false, handle() is nullptr,
+ * and the members that query or modify an index return PW85_EFAULT (the
+ * status of the C functions given a NULL index) and change nothing.
  * @since 2.2.0
  */
 class Index {
