@@ -13,6 +13,9 @@ Reads the Sphinx inventory HTML_DIR/objects.inv and requires:
 - every macro defined by the C headers (include guards aside) as a C macro;
 - every function and constant of the C++ header (namespace pw85) as a C++
   function or variable;
+- every public class that a C++ header declares, and each of its public
+  members (functions, fields, nested classes), as a C++ entry of the
+  reference with a description in the header;
 - every name in ``MODULE.__all__`` as a Python object of the reference.
 
 Prints what it checked; exit status 1 and the list of what is missing
@@ -78,6 +81,37 @@ def documented_members(xml_dir):
     return members
 
 
+def _described(element):
+    return bool(("".join(element.find("briefdescription").itertext()) +
+                 "".join(element.find("detaileddescription").itertext())).strip())
+
+
+def cpp_classes(xml_dir, header):
+    """[(role, qualified name, has a description)] for the public classes
+    that a C++ header declares and their public members (Doxygen's XML)."""
+    found = []
+    index = ET.parse(Path(xml_dir) / "index.xml").getroot()
+    for compound in index.findall("compound"):
+        if compound.get("kind") not in ("class", "struct"):
+            continue
+        cdef = ET.parse(Path(xml_dir) / (compound.get("refid") + ".xml")) \
+            .getroot().find("compounddef")
+        location = cdef.find("location")
+        if location is None or cdef.get("prot") != "public" or \
+                Path(location.get("file")).name != Path(header).name:
+            continue
+        name = cdef.findtext("compoundname")
+        found.append(("cpp:class", name, _described(cdef)))
+        for member in cdef.iter("memberdef"):
+            if member.get("prot") != "public":
+                continue
+            role = "cpp:function" if member.get("kind") == "function" \
+                else "cpp:member"
+            found.append((role, name + "::" + member.findtext("name"),
+                          _described(member)))
+    return found
+
+
 def header_macros(path):
     text = Path(path).read_text(encoding="utf-8")
     names = re.findall(r"^\s*#\s*define\s+(\w+)", text, re.M)
@@ -141,8 +175,15 @@ def main():
                              if k == "cpp:member" and n.split("::")[-1] == name]
                 require("cpp:member", qualified[0] if qualified else "pw85::" + name,
                         "C++ constant")
-            print("%s: %d functions, %d constants"
-                  % (Path(header).name, len(functions), len(constants)))
+            entries = cpp_classes(args.xml, header)
+            for role, name, described in entries:
+                require(role, name, "C++ class member")
+                if not described:
+                    missing.append("C++ class member %s: no description in "
+                                   "the header" % name)
+            print("%s: %d functions, %d constants, %d class entries"
+                  % (Path(header).name, len(functions), len(constants),
+                     len(entries)))
         else:
             macros = sorted(header_macros(header))
             for name in macros:

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Compiled as C++ (-Werror -pedantic): pw85.h and pw85.hpp stand alone and
-// together, in either order.
+// together, in either order; pw85_index.hpp first, standing alone.
+#include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
 #include <pw85/pw85.hpp>
 #include <pw85/pw85.h>
@@ -44,5 +45,12 @@ int main() {
                                               1) == PW85_SUCCESS;
   ok = ok && pw85::principal_axes_batch(1, q2, 0, axes, rot, nullptr, 1) ==
                  PW85_SUCCESS;
+  pw85::Index index;
+  std::size_t n = 1;
+  std::vector<pw85::Index::Pair> pairs;
+  ok = ok && pw85::Index::open(index) == PW85_SUCCESS;
+  ok = ok && index.insert(0, r, q) == PW85_SUCCESS;
+  ok = ok && index.pairs_within(1., 1, pairs) == PW85_SUCCESS && pairs.empty();
+  ok = ok && index.count(n) == PW85_SUCCESS && n == 1;
   return ok ? 0 : 1;
 }

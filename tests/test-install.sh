@@ -26,7 +26,8 @@ step "configure, build and install into $prefix"
 "$meson" install -C "$tmp/build" --quiet
 
 step "installed files"
-for f in include/pw85/pw85.h include/pw85/pw85.hpp include/pw85/pw85_version.h \
+for f in include/pw85/pw85.h include/pw85/pw85.hpp include/pw85/pw85_index.hpp \
+         include/pw85/pw85_version.h \
          include/pw85/pw85.f90 lib/libpw85.so lib/libpw85.so.2 lib/libpw85.a \
          lib/libpw85_legacy.a lib/pkgconfig/pw85.pc \
          lib/cmake/pw85/pw85Config.cmake lib/cmake/pw85/pw85ConfigVersion.cmake; do

@@ -13,6 +13,9 @@
  *
  * C++ standard: C++11 for everything but pw85::metadata, which needs C++17
  * (std::string_view, as in pw85 2.0) and is left out below C++17.
+ *
+ * The spatial index of ellipsoids, pw85::Index, is defined in
+ * pw85_index.hpp, which this header includes at its end.
  */
 #ifndef PW85_HPP
 #define PW85_HPP
@@ -300,5 +303,9 @@ constexpr std::string_view year{"2026"};
 
 }  // namespace pw85
 #endif  // C++17
+
+// pw85::Index (the spatial index, pw85_index.h) belongs to this API; it
+// has its own header, which includes this one.
+#include "pw85_index.hpp"
 
 #endif  // PW85_HPP

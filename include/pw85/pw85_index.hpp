@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @file pw85_index.hpp
+ * @brief pw85::Index, the C++ owner of a pw85_index (pw85_index.h): the
+ *        spatial index of ellipsoids, its queries returning std::vector.
+ *
+ * Header-only over the C ABI of pw85_index.h, whose description of each
+ * function is the contract here (the domain, the image rule and the side
+ * rule of a periodic box, the certification, the order of the results);
+ * link the same -lpw85. Needs C++11, as pw85.hpp, which includes this
+ * header: either one gives pw85::Index.
+ *
+ * Conventions of pw85.hpp: vectors `double[3]`, quadratic forms
+ * `double[6]` (upper triangle, row by row); lengths in the caller's unit,
+ * Q in that unit squared; every member returns the PW85_* status of the C
+ * function it calls and none throws. A failed call leaves the index and
+ * every output as they were (the vectors of the queries included).
+ *
+ * Memory. The queries return their results in a std::vector given by the
+ * caller (resized to the number of results; its capacity is reused by the
+ * next call). A vector that cannot grow is reported as PW85_ENOMEM, like
+ * every allocation of the library, when exceptions are enabled; compiled
+ * with -fno-exceptions, the C++ library's own rule applies (it aborts).
+ *
+ * Threads: those of pw85_index.h. Calls that modify an index (insert,
+ * insert_many, update, remove, the assignments, destruction) need
+ * exclusive access to it; the const members only read it and may run
+ * concurrently from several threads (each with its own output vector).
+ * Only overlapping_pairs() and pairs_within() start threads, and only as
+ * many as asked.
+ *
+ * @since 2.2.0
+ */
+#ifndef PW85_INDEX_HPP
+#define PW85_INDEX_HPP
+
+#include <array>
+#include <cstddef>
+#include <new>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+#include "pw85.hpp"
+#include "pw85_index.h"
+
+namespace pw85 {
+
+/** The largest id of an ellipsoid (PW85_INDEX_MAX_ID, 2³² − 2).
+ *  @since 2.2.0 */
+constexpr std::size_t index_max_id = PW85_INDEX_MAX_ID;
+/** No id (PW85_INDEX_NO_ID): the `exclude` of the queries on a candidate
+ *  when nothing is to be skipped, and the id Index::overlap_any() gives
+ *  when nothing overlaps.
+ *  @since 2.2.0 */
+constexpr std::size_t index_no_id = PW85_INDEX_NO_ID;
+
+/**
+ * @brief A spatial index of ellipsoids (pw85_index.h), owned: created by
+ *        open() or periodic(), destroyed with the object.
+ *
+ * Move-only. An Index that holds no index (default-constructed, moved
+ * from, or whose creation failed) is valid: it can be destroyed, assigned
+ * to, or created into again; it converts to false, handle() is nullptr,
+ * and the members that query or modify an index return PW85_EFAULT (the
+ * status of the C functions given a NULL index) and change nothing.
+ * @since 2.2.0
+ */
+class Index {
+ public:
+  /** A result of within(): stored ellipsoid `id`, its image `shift` n
+   *  (the image is at c_id + n∘L), μ² and λ of
+   *  pw85_contact_function(r, q, q_id) with r from the candidate's centre
+   *  to that image (λ weighs the stored ellipsoid's form). */
+  struct Neighbour {
+    std::size_t id;              ///< the stored ellipsoid's id
+    std::array<int, dim> shift;  ///< its image shift n
+    double mu2;                  ///< μ² (dimensionless)
+    double lambda;               ///< λ, in [0, 1]
+  };
+
+  /** A result of overlapping_pairs(): ellipsoids i < j, the image shift n
+   *  of j, and pw85_overlap(r, q_i, q_j) with r = (c_j + n∘L) − c_i: −1
+   *  (overlap) or 0 (tangent to 4 ulps). */
+  struct OverlappingPair {
+    std::size_t i;               ///< the first id
+    std::size_t j;               ///< the second id, j > i
+    std::array<int, dim> shift;  ///< the image shift n of j
+    int result;                  ///< −1 (overlap) or 0 (tangent)
+  };
+
+  /** A result of pairs_within(): ellipsoids i ≤ j (i = j for an
+   *  ellipsoid and one of its own images, n then lexicographically
+   *  positive), the image shift n of j, μ² and λ of
+   *  pw85_contact_function(r, q_i, q_j) with r = (c_j + n∘L) − c_i. */
+  struct Pair {
+    std::size_t i;               ///< the first id
+    std::size_t j;               ///< the second id, j ≥ i
+    std::array<int, dim> shift;  ///< the image shift n of j
+    double mu2;                  ///< μ² (dimensionless)
+    double lambda;               ///< λ, in [0, 1]
+  };
+
+  /** An Index that holds no index (see the class description). */
+  Index() noexcept = default;
+
+  /** Takes ownership of an index made by pw85_index_create() (or
+   *  nullptr): destroyed with this object. */
+  explicit Index(pw85_index *owned) noexcept : handle_(owned) {}
+
+  /** Destroys the index held, if any (pw85_index_destroy()). */
+  ~Index() { pw85_index_destroy(handle_); }
+
+  /** Not copyable: an index has one owner. */
+  Index(Index const &) = delete;
+  /** Not copyable: an index has one owner. */
+  Index &operator=(Index const &) = delete;
+
+  /** Takes other's index; other then holds none. */
+  Index(Index &&other) noexcept : handle_(other.handle_) {
+    other.handle_ = nullptr;
+  }
+
+  /** Destroys the index held, then takes other's; other then holds none.
+   *  Moving an Index into itself changes nothing. */
+  Index &operator=(Index &&other) noexcept {
+    if (this != &other) {
+      pw85_index_destroy(handle_);
+      handle_ = other.handle_;
+      other.handle_ = nullptr;
+    }
+    return *this;
+  }
+
+  /**
+   * @brief Creates an empty index for an open domain into `out`
+   *        (pw85_index_create() with no box).
+   * @param[out] out receives the new index; the index it held before is
+   *             destroyed. Unchanged on error.
+   * @return PW85_SUCCESS; PW85_ENOMEM.
+   */
+  static int open(Index &out) noexcept { return create(nullptr, out); }
+
+  /**
+   * @brief Creates an empty index for a periodic orthorhombic box into
+   *        `out` (pw85_index_create()).
+   * @param[in] box the sides L0, L1, L2 (lengths, > 0 and finite).
+   * @param[out] out as open().
+   * @return PW85_SUCCESS; PW85_EFAULT if box is nullptr; PW85_EDOM if a
+   *         side is not finite; PW85_EINVAL if a side is not > 0;
+   *         PW85_ENOMEM. `out` is unchanged on error.
+   */
+  static int periodic(double const box[dim], Index &out) noexcept {
+    return box == nullptr ? PW85_EFAULT : create(box, out);
+  }
+
+  /** Does this libpw85 run overlapping_pairs() and pairs_within() on
+   *  several threads (pw85_index_openmp())? */
+  static bool openmp() noexcept { return pw85_index_openmp() != 0; }
+
+  /** Does this object hold an index? */
+  explicit operator bool() const noexcept { return handle_ != nullptr; }
+
+  /** The index held (nullptr if none), still owned by this object: for
+   *  the C functions of pw85_index.h. */
+  pw85_index *handle() const noexcept { return handle_; }
+
+  /**
+   * @brief The number of ellipsoids stored (pw85_index_count()).
+   * @param[out] n that number (unchanged on error).
+   * @return PW85_SUCCESS; PW85_EFAULT if no index is held.
+   */
+  int count(std::size_t &n) const noexcept {
+    return pw85_index_count(handle_, &n);
+  }
+
+  /**
+   * @brief Inserts an ellipsoid, O(1) amortised (pw85_index_insert()).
+   * @param[in] id its id, not in use, at most index_max_id.
+   * @param[in] centre its centre c.
+   * @param[in] q its quadratic form Q.
+   * @return PW85_SUCCESS; PW85_EFAULT if no index is held or a pointer is
+   *         nullptr; PW85_EDOM if an entry is not finite; PW85_ENOTPOSDEF
+   *         if q is not positive definite; PW85_EINVAL if id is in use or
+   *         above index_max_id, or, in a periodic box, if
+   *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k; PW85_ENOMEM.
+   */
+  int insert(std::size_t id, double const centre[dim],
+             double const q[sym]) noexcept {
+    return pw85_index_insert(handle_, id, centre, q);
+  }
+
+  /**
+   * @brief Inserts n ellipsoids, all or none (pw85_index_insert_many()).
+   * @param[in] n their number (0 does nothing).
+   * @param[in] ids n distinct ids, not in use.
+   * @param[in] centres 3·n doubles, centre i at centres[3·i].
+   * @param[in] q 6·n doubles, form i at q[6·i].
+   * @return the statuses of insert(), the first error met in the order of
+   *         the arrays; on error none is inserted.
+   */
+  int insert_many(std::size_t n, std::size_t const *ids, double const *centres,
+                  double const *q) noexcept {
+    return pw85_index_insert_many(handle_, n, ids, centres, q);
+  }
+
+  /**
+   * @brief Moves or reshapes a stored ellipsoid, O(1) amortised
+   *        (pw85_index_update()).
+   * @param[in] id the id of a stored ellipsoid.
+   * @param[in] centre its new centre.
+   * @param[in] q its new quadratic form.
+   * @return the statuses of insert(); PW85_EINVAL if id is not stored.
+   */
+  int update(std::size_t id, double const centre[dim],
+             double const q[sym]) noexcept {
+    return pw85_index_update(handle_, id, centre, q);
+  }
+
+  /**
+   * @brief Removes a stored ellipsoid, O(1) (pw85_index_remove()).
+   * @param[in] id the id of a stored ellipsoid; it becomes free.
+   * @return PW85_SUCCESS; PW85_EFAULT if no index is held; PW85_EINVAL if
+   *         id is not stored.
+   */
+  int remove(std::size_t id) noexcept { return pw85_index_remove(handle_, id); }
+
+  /**
+   * @brief The centre and form of a stored ellipsoid, as given
+   *        (pw85_index_get()).
+   * @param[in] id the id of a stored ellipsoid.
+   * @param[out] centre its centre (not wrapped into the box).
+   * @param[out] q its quadratic form.
+   * @return PW85_SUCCESS; PW85_EFAULT if no index is held or a pointer is
+   *         nullptr; PW85_EINVAL if id is not stored. The outputs are
+   *         written on success only.
+   */
+  int get(std::size_t id, double centre[dim], double q[sym]) const noexcept {
+    return pw85_index_get(handle_, id, centre, q);
+  }
+
+  /**
+   * @brief Does a candidate overlap a stored ellipsoid? Stops at the first
+   *        overlap (pw85_index_overlap_any()).
+   * @param[in] centre the candidate's centre (in a periodic box,
+   *            |c_k| ≤ 2²⁹·L_k).
+   * @param[in] q the candidate's quadratic form.
+   * @param[in] exclude the id of a stored ellipsoid to skip, or
+   *            index_no_id.
+   * @param[out] result −1 if some stored ellipsoid overlaps the candidate,
+   *             else 0 if some is tangent to it (4 ulps), else +1.
+   * @param[out] id an ellipsoid with that result, or index_no_id for +1.
+   * @return PW85_SUCCESS; PW85_EFAULT if no index is held or a pointer is
+   *         nullptr; PW85_EDOM, PW85_ENOTPOSDEF, PW85_EINVAL, PW85_ERANGE
+   *         as pw85_index_overlap_any(). The outputs are written on
+   *         success only.
+   */
+  int overlap_any(double const centre[dim], double const q[sym],
+                  std::size_t exclude, int &result,
+                  std::size_t &id) const noexcept {
+    return pw85_index_overlap_any(handle_, centre, q, exclude, &result, &id);
+  }
+
+  /**
+   * @brief Every stored ellipsoid and image with μ² < t from a candidate,
+   *        sorted by id then shift (pw85_index_within()).
+   * @param[in] centre the candidate's centre (as overlap_any()).
+   * @param[in] q the candidate's quadratic form.
+   * @param[in] t the threshold (dimensionless, > 0 and finite; 1 for
+   *            overlaps, above 1 for near neighbours).
+   * @param[in] exclude as overlap_any().
+   * @param[out] out the results, resized to their number.
+   * @return the statuses of overlap_any(); PW85_EDOM if t is not finite;
+   *         PW85_EINVAL if t ≤ 0; PW85_ERANGE as pw85_index_within();
+   *         PW85_ENOMEM if out or a scratch array cannot grow. `out` is
+   *         unchanged on error.
+   */
+  int within(double const centre[dim], double const q[sym], double t,
+             std::size_t exclude, std::vector<Neighbour> &out) const noexcept {
+    Results<1> r;
+    int const status = collect(
+        [&](std::size_t cap, std::size_t *ids, int *shifts, double *values,
+            std::size_t *n) {
+          return pw85_index_within(handle_, centre, q, t, exclude, cap, ids,
+                                   shifts, values, n);
+        },
+        out.capacity() > 16 ? out.capacity() : 16, r);
+    if (status != PW85_SUCCESS) return status;
+    return fill(r, out, [&](Neighbour &x, std::size_t k) {
+      x.id = r.ids[k];
+      x.mu2 = r.values[2 * k];
+      x.lambda = r.values[2 * k + 1];
+    });
+  }
+
+  /**
+   * @brief Every overlapping (or tangent) pair, each once, sorted by i,
+   *        j, then shift; the same for any thread count
+   *        (pw85_index_overlapping_pairs()).
+   * @param[in] threads the number of threads (≥ 1; serial without
+   *            OpenMP, see openmp()).
+   * @param[out] out the pairs, resized to their number.
+   * @return PW85_SUCCESS; PW85_EFAULT if no index is held; PW85_EINVAL if
+   *         threads < 1; PW85_ERANGE as pw85_overlap() on some pair;
+   *         PW85_ENOMEM. `out` is unchanged on error.
+   */
+  int overlapping_pairs(int threads,
+                        std::vector<OverlappingPair> &out) const noexcept {
+    Results<2, int> r;
+    int const status = collect(
+        [&](std::size_t cap, std::size_t *ids, int *shifts, int *values,
+            std::size_t *n) {
+          return pw85_index_overlapping_pairs(handle_, threads, cap, ids,
+                                              shifts, values, n);
+        },
+        out.capacity() > 64 ? out.capacity() : 64, r);
+    if (status != PW85_SUCCESS) return status;
+    return fill(r, out, [&](OverlappingPair &x, std::size_t k) {
+      x.i = r.ids[2 * k];
+      x.j = r.ids[2 * k + 1];
+      x.result = r.values[k];
+    });
+  }
+
+  /**
+   * @brief Every pair and image with μ² < t, each once, sorted by i, j,
+   *        then shift; the same for any thread count
+   *        (pw85_index_pairs_within()).
+   * @param[in] t the threshold (> 0 and finite).
+   * @param[in] threads the number of threads (≥ 1).
+   * @param[out] out the pairs, resized to their number.
+   * @return the statuses of overlapping_pairs(); PW85_EDOM if t is not
+   *         finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE also as within().
+   *         `out` is unchanged on error.
+   */
+  int pairs_within(double t, int threads,
+                   std::vector<Pair> &out) const noexcept {
+    Results<2> r;
+    int const status = collect(
+        [&](std::size_t cap, std::size_t *ids, int *shifts, double *values,
+            std::size_t *n) {
+          return pw85_index_pairs_within(handle_, t, threads, cap, ids, shifts,
+                                         values, n);
+        },
+        out.capacity() > 64 ? out.capacity() : 64, r);
+    if (status != PW85_SUCCESS) return status;
+    return fill(r, out, [&](Pair &x, std::size_t k) {
+      x.i = r.ids[2 * k];
+      x.j = r.ids[2 * k + 1];
+      x.mu2 = r.values[2 * k];
+      x.lambda = r.values[2 * k + 1];
+    });
+  }
+
+ private:
+  pw85_index *handle_ = nullptr;
+
+  static int create(double const *box, Index &out) noexcept {
+    pw85_index *created = nullptr;
+    int const status = pw85_index_create(box, &created);
+    if (status == PW85_SUCCESS) out = Index(created);
+    return status;
+  }
+
+  // The arrays of the C queries: IDS ids, 3 shifts and one result (int)
+  // or two values (μ², λ) per result.
+  template <std::size_t IDS, typename Value = double>
+  struct Results {
+    std::vector<std::size_t> ids;
+    std::vector<int> shifts;
+    std::vector<Value> values;
+    std::size_t count = 0;
+  };
+
+  // Resizes v to n, PW85_ENOMEM if it cannot grow (v then unchanged).
+  template <typename T>
+  static int resize(std::vector<T> &v, std::size_t n) noexcept {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+    try {
+      v.resize(n);
+    } catch (std::bad_alloc const &) {
+      return PW85_ENOMEM;
+    } catch (std::length_error const &) {
+      return PW85_ENOMEM;
+    }
+#else
+    v.resize(n);
+#endif
+    return PW85_SUCCESS;
+  }
+
+  // The protocol of the C queries: call with room for `guess` results,
+  // and once more with room for all of them if they did not fit.
+  template <typename Call, std::size_t IDS, typename Value>
+  static int collect(Call call, std::size_t guess,
+                     Results<IDS, Value> &r) noexcept {
+    std::size_t cap = guess;
+    for (;;) {
+      int status = resize(r.ids, IDS * cap);
+      if (status == PW85_SUCCESS) status = resize(r.shifts, dim * cap);
+      if (status == PW85_SUCCESS)
+        status =
+            resize(r.values, (std::is_same<Value, int>::value ? 1 : 2) * cap);
+      if (status == PW85_SUCCESS)
+        status =
+            call(cap, r.ids.data(), r.shifts.data(), r.values.data(), &r.count);
+      if (status != PW85_SUCCESS || r.count <= cap) return status;
+      cap = r.count;
+    }
+  }
+
+  // out = the r.count results, each from set(x, k) and the shifts.
+  template <typename T, std::size_t IDS, typename Value, typename Set>
+  static int fill(Results<IDS, Value> const &r, std::vector<T> &out,
+                  Set set) noexcept {
+    int const status = resize(out, r.count);
+    if (status != PW85_SUCCESS) return status;
+    for (std::size_t k = 0; k < r.count; ++k) {
+      for (std::size_t d = 0; d < dim; ++d)
+        out[k].shift[d] = r.shifts[dim * k + d];
+      set(out[k], k);
+    }
+    return PW85_SUCCESS;
+  }
+};
+
+}  // namespace pw85
+
+#endif  // PW85_INDEX_HPP
