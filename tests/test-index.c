@@ -790,12 +790,85 @@ static Config const configs[] = {
     {"small-box", MONO, 1, 6, .3, 1},
 };
 
+/* ---- near contact ------------------------------------------------------- */
+
+/* overlap_any on pairs placed at μ² = 1 + δ, δ from ±1e-2 to ±1e-13 (and
+ * 0), between spheres, near-spheres and triaxial ellipsoids of different
+ * sizes, in an open domain and in a periodic box (the stored one near a
+ * corner, the candidate through the box's faces): its result and id are
+ * those of pw85_overlap() on the one pair. Close to contact the index may
+ * not decide anything by its own shortcuts (a bound on inscribed balls, the
+ * AABB and line-of-centres tests); a shortcut too generous shows here. */
+static void test_near_contact(void) {
+  GRand *rng = g_rand_new_with_seed(1616);
+  static double const deltas[] = {1e-2, 1e-4, 1e-7, 1e-10, 1e-13, 0.};
+  double const box[3] = {10., 11., 12.};
+  int mismatches = 0, overlapping = 0, separate = 0;
+  for (int periodic = 0; periodic < 2; periodic++) {
+    for (int n = 0; n < 6000; n++) {
+      double q[2][6], a[3], e[3];
+      for (int k = 0; k < 2; k++) {
+        double const size = k == 0 ? 1. : g_rand_double_range(rng, .3, 3.);
+        int const kind = g_rand_int_range(rng, 0, 3);
+        for (int d = 0; d < 3; d++)
+          a[d] = size * (kind == 0 ? 1. : kind == 1 ? 1. - 1e-3 * d
+                                                     : g_rand_double_range(rng, .3, 1.));
+        for (int d = 0; d < 3; d++) e[d] = a[d] * a[d];
+        if (kind == 0) { /* a sphere, exactly */
+          double const qs[6] = {e[0], 0., 0., e[0], 0., e[0]};
+          memcpy(q[k], qs, sizeof qs);
+        } else {
+          random_form_with_eigenvalues(rng, e, q[k]);
+        }
+      }
+      double p[4], rot[9], dir[3], out[2];
+      random_unit_quaternion(rng, p);
+      quaternion_rotation(p, rot);
+      for (int d = 0; d < 3; d++) dir[d] = rot[d];
+      /* μ is homogeneous of degree 1 in r: scaled to μ² = 1 + δ. */
+      g_assert_cmpint(pw85_contact_function(dir, q[1], q[0], out), ==, PW85_SUCCESS);
+      double const delta = deltas[n % G_N_ELEMENTS(deltas)] * (n % 12 < 6 ? 1. : -1.);
+      double const scale = sqrt((1. + delta) / out[0]);
+      double stored[3] = {.3, .2, .1}, cand[3], r[3];
+      if (periodic) for (int d = 0; d < 3; d++) stored[d] = box[d] - .2;
+      for (int d = 0; d < 3; d++) cand[d] = stored[d] - scale * dir[d];
+      pw85_index *ix = NULL;
+      g_assert_cmpint(pw85_index_create(periodic ? box : NULL, &ix), ==, PW85_SUCCESS);
+      g_assert_cmpint(pw85_index_insert(ix, 7, stored, q[0]), ==, PW85_SUCCESS);
+      if (periodic) /* the candidate in the box, the stored one's image near it */
+        for (int d = 0; d < 3; d++) cand[d] -= box[d];
+      int shift = periodic ? 1 : 0;
+      for (int d = 0; d < 3; d++) r[d] = (stored[d] - shift * box[d]) - cand[d];
+      int ref = 9, result = 9;
+      size_t id = 0;
+      g_assert_cmpint(pw85_overlap(r, q[1], q[0], &ref), ==, PW85_SUCCESS);
+      g_assert_cmpint(pw85_index_overlap_any(ix, cand, q[1], PW85_INDEX_NO_ID, &result, &id),
+                      ==, PW85_SUCCESS);
+      if (result != ref || id != (ref == 1 ? PW85_INDEX_NO_ID : 7)) {
+        if (mismatches++ < 5)
+          g_test_message("near contact %d (δ = %g, periodic %d): index %d (id %zu), "
+                         "pw85_overlap %d", n, delta, periodic, result, id, ref);
+      }
+      overlapping += ref == -1;
+      separate += ref == 1;
+      pw85_index_destroy(ix);
+    }
+  }
+  g_test_message("near contact: %d overlapping, %d separate, %d mismatches",
+                 overlapping, separate, mismatches);
+  g_assert_cmpint(mismatches, ==, 0);
+  g_assert_cmpint(overlapping, >, 4000); /* both sides of contact tested */
+  g_assert_cmpint(separate, >, 4000);
+  g_rand_free(rng);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
   g_test_add_func("/pw85/index/bad-input", test_bad_input);
   g_test_add_func("/pw85/index/several-images", test_several_images);
   g_test_add_func("/pw85/index/concurrent-queries", test_concurrent_queries);
+  g_test_add_func("/pw85/index/near-contact", test_near_contact);
   for (size_t k = 0; k < G_N_ELEMENTS(configs); k++) {
     char *path = g_strdup_printf("/pw85/index/brute-force/%s", configs[k].name);
     g_test_add_data_func(path, &configs[k], test_config);

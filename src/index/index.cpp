@@ -15,6 +15,73 @@ void half_widths(double const q[sym], double h[dim]) noexcept {
   for (int k = 0; k < dim; ++k) h[k] = std::sqrt(q[diag_of[k]]);
 }
 
+namespace {
+
+// Does the Cholesky factorisation of Q − s·I complete with every pivot
+// > 0? (Then Q − s·I + E is positive definite for some ‖E‖₂ < 2⁻⁴⁸·M,
+// M = max Q_kk ≥ s: see inscribed_radius() in index.hpp.)
+bool definite_after_shift(double const q[sym], double s) noexcept {
+  double const d0 = q[0] - s;
+  if (!(d0 > 0.0)) return false;
+  double const l0 = std::sqrt(d0);
+  double const l10 = q[1] / l0, l20 = q[2] / l0;
+  double const d1 = (q[3] - s) - l10 * l10;
+  if (!(d1 > 0.0)) return false;
+  double const l21 = (q[4] - l20 * l10) / std::sqrt(d1);
+  double const d2 = ((q[5] - s) - l20 * l20) - l21 * l21;
+  return d2 > 0.0;
+}
+
+// An estimate of λmin(Q), not certified: the trigonometric solution of
+// the characteristic cubic (O. K. Smith, Commun. ACM 4(4), 168, 1961).
+double least_eigenvalue_estimate(double const q[sym]) noexcept {
+  double const off = q[1] * q[1] + q[2] * q[2] + q[4] * q[4];
+  double const m = (q[0] + q[3] + q[5]) / 3.0;
+  double const b0 = q[0] - m, b1 = q[3] - m, b2 = q[5] - m;
+  double const p = std::sqrt((b0 * b0 + b1 * b1 + b2 * b2 + 2.0 * off) / 6.0);
+  if (!(p > 0.0)) return m;  // Q = m·I
+  // det(B)/2 for B = (Q − m·I)/p.
+  double const c0 = b0 / p, c1 = b1 / p, c2 = b2 / p;
+  double const e01 = q[1] / p, e02 = q[2] / p, e12 = q[4] / p;
+  double const half_det = 0.5 * (c0 * (c1 * c2 - e12 * e12) -
+                                 e01 * (e01 * c2 - e12 * e02) +
+                                 e02 * (e01 * e12 - c1 * e02));
+  double const phi =
+      std::acos(std::min(1.0, std::max(-1.0, half_det))) / 3.0;
+  return m + 2.0 * p * std::cos(phi + 2.0943951023931957);  // + 2π/3
+}
+
+}  // namespace
+
+double inscribed_radius(double const q[sym]) noexcept {
+  double const m = std::max(std::max(q[0], q[3]), q[5]);
+  double const least = std::min(std::min(q[0], q[3]), q[5]);
+  if (!(least >= 0x1p-300 && m <= 0x1p300)) return 0.0;
+  double const margin = 0x1p-46 * m;
+  // First the cubic's estimate, lowered by 2⁻¹⁶ of itself; if the check
+  // fails (an ill-conditioned Q, whose λmin the estimate gets wrong), the
+  // bound λmin(Q) ≥ 1/‖Q⁻¹‖_F (Q⁻¹ = adj(Q)/det(Q)), lowered by 2⁻¹⁰.
+  double est = least_eigenvalue_estimate(q) * (1.0 - 0x1p-16);
+  if (!(est >= 0x1p-900 && est <= m &&
+        definite_after_shift(q, est + margin))) {
+    double const a00 = q[3] * q[5] - q[4] * q[4];
+    double const a01 = q[2] * q[4] - q[1] * q[5];
+    double const a02 = q[1] * q[4] - q[2] * q[3];
+    double const a11 = q[0] * q[5] - q[2] * q[2];
+    double const a12 = q[1] * q[2] - q[0] * q[4];
+    double const a22 = q[0] * q[3] - q[1] * q[1];
+    double const det = q[0] * a00 + q[1] * a01 + q[2] * a02;
+    double const frob = std::sqrt(a00 * a00 + a11 * a11 + a22 * a22 +
+                                  2.0 * (a01 * a01 + a02 * a02 + a12 * a12));
+    est = det / frob * (1.0 - 0x1p-10);
+    if (!(est >= 0x1p-900 && est <= m &&
+          definite_after_shift(q, est + margin)))
+      return 0.0;  // also NaN
+  }
+  // λmin(Q) > est; √est rounds up by half an ulp at most: lowered below.
+  return std::sqrt(est) * (1.0 - 0x1p-50);
+}
+
 Index::Index(double const box[dim]) noexcept : periodic_(box != nullptr) {
   if (periodic_)
     for (int k = 0; k < dim; ++k) box_[k] = box[k];
@@ -46,6 +113,7 @@ void Index::make_entry(std::size_t id, double const c[dim],
   }
   for (int k = 0; k < sym; ++k) e->q[k] = q[k];
   half_widths(q, e->h);
+  e->rho = inscribed_radius(q);
   e->id = static_cast<std::uint32_t>(id);
 }
 
@@ -250,9 +318,9 @@ Status Index::get(std::size_t id, double c[dim], double q[sym]) const
 
 template <typename F>
 Status Index::visit_level(Level const &lv, double const c[dim],
-                          double const q[sym], double const h[dim],
-                          double sqrt_t,
-                          std::uint32_t exclude, bool *go_on, F &f) const
+                          double const h[dim],
+                          double sqrt_t, std::uint32_t exclude,
+                          bool nearest_first, bool *go_on, F &f) const
     noexcept {
   double reach[dim], lo[dim], hi[dim];
   double cells = 1.0;
@@ -267,7 +335,8 @@ Status Index::visit_level(Level const &lv, double const c[dim],
     }
     cells *= hi[k] - lo[k] + 1.0;
   }
-  // The exact test of one image; false stops the visit.
+  // The AABB test of one image, then f (which tests the rest); false
+  // stops the visit.
   auto test = [&](Entry const &e, std::int32_t const shift[dim]) {
     double r[dim];
     for (int k = 0; k < dim; ++k) {
@@ -275,7 +344,6 @@ Status Index::visit_level(Level const &lv, double const c[dim],
       if (!(std::fabs(r[k]) <= sqrt_t * (h[k] + e.h[k]) * (1.0 + broad_margin)))
         return true;
     }
-    if (separated_along_r(r, q, h, e.q, e.h, sqrt_t)) return true;
     return f(e, shift, r);
   };
 
@@ -345,82 +413,120 @@ Status Index::visit_level(Level const &lv, double const c[dim],
     np = 0;
     return true;
   };
-  // Cell m (unwrapped) along axis k: cell u = m − copy·n_k of the copy
-  // ⌊m / n_k⌋ of the box (periodic); followed incrementally along each
-  // axis, without a division per cell.
-  std::int64_t m0[dim], u0[dim], copy0[dim];
-  for (int k = 0; k < dim; ++k) {
-    m0[k] = std::int64_t(lo[k]);
-    if (periodic_) {
-      copy0[k] = floor_div(m0[k], lv.n[k]);
-      u0[k] = m0[k] - copy0[k] * lv.n[k];
-    } else {
-      copy0[k] = 0;
-      u0[k] = m0[k] + std::int64_t(open_half);
+  // Visits the cells m (unwrapped) of the block [from, to] but those of
+  // the block [skip_lo, skip_hi]; false when the visit stops. Cell m along
+  // axis k is the cell u = m − copy·n_k of the copy ⌊m / n_k⌋ of the box
+  // (periodic), followed incrementally along each axis, without a
+  // division per cell.
+  auto scan = [&](std::int64_t const from[dim], std::int64_t const to[dim],
+                  std::int64_t const skip_lo[dim],
+                  std::int64_t const skip_hi[dim]) {
+    std::int64_t u0[dim], copy0[dim];
+    for (int k = 0; k < dim; ++k) {
+      if (periodic_) {
+        copy0[k] = floor_div(from[k], lv.n[k]);
+        u0[k] = from[k] - copy0[k] * lv.n[k];
+      } else {
+        copy0[k] = 0;
+        u0[k] = from[k] + std::int64_t(open_half);
+      }
     }
-  }
-  auto advance = [&](int k, std::uint64_t *u, std::int64_t *copy) {
-    ++*u;
-    if (periodic_ && std::int64_t(*u) == lv.n[k]) {
-      *u = 0;
-      ++*copy;
+    auto advance = [&](int k, std::uint64_t *u, std::int64_t *copy) {
+      ++*u;
+      if (periodic_ && std::int64_t(*u) == lv.n[k]) {
+        *u = 0;
+        ++*copy;
+      }
+    };
+    std::uint64_t u[dim];
+    std::int64_t copy[dim];
+    if (!lv.dense.empty()) {  // the rows' first cells, fetched together
+      u[0] = std::uint64_t(u0[0]);
+      copy[0] = copy0[0];
+      for (std::int64_t a = from[0]; a <= to[0]; ++a) {
+        u[1] = std::uint64_t(u0[1]);
+        copy[1] = copy0[1];
+        for (std::int64_t b = from[1]; b <= to[1]; ++b) {
+          u[2] = std::uint64_t(u0[2]);
+          PW85_INDEX_PREFETCH(&lv.dense[lv.dense_index(u)]);
+          advance(1, &u[1], &copy[1]);
+        }
+        advance(0, &u[0], &copy[0]);
+      }
     }
-  };
-  std::uint64_t u[dim];
-  std::int64_t copy[dim];
-  if (!lv.dense.empty()) {  // the rows' first cells, fetched together
     u[0] = std::uint64_t(u0[0]);
     copy[0] = copy0[0];
-    for (std::int64_t a = m0[0]; a <= std::int64_t(hi[0]); ++a) {
+    for (std::int64_t a = from[0]; a <= to[0]; ++a) {
+      bool const in0 = skip_lo[0] <= a && a <= skip_hi[0];
       u[1] = std::uint64_t(u0[1]);
       copy[1] = copy0[1];
-      for (std::int64_t b = m0[1]; b <= std::int64_t(hi[1]); ++b) {
+      for (std::int64_t b = from[1]; b <= to[1]; ++b) {
+        bool const in01 = in0 && skip_lo[1] <= b && b <= skip_hi[1];
         u[2] = std::uint64_t(u0[2]);
-        PW85_INDEX_PREFETCH(&lv.dense[lv.dense_index(u)]);
+        copy[2] = copy0[2];
+        for (std::int64_t d = from[2]; d <= to[2]; ++d) {
+          std::uint32_t const ci =
+              in01 && skip_lo[2] <= d && d <= skip_hi[2] ? CellMap::absent
+                                                          : lv.find(u);
+          if (ci != CellMap::absent) {
+            Pending &p = pending[np++];
+            p.cell = &lv.cells[ci];
+            PW85_INDEX_PREFETCH(p.cell);
+            for (int k = 0; k < dim; ++k) p.copy[k] = copy[k];
+            if (np == batch && !flush()) return false;
+          }
+          advance(2, &u[2], &copy[2]);
+        }
         advance(1, &u[1], &copy[1]);
       }
       advance(0, &u[0], &copy[0]);
     }
+    return flush();
+  };
+  std::int64_t from[dim], to[dim], none_lo[dim], none_hi[dim];
+  for (int k = 0; k < dim; ++k) {
+    from[k] = std::int64_t(lo[k]);
+    to[k] = std::int64_t(hi[k]);
+    none_lo[k] = 1;  // an empty block: nothing skipped
+    none_hi[k] = 0;
   }
-  u[0] = std::uint64_t(u0[0]);
-  copy[0] = copy0[0];
-  for (std::int64_t a = m0[0]; a <= std::int64_t(hi[0]); ++a) {
-    u[1] = std::uint64_t(u0[1]);
-    copy[1] = copy0[1];
-    for (std::int64_t b = m0[1]; b <= std::int64_t(hi[1]); ++b) {
-      u[2] = std::uint64_t(u0[2]);
-      copy[2] = copy0[2];
-      for (std::int64_t d = m0[2]; d <= std::int64_t(hi[2]); ++d) {
-        std::uint32_t const ci = lv.find(u);
-        if (ci != CellMap::absent) {
-          Pending &p = pending[np++];
-          p.cell = &lv.cells[ci];
-          PW85_INDEX_PREFETCH(p.cell);
-          for (int k = 0; k < dim; ++k) p.copy[k] = copy[k];
-          if (np == batch && !flush()) {
-            *go_on = false;
-            return Status::success;
-          }
-        }
-        advance(2, &u[2], &copy[2]);
+  if (nearest_first) {
+    // First the cells that hold points within half a cell of c (at most
+    // two along each axis, inside the reach): a query that stops at the
+    // first overlap finds one there most often (random sequential
+    // addition near saturation rejects most candidates), before fetching
+    // the rest of the block. Every cell is still visited once.
+    std::int64_t near_lo[dim], near_hi[dim];
+    for (int k = 0; k < dim; ++k) {
+      double const half = 0.5 * lv.side[k];
+      double a = std::floor((c[k] - half) * lv.inv[k]);
+      double b = std::floor((c[k] + half) * lv.inv[k]);
+      if (!periodic_) {
+        a = clamp_open(a);
+        b = clamp_open(b);
       }
-      advance(1, &u[1], &copy[1]);
+      near_lo[k] = std::max(from[k], std::int64_t(a));
+      near_hi[k] = std::min(to[k], std::int64_t(b));
     }
-    advance(0, &u[0], &copy[0]);
+    if (!scan(near_lo, near_hi, none_lo, none_hi) ||
+        !scan(from, to, near_lo, near_hi))
+      *go_on = false;
+    return Status::success;
   }
-  if (!flush()) *go_on = false;
+  if (!scan(from, to, none_lo, none_hi)) *go_on = false;
   return Status::success;
 }
 
 template <typename F>
-Status Index::visit(double const c[dim], double const q[sym],
-                    double const h[dim], double sqrt_t,
-                    std::uint32_t exclude, F &&f) const noexcept {
+Status Index::visit(double const c[dim], double const h[dim], double sqrt_t,
+                    std::uint32_t exclude, bool nearest_first, F &&f) const
+    noexcept {
   bool go_on = true;
   for (std::size_t l = 0; l < levels_.size() && go_on; ++l) {
     if (levels_[l].count == 0) continue;
     Status const s =
-        visit_level(levels_[l], c, q, h, sqrt_t, exclude, &go_on, f);
+        visit_level(levels_[l], c, h, sqrt_t, exclude, nearest_first,
+                    &go_on, f);
     if (s != Status::success) return s;
   }
   return Status::success;
@@ -444,8 +550,23 @@ Status Index::overlap_any(double const c[dim], double const q[sym],
   Status failed = Status::success;
   int best = 1;
   std::uint32_t best_id = no_id;
-  s = visit(c, q, h, 1.0, to_exclude(exclude),
+  double rho = -1.0;  // the candidate's inscribed_radius(), when needed
+  s = visit(c, h, 1.0, to_exclude(exclude), true,
             [&](Entry const &e, std::int32_t const *, double const r[dim]) {
+              // Inscribed balls that meet, by a margin far above the
+              // roundings of |r|² and (ρ + ρ_e)²: then μ² < 1 − 2⁻²¹,
+              // and pw85_overlap() would give −1 (certified outside its
+              // 4-ulp band; both ρ > 0 keeps the pair within its range).
+              if (e.rho > 0.0) {
+                if (rho < 0.0) rho = inscribed_radius(q);
+                double const s = rho + e.rho;
+                if (rho > 0.0 && dot(r, r) < s * s * (1.0 - 0x1p-20)) {
+                  best = -1;
+                  best_id = e.id;
+                  return false;
+                }
+              }
+              if (separated_along_r(r, q, h, e.q, e.h, 1.0)) return true;
               int res = 1;
               failed = overlap(r, q, e.q, &res);
               if (failed != Status::success) return false;
@@ -471,9 +592,12 @@ Status Index::within(double const c[dim], double const q[sym], double t,
   double h[dim];
   half_widths(q, h);
   Status failed = Status::success;
-  s = visit(c, q, h, std::sqrt(t), to_exclude(exclude),
+  double const sqrt_t = std::sqrt(t);
+  s = visit(c, h, sqrt_t, to_exclude(exclude), false,
             [&](Entry const &e, std::int32_t const *shift,
                 double const r[dim]) {
+              if (separated_along_r(r, q, h, e.q, e.h, sqrt_t))
+                return true;
               double out[2] = {NAN, NAN};
               Status const st = contact_function(r, q, e.q, out);
               if (st == Status::out_of_range && out[0] == HUGE_VAL)

@@ -78,6 +78,7 @@ struct alignas(64) Entry {
   double c[dim];           // centre, as given
   double h[dim];           // AABB half-widths √Q_kk
   double q[sym];           // quadratic form
+  double rho;              // inscribed_radius(q)
 };
 
 // Where an id is stored: level −1 when absent.
@@ -196,18 +197,21 @@ class Index {
   void init_level(Level *lv, int exponent) const noexcept;
 
   // Calls f(entry, shift, r) for every image of every stored ellipsoid
-  // but `exclude` that the broad phase keeps against the candidate (c, q)
-  // scaled by √t (r: the
-  // vector to it, as pw85_index.h defines it); stops when f returns
-  // false. Returns Status::out_of_range when the reach spans too many
-  // cells or images (max_span).
+  // but `exclude` whose AABB, scaled by √t, meets the candidate's (centre
+  // c, half-widths h) inflated by broad_margin (r: the vector to it, as
+  // pw85_index.h defines it; f makes the rest of the tests); stops when f
+  // returns false. Returns Status::out_of_range when the reach spans too many
+  // cells or images (max_span). With nearest_first, the cells nearest to
+  // c are visited before the others (for a query that stops early).
   template <typename F>
-  Status visit(double const c[dim], double const q[sym], double const h[dim],
-               double sqrt_t, std::uint32_t exclude, F &&f) const noexcept;
+  Status visit(double const c[dim], double const h[dim], double sqrt_t,
+               std::uint32_t exclude, bool nearest_first, F &&f) const
+      noexcept;
   template <typename F>
   Status visit_level(Level const &lv, double const c[dim],
-                     double const q[sym], double const h[dim], double sqrt_t,
-                     std::uint32_t exclude, bool *go_on, F &f) const noexcept;
+                     double const h[dim], double sqrt_t,
+                     std::uint32_t exclude, bool nearest_first, bool *go_on,
+                     F &f) const noexcept;
 
   bool periodic_;
   double box_[dim] = {};
@@ -247,6 +251,19 @@ inline bool separated_along_r(double const r[dim], double const q1[sym],
                        std::sqrt(a2 + 0x1p-40 * b2 * b2);
   return dot(r, r) > sqrt_t * reach * (1.0 + broad_margin);
 }
+
+// A radius ρ ≥ 0 of a ball about the centre inside the ellipsoid
+// {x : xᵀQ⁻¹x ≤ 1}: ρ² < λmin(Q), certified (0 when not found; always 0
+// unless every Q_kk is in [2⁻³⁰⁰, 2³⁰⁰], so that nothing below over- or
+// underflows and two forms with ρ > 0 are within the range that
+// pw85_overlap() accepts). An estimate s₀ of λmin(Q) (index.cpp) is
+// checked: the Cholesky factorisation of Q − s·I, s = s₀ + 2⁻⁴⁶·M
+// (M = max Q_kk), completes only if Q − s·I + E is positive definite for
+// some ‖E‖₂ ≤ 3·γ₄·M + 2⁻⁵³·M < 2⁻⁴⁸·M (Higham, Accuracy and Stability
+// of Numerical Algorithms, 2nd ed., th. 10.3, and the rounding of the
+// diagonal), so that λmin(Q) > s₀. Within 2⁻¹⁷ of √λmin(Q) for forms of
+// moderate condition.
+double inscribed_radius(double const q[sym]) noexcept;
 
 // ⌊a / b⌋ for b > 0.
 inline std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
