@@ -50,12 +50,24 @@ struct Set {
   std::size_t size() const { return axes.size() / 3; }
 };
 
-// A random rotation R (row by row) from a uniform unit quaternion.
+// A random rotation R (row by row) from a uniform unit quaternion, by
+// Marsaglia's method (Ann. Math. Stat. 43(2), 645-646, 1972): two points
+// uniform in the unit disc, (w, x) and (y, z) scaled by √((1 − s₁)/s₂).
+// Uniform draws and one square root: a third of the time of four normal
+// deviates, which cost a fifth of random sequential addition (perf).
 void random_rotation(std::mt19937_64 &rng, double r[9]) {
-  std::normal_distribution<double> g;
-  double w = g(rng), x = g(rng), y = g(rng), z = g(rng);
-  double const n = std::sqrt(w * w + x * x + y * y + z * z);
-  w /= n, x /= n, y /= n, z /= n;
+  std::uniform_real_distribution<double> u(-1., 1.);
+  double w, x, y, z, s1, s2;
+  do {
+    w = u(rng), x = u(rng);
+    s1 = w * w + x * x;
+  } while (s1 >= 1.);
+  do {
+    y = u(rng), z = u(rng);
+    s2 = y * y + z * z;
+  } while (s2 >= 1. || s2 == 0.);
+  double const f = std::sqrt((1. - s1) / s2);
+  y *= f, z *= f;
   double const m[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
                        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
                        2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)};
