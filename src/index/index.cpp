@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "checks.hpp"
+#include "cholesky.hpp"
 #include "contact.hpp"
 #include "overlap.hpp"
 
@@ -17,19 +18,14 @@ void half_widths(double const q[sym], double h[dim]) noexcept {
 
 namespace {
 
-// Does the Cholesky factorisation of Q − s·I complete with every pivot
-// > 0? (Then Q − s·I + E is positive definite for some ‖E‖₂ < 2⁻⁴⁸·M,
-// M = max Q_kk ≥ s: see inscribed_radius() in index.hpp.)
+// Does the Cholesky factorisation of Q − s·I (cholesky_decomp()) complete
+// with every pivot > 0? (Then Q − s·I + E is positive definite for some
+// ‖E‖₂ < 2⁻⁴⁸·M, M = max Q_kk ≥ s: see inscribed_radius() in index.hpp.)
 bool definite_after_shift(double const q[sym], double s) noexcept {
-  double const d0 = q[0] - s;
-  if (!(d0 > 0.0)) return false;
-  double const l0 = std::sqrt(d0);
-  double const l10 = q[1] / l0, l20 = q[2] / l0;
-  double const d1 = (q[3] - s) - l10 * l10;
-  if (!(d1 > 0.0)) return false;
-  double const l21 = (q[4] - l20 * l10) / std::sqrt(d1);
-  double const d2 = ((q[5] - s) - l20 * l20) - l21 * l21;
-  return d2 > 0.0;
+  double a[sym], l[sym];
+  for (int k = 0; k < sym; ++k) a[k] = q[k];
+  for (int k = 0; k < dim; ++k) a[diag_of[k]] -= s;
+  return cholesky_decomp(a, l);
 }
 
 // An estimate of λmin(Q), not certified: the trigonometric solution of
