@@ -45,7 +45,9 @@ static_assert(PW85_LAMBDA_ATOL == core::lambda_atol &&
                   PW85_NR_ITER == core::restart_newton_iter,
               "pw85.h does not describe the core as built");
 
+using pw85::facade::run_items;
 using pw85::facade::to_code;
+using pw85::facade::valid_stride;
 
 // The single-pair functions, shared by their exported names and the
 // batches (an exported function called inside the library would go
@@ -83,55 +85,6 @@ struct Pairs {
   double const *a(std::size_t i) const noexcept { return q1 + i * q1_stride; }
   double const *b(std::size_t i) const noexcept { return q2 + i * q2_stride; }
 };
-
-// A stride is 0 (one record for every pair) or at least the record's size.
-constexpr bool valid_stride(std::size_t stride, std::size_t size) noexcept {
-  return stride == 0 || stride >= size;
-}
-
-// A batch: Pair is a callable `int (std::size_t i) const noexcept` that
-// computes pair i and returns its PW85_* status.
-template <class Pair>
-struct Batch {
-  Pair pair;
-  int *status;  // NULL or n entries
-};
-
-template <class Pair>
-core::BatchFailure run_range(void const *context, std::size_t begin,
-                             std::size_t end) noexcept {
-  auto const &batch = *static_cast<Batch<Pair> const *>(context);
-  core::BatchFailure first{end, PW85_SUCCESS};
-  for (std::size_t i = begin; i < end; ++i) {
-    int const code = batch.pair(i);
-    if (batch.status != nullptr) batch.status[i] = code;
-    if (code != PW85_SUCCESS && first.code == PW85_SUCCESS) first = {i, code};
-  }
-  return first;
-}
-
-// The checks of the call itself (pointers_ok: no input or output pointer
-// is NULL; strides_ok: every stride valid), then every item on the threads
-// asked for.
-template <class Item>
-int run_items(std::size_t n, bool pointers_ok, bool strides_ok, int *status,
-              int threads, Item item) noexcept {
-  if (n == 0) return PW85_SUCCESS;
-  int code = PW85_SUCCESS;
-  if (!pointers_ok)
-    code = PW85_EFAULT;
-  else if (!strides_ok || threads < 0)
-    code = PW85_EINVAL;
-  if (code != PW85_SUCCESS) {
-    if (status != nullptr)
-      for (std::size_t i = 0; i < n; ++i) status[i] = code;
-    return code;
-  }
-  Batch<Item> const batch{item, status};
-  return core::run_batch(n, core::batch_threads(threads, n),
-                         run_range<Item>, &batch)
-      .code;
-}
 
 // A batch of pairs. outputs_ok: no output pointer is NULL.
 template <class Pair>

@@ -12,7 +12,9 @@
 
 namespace core = pw85::detail;
 using core::Status;
+using pw85::facade::run_items;
 using pw85::facade::to_code;
+using pw85::facade::valid_stride;
 
 struct pw85_index {
   explicit pw85_index(double const box[PW85_DIM]) noexcept : index(box) {}
@@ -108,6 +110,25 @@ int pw85_index_overlap_any(pw85_index const *index,
       result == nullptr || id == nullptr)
     return PW85_EFAULT;
   return to_code(index->index.overlap_any(centre, q, exclude, result, id));
+}
+
+int pw85_index_overlap_any_batch(pw85_index const *index, size_t n,
+                                 double const *centres, size_t centre_stride,
+                                 double const *q, size_t q_stride,
+                                 size_t const *exclude, int *results,
+                                 size_t *ids, int *status,
+                                 int threads) noexcept {
+  return run_items(
+      n,
+      index != nullptr && centres != nullptr && q != nullptr &&
+          results != nullptr && ids != nullptr,
+      valid_stride(centre_stride, PW85_DIM) && valid_stride(q_stride, PW85_SYM),
+      status, threads, [=](std::size_t i) noexcept {
+        return to_code(index->index.overlap_any(
+            centres + i * centre_stride, q + i * q_stride,
+            exclude == nullptr ? PW85_INDEX_NO_ID : exclude[i], results + i,
+            ids + i));
+      });
 }
 
 int pw85_index_within(pw85_index const *index, double const centre[PW85_DIM],

@@ -51,6 +51,10 @@ typedef int (*index_remove_fn)(void *, size_t);
 typedef int (*index_get_fn)(void const *, size_t, double *, double *);
 typedef int (*index_overlap_any_fn)(void const *, double const *,
                                     double const *, size_t, int *, size_t *);
+typedef int (*index_overlap_any_batch_fn)(void const *, size_t, double const *,
+                                          size_t, double const *, size_t,
+                                          size_t const *, int *, size_t *,
+                                          int *, int);
 typedef int (*index_within_fn)(void const *, double const *, double const *,
                                double, size_t, size_t, size_t *, int *,
                                double *, size_t *);
@@ -102,6 +106,7 @@ int main(int argc, char **argv) {
   index_remove_fn index_remove_p;
   index_get_fn index_get_p;
   index_overlap_any_fn index_overlap_any_p;
+  index_overlap_any_batch_fn index_overlap_any_batch_p;
   index_within_fn index_within_p;
   index_overlapping_fn index_overlapping_p;
   index_pairs_within_fn index_pairs_within_p;
@@ -139,6 +144,7 @@ int main(int argc, char **argv) {
   LOAD(index_remove_p, "pw85_index_remove");
   LOAD(index_get_p, "pw85_index_get");
   LOAD(index_overlap_any_p, "pw85_index_overlap_any");
+  LOAD(index_overlap_any_batch_p, "pw85_index_overlap_any_batch");
   LOAD(index_within_p, "pw85_index_within");
   LOAD(index_overlapping_p, "pw85_index_overlapping_pairs");
   LOAD(index_pairs_within_p, "pw85_index_pairs_within");
@@ -234,6 +240,9 @@ int main(int argc, char **argv) {
     CHECK(index_pairs_within_p(index, 1., 1, 1, pair, shift, ml, &n) == 0);
     CHECK(n == 1 && ml[0] == 0.5625);
     CHECK(index_overlap_any_p(index, centres, unit, 0, &decision, &found) == 0);
+    CHECK(decision == -1 && found == 1);
+    CHECK(index_overlap_any_batch_p(index, 1, centres, 3, unit, 6, ids, &decision,
+                                    &found, NULL, 1) == 0);
     CHECK(decision == -1 && found == 1);
     CHECK(index_within_p(index, centres + 3, unit, 1., 1, 1, pair, shift, ml, &n) == 0);
     CHECK(n == 1 && pair[0] == 0 && ml[0] == 0.5625);

@@ -862,6 +862,123 @@ static void test_near_contact(void) {
   g_rand_free(rng);
 }
 
+/* ---- overlap_any in batches -------------------------------------------- */
+
+/* pw85_index_overlap_any_batch() against one call of
+ * pw85_index_overlap_any() per candidate (which the brute-force tests
+ * check): the same results, ids and statuses on 1, 2, 8 and OpenMP's
+ * default count of threads, with excluded ids, strides 0 and longer
+ * records, and failing candidates among the others; then the errors of the
+ * call itself. */
+static void test_overlap_any_batch(void) {
+  GRand *rng = g_rand_new_with_seed(2404);
+  Config const cf = {"batch", MONO, 1, 2000, .05, 0};
+  int const n = small_run() ? 400 : cf.n;
+  size_t const m = small_run() ? 600 : 3000; /* candidates: ≥ 512 for threads */
+  double const side = cbrt(n * mean_volume(MONO) / cf.fraction);
+  double const box[3] = {side, side * 1.1, side * .9};
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
+  for (int i = 0; i < n; i++) {
+    double c[3], q[6];
+    random_ellipsoid(rng, &cf, side, c, q);
+    g_assert_cmpint(pw85_index_insert(ix, (size_t)i, c, q), ==, PW85_SUCCESS);
+  }
+  /* Records of 4 doubles (centre) and 7 (form): strides above the size. */
+  double *c = g_new(double, 4 * m), *q = g_new(double, 7 * m);
+  size_t *exclude = g_new(size_t, m), *ref_ids = g_new(size_t, m);
+  int *ref = g_new(int, m), *ref_status = g_new(int, m);
+  for (size_t i = 0; i < m; i++) {
+    random_ellipsoid(rng, &cf, side, c + 4 * i, q + 7 * i);
+    exclude[i] = i % 3 == 0 ? PW85_INDEX_NO_ID : (size_t)g_rand_int_range(rng, 0, n + 5);
+    if (i % 3 == 1) { /* a Monte Carlo move of the excluded one, which it overlaps */
+      exclude[i] %= (size_t)n;
+      g_assert_cmpint(pw85_index_get(ix, exclude[i], c + 4 * i, q + 7 * i), ==,
+                      PW85_SUCCESS);
+      for (int d = 0; d < 3; d++) c[4 * i + d] += g_rand_double_range(rng, -.05, .05);
+    }
+  }
+  c[4 * (m / 3)] = NAN;          /* PW85_EDOM */
+  q[7 * (2 * m / 3) + 3] = -1.;  /* PW85_ENOTPOSDEF */
+  int counts[3] = {0, 0, 0};
+  for (size_t i = 0; i < m; i++) {
+    ref[i] = 99, ref_ids[i] = 12345;
+    ref_status[i] = pw85_index_overlap_any(ix, c + 4 * i, q + 7 * i, exclude[i],
+                                           ref + i, ref_ids + i);
+    if (ref_status[i] == PW85_SUCCESS) counts[ref[i] + 1]++;
+  }
+  g_assert_cmpint(ref_status[m / 3], ==, PW85_EDOM);
+  g_assert_cmpint(ref_status[2 * m / 3], ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(counts[0], >, (int)m / 10); /* both answers well represented */
+  g_assert_cmpint(counts[2], >, (int)m / 10);
+  /* without their exclusions, the moves overlap */
+  for (size_t i = 1; i < m; i += 30) {
+    int r = 99;
+    size_t id = 0;
+    if (ref_status[i] == PW85_SUCCESS && ref[i] == 1) {
+      g_assert_cmpint(pw85_index_overlap_any(ix, c + 4 * i, q + 7 * i, PW85_INDEX_NO_ID, &r,
+                                             &id), ==, PW85_SUCCESS);
+      g_assert_cmpint(r, ==, -1);
+    }
+  }
+
+  int *results = g_new(int, m), *status = g_new(int, m);
+  size_t *ids = g_new(size_t, m);
+  int const threads[] = {1, 2, 8, 0};
+  for (size_t t = 0; t < G_N_ELEMENTS(threads); t++) {
+    for (size_t i = 0; i < m; i++) results[i] = 99, ids[i] = 12345, status[i] = 77;
+    g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 4, q, 7, exclude, results,
+                                                 ids, status, threads[t]),
+                    ==, PW85_EDOM); /* the first failing candidate's */
+    for (size_t i = 0; i < m; i++) {
+      g_assert_cmpint(status[i], ==, ref_status[i]);
+      g_assert_cmpint(results[i], ==, ref[i]); /* 99: left untouched */
+      g_assert_cmpuint(ids[i], ==, ref_ids[i]);
+    }
+  }
+  /* exclude = NULL is PW85_INDEX_NO_ID; strides 0 repeat one record. */
+  size_t const k = 5;
+  int one = 99;
+  size_t one_id = 0;
+  g_assert_cmpint(pw85_index_overlap_any(ix, c + 4 * k, q + 7 * k, PW85_INDEX_NO_ID,
+                                         &one, &one_id), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, 600, c + 4 * k, 0, q + 7 * k, 0, NULL,
+                                               results, ids, NULL, 2), ==, PW85_SUCCESS);
+  for (size_t i = 0; i < 600; i++) {
+    g_assert_cmpint(results[i], ==, one);
+    g_assert_cmpuint(ids[i], ==, one_id);
+  }
+
+  /* The call itself: nothing computed, status filled with its code. */
+  for (size_t i = 0; i < m; i++) results[i] = 99, status[i] = 77;
+  g_assert_cmpint(pw85_index_overlap_any_batch(NULL, m, c, 4, q, 7, NULL, results,
+                                               ids, status, 1), ==, PW85_EFAULT);
+  g_assert_cmpint(status[m - 1], ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 4, q, 7, NULL, NULL, ids,
+                                               NULL, 1), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 4, q, 7, NULL, results,
+                                               NULL, NULL, 1), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, NULL, 4, q, 7, NULL, results,
+                                               ids, NULL, 1), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 4, NULL, 7, NULL, results,
+                                               ids, NULL, 1), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 2, q, 7, NULL, results,
+                                               ids, status, 1), ==, PW85_EINVAL);
+  g_assert_cmpint(status[0], ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 4, q, 5, NULL, results,
+                                               ids, NULL, 1), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_overlap_any_batch(ix, m, c, 4, q, 7, NULL, results,
+                                               ids, NULL, -1), ==, PW85_EINVAL);
+  for (size_t i = 0; i < m; i++) g_assert_cmpint(results[i], ==, 99);
+  g_assert_cmpint(pw85_index_overlap_any_batch(NULL, 0, NULL, 1, NULL, 1, NULL, NULL,
+                                               NULL, NULL, -1), ==, PW85_SUCCESS);
+
+  pw85_index_destroy(ix);
+  g_free(c), g_free(q), g_free(exclude), g_free(ref_ids), g_free(ref);
+  g_free(ref_status), g_free(results), g_free(status), g_free(ids);
+  g_rand_free(rng);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -869,6 +986,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/index/several-images", test_several_images);
   g_test_add_func("/pw85/index/concurrent-queries", test_concurrent_queries);
   g_test_add_func("/pw85/index/near-contact", test_near_contact);
+  g_test_add_func("/pw85/index/overlap-any-batch", test_overlap_any_batch);
   for (size_t k = 0; k < G_N_ELEMENTS(configs); k++) {
     char *path = g_strdup_printf("/pw85/index/brute-force/%s", configs[k].name);
     g_test_add_data_func(path, &configs[k], test_config);

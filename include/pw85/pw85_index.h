@@ -52,8 +52,9 @@
  * that changes nothing but speed). Calls that modify
  * an index (insert, update, remove, destroy) need exclusive access to it;
  * queries only read it and may run concurrently with each other from
- * several threads. The all-pairs queries start `threads` OpenMP threads
- * when libpw85 was built with OpenMP (see pw85_index_openmp()), and run
+ * several threads. The all-pairs queries and
+ * pw85_index_overlap_any_batch() start `threads` OpenMP threads when
+ * libpw85 was built with OpenMP (see pw85_index_openmp()), and run
  * serially otherwise; their output is the same, bit for bit, for any
  * number of threads. No other function starts a thread.
  *
@@ -236,6 +237,48 @@ PW85_API int pw85_index_overlap_any(pw85_index const *index,
                                     double const centre[PW85_DIM],
                                     double const q[PW85_SYM], size_t exclude,
                                     int *result, size_t *id) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_index_overlap_any() for n candidates, each against the
+ *        stored ellipsoids (not against each other), on threads.
+ *
+ * Candidate i is decided alone, exactly as pw85_index_overlap_any()
+ * decides it: the same result, id and status, whatever the thread count.
+ * The batch conventions of pw85.h ("Batches") apply: strides, `status`,
+ * the return value, `threads` (1, 0 for OpenMP's default, or up to k; at
+ * most n/256 threads, none started for n < 512). A candidate is about a
+ * microsecond: random sequential addition and Monte Carlo can draw
+ * candidates in batches, decide them here on every core, then accept them
+ * in their order, re-deciding with pw85_index_overlap_any() a candidate
+ * that follows an insertion in the same batch (the result of a serial
+ * loop, on threads; tests/bench/bench-index.cpp does it).
+ * @param[in] index the index (read only, as by every query).
+ * @param[in] n the number of candidates (0 is valid).
+ * @param[in] centres the candidates' centres.
+ * @param[in] centre_stride doubles from one centre to the next: PW85_DIM
+ *            when contiguous, 0 for the same centre for every candidate.
+ * @param[in] q the candidates' quadratic forms.
+ * @param[in] q_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[in] exclude NULL (PW85_INDEX_NO_ID for every candidate), or n ids
+ *            (`exclude[i]` for candidate i, as pw85_index_overlap_any()).
+ * @param[out] results n ints: the result of each candidate (−1, 0, +1).
+ * @param[out] ids n ids: the id found for each candidate, or
+ *             PW85_INDEX_NO_ID.
+ * @param[out] status NULL, or n ints: the status of each candidate.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return PW85_SUCCESS, or the status of the first failing candidate
+ *         (those of pw85_index_overlap_any(), whose outputs are left
+ *         untouched); for the call itself (nothing computed): PW85_EFAULT
+ *         if n > 0 and index, centres, q, results or ids is NULL;
+ *         PW85_EINVAL if a stride is between 1 and its record's size − 1,
+ *         or threads < 0.
+ * @since 2.2.0
+ */
+PW85_API int pw85_index_overlap_any_batch(
+    pw85_index const *index, size_t n, double const *centres,
+    size_t centre_stride, double const *q, size_t q_stride,
+    size_t const *exclude, int *results, size_t *ids, int *status,
+    int threads) PW85_NOEXCEPT;
 
 /**
  * @brief Every stored ellipsoid, and image, within μ² < t of a candidate.

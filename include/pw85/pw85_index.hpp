@@ -262,6 +262,30 @@ class Index {
   }
 
   /**
+   * @brief overlap_any() for n candidates, on threads
+   *        (pw85_index_overlap_any_batch()).
+   * @param[in] n the number of candidates.
+   * @param[in] centres n centres, contiguous (3·n doubles).
+   * @param[in] q n quadratic forms, contiguous (6·n doubles).
+   * @param[in] exclude nullptr, or n ids to skip (one per candidate).
+   * @param[out] results n results (−1, 0, +1).
+   * @param[out] ids n ids, or index_no_id.
+   * @param[out] status nullptr, or n statuses.
+   * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+   * @return PW85_SUCCESS, or the status of the first failing candidate;
+   *         PW85_EFAULT if no index is held, or as
+   *         pw85_index_overlap_any_batch().
+   */
+  int overlap_any_batch(std::size_t n, double const *centres,
+                        double const *q, std::size_t const *exclude,
+                        int *results, std::size_t *ids, int *status = nullptr,
+                        int threads = 1) const noexcept {
+    return pw85_index_overlap_any_batch(handle_, n, centres, dim, q, sym,
+                                        exclude, results, ids, status,
+                                        threads);
+  }
+
+  /**
    * @brief Every stored ellipsoid and image with μ² < t from a candidate,
    *        sorted by id then shift (pw85_index_within()).
    * @param[in] centre the candidate's centre (as overlap_any()).
