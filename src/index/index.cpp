@@ -392,8 +392,12 @@ Status Index::visit_level(Level const &lv, double const c[dim],
   auto flush = [&]() {  // false when the visit stops
     for (int i = 0; i < np; ++i) {
       Cell const &cell = *pending[i].cell;
+      // Both cache lines of each entry: the second (form, inscribed
+      // radius) is read for every entry whose AABB meets the candidate's;
+      // random sequential addition of 1e5 (bench-index) took 12% less
+      // time per attempt than with the first line alone.
       for (std::size_t ei = 0; ei < cell.size(); ++ei)
-        PW85_INDEX_PREFETCH(&cell[ei]);
+        PW85_INDEX_PREFETCH(&cell[ei]), PW85_INDEX_PREFETCH(&cell[ei].q[2]);
     }
     std::int32_t shift[dim];
     for (int i = 0; i < np; ++i) {
