@@ -2,10 +2,12 @@
 """Random sequential addition with pypw85.Index (the Python twin of rsa.c).
 
 Triaxial ellipsoids (semi-axes 1, 0.5, 0.2, random orientations) are
-dropped one at a time at random places of a periodic cube, each kept only
-if it overlaps none already there, until a target packing fraction is
+dropped one after the other at random places of a periodic cube, each kept
+only if it overlaps none already there, until a target packing fraction is
 reached or too many attempts in a row fail; the packing is then checked by
-the all-pairs query (no overlapping pair).
+the all-pairs query (no overlapping pair). The candidates are decided in
+batches by one call (`Index.overlap_any_many`, on two threads), with the
+result of deciding them one at a time.
 
     python3 rsa.py [N [FRACTION]]    (default: 2000 ellipsoids at 0.25)
 
@@ -45,20 +47,50 @@ def rsa_packing(n, target, seed=1, max_failures=20000):
     rng = np.random.default_rng(seed)
     centres, forms = [], []
     attempts = failures = 0
+
+    def reject(k):
+        """Count k rejected candidates, up to the limit of failures in a
+        row; False when it is reached."""
+        nonlocal attempts, failures
+        k = min(k, max_failures - failures)
+        attempts += k
+        failures += k
+        return failures < max_failures
+
+    batch = 256
     while len(centres) < n and failures < max_failures:
-        # Candidates drawn in batches, tried one by one.
-        for c, q in zip(rng.uniform(0.0, side, (256, 3)), random_forms(rng, 256)):
-            attempts += 1
-            result, _ = index.overlap_any(c, q)
-            if result <= 0:  # overlaps (or touches): rejected
-                failures += 1
+        # Candidates drawn and decided in batches, against the ellipsoids
+        # placed before the batch, in one call; then taken in order. One
+        # that overlaps those is rejected (it would overlap the larger set
+        # of a one-by-one loop too); one found free is decided again if an
+        # ellipsoid was placed earlier in the batch. The result is that of
+        # deciding each candidate alone, in order, and Python only visits
+        # the candidates found free.
+        cs = rng.uniform(0.0, side, (batch, 3))
+        qs = random_forms(rng, batch)
+        results, _ = index.overlap_any_many(cs, qs, threads=2)
+        placed_in_batch = False
+        last = -1  # the last candidate taken
+        for i in np.flatnonzero(results > 0):
+            if not reject(i - last - 1):  # those before i
+                break
+            last = i
+            if placed_in_batch and index.overlap_any(cs[i], qs[i])[0] <= 0:
+                if not reject(1):
+                    break
                 continue
-            index.insert(len(centres), c, q)
-            centres.append(c)
-            forms.append(q)
+            attempts += 1
+            index.insert(len(centres), cs[i], qs[i])
+            centres.append(cs[i])
+            forms.append(qs[i])
+            placed_in_batch = True
             failures = 0
             if len(centres) == n:
                 break
+        else:
+            reject(batch - last - 1)  # the rest of the batch
+        # About 16 placements per batch as they become rare.
+        batch = min(16384, max(256, 16 * attempts // (len(centres) + 1)))
     return index, np.array(centres), np.array(forms), side, attempts
 
 

@@ -144,3 +144,58 @@ def test_insert_update_remove():
         pypw85.Index([1.0, 0.0, 1.0])
     assert e.value.status == pypw85.EINVAL
     assert NO_ID == 2**64 - 1 and OPENMP in (True, False)
+
+
+def test_overlap_any_many():
+    """overlap_any_many against overlap_any, one candidate at a time (which
+    test_candidate_queries checks against the brute force)."""
+    c, q = configuration(seed=4, n=150, side=12.0)
+    with pypw85.Index([12.0, 13.0, 11.0]) as index:
+        index.insert(np.arange(len(c)), c, q)
+        check_overlap_any_many(index, c, q)
+
+
+def check_overlap_any_many(index, c, q):
+    rng = np.random.default_rng(11)
+    n = 1200  # >= 512: threads are started
+    cc = rng.uniform(-3, 9, (n, 3))
+    qq = random_forms(rng, n)
+    exclude = np.full(n, -1)
+    moved = np.arange(0, n, 3)  # Monte Carlo moves of stored ellipsoids
+    exclude[moved] = moved % len(c)
+    cc[moved] = c[moved % len(c)] + rng.uniform(-0.05, 0.05, (len(moved), 3))
+    qq[moved] = q[moved % len(c)]
+    ref = [index.overlap_any(cc[i], qq[i],
+                             None if exclude[i] == -1 else exclude[i])
+           for i in range(n)]
+    ref_results = np.array([r for r, _ in ref])
+    ref_ids = np.array([-1 if j is None else j for _, j in ref])
+    assert (ref_results == 1).sum() > n // 10
+    assert (ref_results == -1).sum() > n // 10
+    for threads in (1, 2, 8, 0):
+        results, ids = index.overlap_any_many(cc, qq, exclude, threads=threads)
+        assert results.dtype == np.intc and ids.dtype == np.int64
+        assert np.array_equal(results, ref_results)
+        assert np.array_equal(ids, ref_ids)
+    # without exclusions the moves overlap their own originals
+    results, _ = index.overlap_any_many(cc[moved], qq[moved])
+    assert (results == -1).all()
+    # the first failing candidate is named, with every status
+    bad = qq.copy()
+    bad[7, 3] = -1.0
+    bad[9, 0] = np.nan
+    with pytest.raises(pypw85.Error) as e:
+        index.overlap_any_many(cc, bad, threads=2)
+    assert e.value.status == pypw85.ENOTPOSDEF and e.value.index == 7
+    assert e.value.statuses[9] == pypw85.EDOM
+    assert (np.delete(e.value.statuses, [7, 9]) == 0).all()
+    with pytest.raises(ValueError):
+        index.overlap_any_many(cc[:5], qq[:4])
+    with pytest.raises(ValueError):
+        index.overlap_any_many(cc[:5], qq[:5], exclude=[-2, 0, 0, 0, 0])
+    with pytest.raises(ValueError):
+        index.overlap_any_many(cc[:5], qq[:5], threads=-1)
+    with pytest.raises(TypeError):
+        index.overlap_any_many(cc[:5], qq[:5], exclude=np.zeros(5))
+    r, i = index.overlap_any_many(np.empty((0, 3)), np.empty((0, 6)))
+    assert r.shape == (0,) and i.shape == (0,)

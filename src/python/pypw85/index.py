@@ -10,9 +10,10 @@ rule, the side rule of a periodic box, the order of the results).
 
 Arrays in, arrays out: `Index.insert` takes ``(n,)`` ids, ``(n, 3)``
 centres and ``(n, 6)`` forms in one call into the library; the queries
-return NumPy arrays. The all-pairs queries run on ``threads`` OpenMP
-threads (`OPENMP` says whether this libpw85 has them), with the GIL
-released, and give the same arrays for any number of threads.
+return NumPy arrays. The all-pairs queries and `Index.overlap_any_many`
+run on ``threads`` OpenMP threads (`OPENMP` says whether this libpw85 has
+them), with the GIL released, and give the same arrays for any number of
+threads.
 """
 
 import ctypes
@@ -21,6 +22,7 @@ import numpy as np
 
 from ._errors import Error
 from ._libpw85 import lib as _lib
+from ._batch import threads_count as _threads_count
 from ._symbols import declare as _declare
 
 __all__ = ["Index", "OPENMP", "NO_ID"]
@@ -44,6 +46,8 @@ LIBPW85_INDEX = {
     "pw85_index_remove": (_INT, [_P, _SIZE]),
     "pw85_index_get": (_INT, [_P, _SIZE, _P, _P]),
     "pw85_index_overlap_any": (_INT, [_P, _P, _P, _SIZE, _INT_P, _SIZE_P]),
+    "pw85_index_overlap_any_batch": (_INT, [_P, _SIZE, _P, _SIZE, _P, _SIZE,
+                                            _P, _P, _P, _P, _INT]),
     "pw85_index_within": (_INT, [_P, _P, _P, _DOUBLE, _SIZE, _SIZE, _P, _P,
                                  _P, _SIZE_P]),
     "pw85_index_overlapping_pairs": (_INT, [_P, _INT, _SIZE, _P, _P, _P,
@@ -53,7 +57,8 @@ LIBPW85_INDEX = {
 }
 _declare(_lib, LIBPW85_INDEX)
 
-#: True when the all-pairs queries can run on several threads.
+#: True when the all-pairs queries and `Index.overlap_any_many` can run on
+#: several threads.
 OPENMP = bool(_lib.pw85_index_openmp())
 #: "No id": ``exclude=None`` in the queries, and the id `Index.overlap_any`
 #: returns when nothing overlaps.
@@ -190,6 +195,63 @@ class Index:
             NO_ID if exclude is None else _id("exclude", exclude),
             ctypes.byref(result), ctypes.byref(found)), "overlap_any")
         return result.value, (None if found.value == NO_ID else found.value)
+
+    def overlap_any_many(self, centres, q, exclude=None, threads=1):
+        """`overlap_any` for n candidates in one call, each decided against
+        the stored ellipsoids only (not against each other).
+
+        ``centres`` ``(n, 3)``, ``q`` ``(n, 6)``; ``exclude`` None, or
+        ``(n,)`` ids, -1 for none. ``threads``: 1, 0 (OpenMP's default) or
+        up to that many (none started below 512 candidates); the results
+        do not depend on it.
+
+        Returns ``(results, ids)``: ``(n,)`` ints (-1, 0, +1, as
+        `overlap_any`) and ``(n,)`` int64 ids (-1 where the result is +1).
+        Raises `Error` for the first failing candidate (its ``index`` and
+        the ``statuses`` of all), ValueError for a bad shape or id.
+
+        Random sequential addition can draw candidates in batches, decide
+        them here, then keep them in order, calling `overlap_any` again
+        for a free candidate that follows an insertion in the same batch:
+        the serial loop's result (tutorial/rsa.py).
+        """
+        threads = _threads_count(threads)
+        c = _array("centres", centres, np.float64, (-1, 3))
+        n = c.shape[0]
+        f = _array("q", q, np.float64, (n, 6))
+        ex = None
+        if exclude is not None:
+            e = np.asarray(exclude)
+            if not np.issubdtype(e.dtype, np.integer):
+                raise TypeError("exclude: expected integer ids, got dtype %s"
+                                % e.dtype)
+            if e.shape != (n,):
+                raise ValueError("exclude: expected shape (%d,), got %s"
+                                 % (n, e.shape))
+            if (e < -1).any():
+                raise ValueError("exclude: ids are non-negative integers "
+                                 "(-1 for none)")
+            ex = e.astype(np.int64).astype(np.uintp)
+            ex[e == -1] = NO_ID
+        results = np.empty(n, dtype=np.intc)
+        found = np.empty(n, dtype=np.uintp)
+        args = (self._h(), n, _ptr(c), 3, _ptr(f), 6,
+                None if ex is None else _ptr(ex), _ptr(results), _ptr(found))
+        code = _lib.pw85_index_overlap_any_batch(*args, None, threads)
+        if code != 0:
+            status = np.empty(n, dtype=np.intc)
+            code = _lib.pw85_index_overlap_any_batch(*args, _ptr(status),
+                                                     threads)
+            i = int(np.flatnonzero(status)[0])
+            error = Error(code, "overlap_any_many",
+                          "candidate %d of %d (%d failed): centre = %r, "
+                          "q = %r" % (i, n, np.count_nonzero(status),
+                                      c[i].tolist(), f[i].tolist()))
+            error.index = i
+            error.statuses = status
+            raise error
+        ids = np.where(found == NO_ID, -1, found.astype(np.int64))
+        return results, ids.astype(np.int64)
 
     def within(self, centre, q, t=1.0, exclude=None):
         """Every stored ellipsoid and image with μ² < t from a candidate.
