@@ -5,6 +5,7 @@
 // of pw85_index.h returned with the index and the outputs unchanged.
 #include <glib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -168,6 +169,25 @@ void same_answers(pw85::Index const &ix, pw85_index const *c, GRand *rng,
     same_within(ix, c, e, 1., exclude);
     same_within(ix, c, e, 2.5, exclude);
   }
+  // overlap_any_batch(): contiguous arrays, on 2 threads, against the C
+  // function's one call per candidate.
+  std::size_t const m = 600;
+  std::vector<double> cs(3 * m), qs(6 * m);
+  std::vector<std::size_t> excl(m), ids(m), ids_c(m);
+  std::vector<int> results(m), results_c(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    Ellipsoid const e = random_ellipsoid(rng);
+    std::copy(e.c, e.c + 3, &cs[3 * i]);
+    std::copy(e.q, e.q + 6, &qs[6 * i]);
+    excl[i] = i % 2 ? pw85::index_no_id : i % (max_id + 1);
+    g_assert_cmpint(pw85_index_overlap_any(c, e.c, e.q, excl[i], &results_c[i], &ids_c[i]),
+                    ==, PW85_SUCCESS);
+  }
+  g_assert_cmpint(ix.overlap_any_batch(m, cs.data(), qs.data(), excl.data(), results.data(),
+                                       ids.data(), nullptr, 2),
+                  ==, PW85_SUCCESS);
+  g_assert_true(results == results_c);
+  g_assert_true(ids == ids_c);
   for (int threads : {1, 2}) {
     same_overlapping_pairs(ix, c, threads);
     same_pairs_within(ix, c, 1.7, threads);
@@ -305,6 +325,8 @@ void check_empty(pw85::Index &ix) {
   g_assert_cmpint(ix.get(0, c, q), ==, PW85_EFAULT);
   g_assert_cmpint(ix.overlap_any(origin, unit_q, pw85::index_no_id, result, id),
                   ==, PW85_EFAULT);
+  g_assert_cmpint(ix.overlap_any_batch(1, origin, unit_q, nullptr, &result, &id), ==,
+                  PW85_EFAULT);
   g_assert_cmpuint(n, ==, 7);
   g_assert_cmpuint(id, ==, 7);
   g_assert_cmpint(result, ==, 7);
