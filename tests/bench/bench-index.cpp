@@ -6,16 +6,19 @@
 // polydisperse (radius ratio 10) and needle (aspect ratio 100) sets; random
 // sequential addition of 1e5 ellipsoids to a packing fraction of 0.3
 // (semi-axes 1, 0.8, 0.6: 1 : 0.5 : 0.2 saturates near 0.29, so it runs to
-// 0.2 and 0.25, for information); and,
+// 0.2 and 0.25, for information), one candidate at a time and in batches
+// on 1 and 2 threads (pw85_index_overlap_any_batch(), the same
+// configuration); and,
 // in the same run, the yardsticks: the O(N²) brute force over all pairs
 // (N = 1e4, with its agreement), and FCL's dynamic AABB tree with its
 // default narrow phase in an open box (N = 1e5; when built with
 // libfcl-dev), with the pairs each misses. Ratios matter, not absolute
 // times: the machines are shared.
 //
-// Usage: bench-index [quick | rsa | saturation | profile N [threads]]
-// ("quick": the largest N left out; "rsa": random sequential addition
-// only; "saturation": how far random sequential addition of 1e4 gets;
+// Usage: bench-index [quick | rsa | rsa-row [threads] | saturation |
+// profile N [threads]] ("quick": the largest N left out; "rsa": random
+// sequential addition only; "rsa-row": its row of record only;
+// "saturation": how far random sequential addition of 1e4 gets;
 // "profile": one all-pairs query, for a profiler).
 #include <algorithm>
 #include <chrono>
@@ -384,6 +387,14 @@ int main(int argc, char **argv) {
       std::printf("pairs (%d threads): %.3f s (CPU %.3f s), %zu candidates, %zu pairs\n",
                   threads, r.seconds, cpu, r.candidates, r.pairs);
     }
+    return 0;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "rsa-row") == 0) {
+    // bench-index rsa-row [threads]: random sequential addition of 1e5
+    // ellipsoids 1 : 0.8 : 0.6 to 0.3 only, one candidate at a time (0,
+    // the default) or in batches on that many threads; for a profiler.
+    double const a[3] = {1., .8, .6};
+    rsa(100000, a, .3, argc > 2 ? std::atoi(argv[2]) : 0);
     return 0;
   }
   if (argc > 1 && std::strcmp(argv[1], "saturation") == 0) {
