@@ -540,6 +540,36 @@ std::uint32_t to_exclude(std::size_t id) noexcept {
 
 }  // namespace
 
+namespace {
+
+// The second shortcut of overlap_any(): the point p of the segment from
+// the candidate's centre c to the stored one's, c + r, at distance
+// ρ_e·(1 − 2⁻²⁰) from c + r, lies inside the stored ellipsoid scaled by
+// 1 − 2⁻²⁰ (its inscribed ball); is it inside the candidate so scaled,
+// ((p − c)ᵀQ⁻¹(p − c) ≤ (1 − 2⁻²⁰)²)? With p − c = (t/|r|)·r, t = |r| −
+// ρ_e·(1 − 2⁻²⁰): t·√(rᵀQ⁻¹r) ≤ |r|·(1 − 2⁻²⁰). rᵀQ⁻¹r = |L⁻¹r|², L the
+// Cholesky factor of Q (lq): the computed factor and forward substitution
+// give the exact |y|² of some Q + E, ‖E‖₂ ≤ (γ₄ + 2γ₃ + γ₃²)·tr(Q) <
+// 2⁻⁴⁸·tr(Q) (Higham, Accuracy and Stability of Numerical Algorithms, 2nd
+// ed., th. 10.3 and 8.5, with ‖|L||Lᵀ|‖₂ ≤ ‖L‖_F² ≈ tr(Q)), so that
+// rᵀQ⁻¹r ≤ |y|²/(1 − η), η = ‖E‖₂/(λmin(Q) − ‖E‖₂) < 2⁻²⁷ when
+// tr(Q) ≤ 2²⁰·ρ² (the caller's condition, ρ² < λmin(Q)). The test below
+// inflates |y|² by 2⁻²², t by 2⁻⁴⁸·(|r| + ρ_e) (its rounding error and
+// that of |r|) and lowers the bound to |r|·(1 − 2⁻¹⁹): a margin far
+// above the few roundings of the products and square roots. d2 = |r|²
+// as computed.
+bool deep_overlap(double const lq[sym], double const r[dim], double d2,
+                  double rho_e) noexcept {
+  double y[dim];
+  forward_solve(lq, r, y);
+  double const a = dot(y, y) * (1.0 + 0x1p-22);
+  double const d = std::sqrt(d2);
+  double const t = d - rho_e * (1.0 - 0x1p-20) + 0x1p-48 * (d + rho_e);
+  return t <= 0.0 || t * std::sqrt(a) < d * (1.0 - 0x1p-19);
+}
+
+}  // namespace
+
 Status Index::overlap_any(double const c[dim], double const q[sym],
                           std::size_t exclude, int *result,
                           std::size_t *id) const noexcept {
@@ -551,16 +581,37 @@ Status Index::overlap_any(double const c[dim], double const q[sym],
   int best = 1;
   std::uint32_t best_id = no_id;
   double rho = -1.0;  // the candidate's inscribed_radius(), when needed
+  // The candidate's Cholesky factor, for deep_overlap(), when rho > 0 and
+  // tr(Q) ≤ 2²⁰·ρ² (line = 1; 0 when not usable, −1 not yet known).
+  double lq[sym], reach = 0.0;
+  int line = -1;
   s = visit(c, h, 1.0, to_exclude(exclude), true,
             [&](Entry const &e, std::int32_t const *, double const r[dim]) {
-              // Inscribed balls that meet, by a margin far above the
-              // roundings of |r|² and (ρ + ρ_e)²: then μ² < 1 − 2⁻²¹,
-              // and pw85_overlap() would give −1 (certified outside its
-              // 4-ulp band; both ρ > 0 keeps the pair within its range).
+              // Two shortcuts for deep overlaps, each a point inside both
+              // ellipsoids scaled by 1 − 2⁻²⁰ (so μ² < 1 − 2⁻¹⁹ and
+              // pw85_overlap() would give −1, far outside its 4-ulp band;
+              // both ρ > 0 keeps the pair within its range). First,
+              // inscribed balls that meet, by a margin far above the
+              // roundings of |r|² and (ρ + ρ_e)².
               if (e.rho > 0.0) {
                 if (rho < 0.0) rho = inscribed_radius(q);
                 double const s = rho + e.rho;
-                if (rho > 0.0 && dot(r, r) < s * s * (1.0 - 0x1p-20)) {
+                double const d2 = dot(r, r);
+                if (rho > 0.0 && d2 < s * s * (1.0 - 0x1p-20)) {
+                  best = -1;
+                  best_id = e.id;
+                  return false;
+                }
+                if (line < 0) {
+                  double const tr = q[0] + q[3] + q[5];
+                  line = rho > 0.0 && tr <= 0x1p20 * (rho * rho) &&
+                         cholesky_decomp(q, lq);
+                  reach = 1.5 * std::sqrt(tr);  // above every semi-axis
+                }
+                // Only if the candidate may reach the stored ellipsoid's
+                // ball (a filter: it decides nothing).
+                double const gap = reach + e.rho;
+                if (line > 0 && d2 < gap * gap && deep_overlap(lq, r, d2, e.rho)) {
                   best = -1;
                   best_id = e.id;
                   return false;
