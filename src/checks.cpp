@@ -28,7 +28,7 @@ bool scaled_ldl(double const q[sym], Ldl *f, int h[dim]) noexcept {
   }
   double scaled[sym];
   for (int k = 0; k < sym; ++k)
-    scaled[k] = std::ldexp(q[k], -(h[row_of[k]] + h[col_of[k]]));
+    scaled[k] = times_pow2(q[k], -(h[row_of[k]] + h[col_of[k]]));
   return ldl_decomp(scaled, f);
 }
 
@@ -53,7 +53,7 @@ bool cholesky_by_rule(double const q[sym], double l[sym]) noexcept {
   int const row[sym] = {0, 1, 2, 1, 2, 2};  // storage of cholesky.hpp:
   int const col[sym] = {0, 0, 0, 1, 1, 2};  // column by column
   for (int k = 0; k < sym; ++k)
-    l[k] = std::ldexp(unit_lower[k] * root_d[col[k]], h[row[k]]);
+    l[k] = times_pow2(unit_lower[k] * root_d[col[k]], h[row[k]]);
   return true;
 }
 
