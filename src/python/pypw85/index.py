@@ -20,9 +20,9 @@ import ctypes
 
 import numpy as np
 
+from ._batch import threads_count as _threads_count
 from ._errors import Error
 from ._libpw85 import lib as _lib
-from ._batch import threads_count as _threads_count
 from ._symbols import declare as _declare
 
 __all__ = ["Index", "OPENMP", "NO_ID"]
@@ -250,8 +250,8 @@ class Index:
             error.index = i
             error.statuses = status
             raise error
-        ids = np.where(found == NO_ID, -1, found.astype(np.int64))
-        return results, ids.astype(np.int64)
+        # NO_ID (2⁶⁴ − 1) becomes -1.
+        return results, found.astype(np.int64)
 
     def within(self, centre, q, t=1.0, exclude=None):
         """Every stored ellipsoid and image with μ² < t from a candidate.
