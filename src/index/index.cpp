@@ -553,7 +553,7 @@ namespace {
 // 2⁻⁴⁸·tr(Q) (Higham, Accuracy and Stability of Numerical Algorithms, 2nd
 // ed., th. 10.3 and 8.5, with ‖|L||Lᵀ|‖₂ ≤ ‖L‖_F² ≈ tr(Q)), so that
 // rᵀQ⁻¹r ≤ |y|²/(1 − η), η = ‖E‖₂/(λmin(Q) − ‖E‖₂) < 2⁻²⁷ when
-// tr(Q) ≤ 2²⁰·ρ² (the caller's condition, ρ² < λmin(Q)). The test below
+// tr(Q) ≤ 2²⁰·λmin(Q) (line_factor() checks it). The test below
 // inflates |y|² by 2⁻²², t by 2⁻⁴⁸·(|r| + ρ_e) (its rounding error and
 // that of |r|) and lowers the bound to |r|·(1 − 2⁻¹⁹): a margin far
 // above the few roundings of the products and square roots. d2 = |r|²
@@ -568,6 +568,28 @@ bool deep_overlap(double const lq[sym], double const r[dim], double d2,
   return t <= 0.0 || t * std::sqrt(a) < d * (1.0 - 0x1p-19);
 }
 
+// The candidate's side of deep_overlap(): its Cholesky factor l, when
+// every Q_kk is in [2⁻³⁰⁰, 2³⁰⁰] (as for an inscribed radius: the pair is
+// then within the range of pw85_overlap()) and tr(Q) ≤ 2²⁰·s for a
+// certified lower bound s of λmin(Q). The computed factor L is that of
+// some Q + ΔA, ‖ΔA‖₂ ≤ γ₄·‖L‖_F² < 2⁻⁵⁰·tr(Q) (Higham th. 10.3), and for a
+// 3×3 matrix σmin(L) = |det L|/(σ₁σ₂) ≥ 2·|det L|/‖L‖_F², so λmin(Q) ≥
+// (2·L₀₀L₁₁L₂₂/‖L‖_F²)² − 2⁻⁵⁰·tr(Q); s lowers the first term by 2⁻⁴⁰ (its
+// dozen roundings) and the second is taken as 2⁻⁴⁸·tr(Q). No eigenvalue
+// is computed: a query factors its candidate once.
+bool line_factor(double const q[sym], double l[sym]) noexcept {
+  double const lo = std::min(std::min(q[0], q[3]), q[5]);
+  double const hi = std::max(std::max(q[0], q[3]), q[5]);
+  if (!(lo >= 0x1p-300 && hi <= 0x1p300) || !cholesky_decomp(q, l))
+    return false;
+  double const tr = q[0] + q[3] + q[5];
+  double f = 0.0;
+  for (int k = 0; k < sym; ++k) f += l[k] * l[k];
+  double const g = 2.0 * (l[0] * l[3] * l[5]) / f;
+  double const s = g * g * (1.0 - 0x1p-40) - 0x1p-48 * tr;
+  return s > 0.0 && tr <= 0x1p20 * s;
+}
+
 }  // namespace
 
 Status Index::overlap_any(double const c[dim], double const q[sym],
@@ -580,36 +602,25 @@ Status Index::overlap_any(double const c[dim], double const q[sym],
   Status failed = Status::success;
   int best = 1;
   std::uint32_t best_id = no_id;
-  double rho = -1.0;  // the candidate's inscribed_radius(), when needed
-  // The candidate's Cholesky factor, for deep_overlap(), when rho > 0 and
-  // tr(Q) ≤ 2²⁰·ρ² (line = 1; 0 when not usable, −1 not yet known).
+  // The candidate's Cholesky factor for deep_overlap() (line = 1; 0 when
+  // not usable, −1 not yet known), and a bound of its semi-axes.
   double lq[sym], reach = 0.0;
   int line = -1;
   s = visit(c, h, 1.0, to_exclude(exclude), true,
             [&](Entry const &e, std::int32_t const *, double const r[dim]) {
-              // Two shortcuts for deep overlaps, each a point inside both
-              // ellipsoids scaled by 1 − 2⁻²⁰ (so μ² < 1 − 2⁻¹⁹ and
-              // pw85_overlap() would give −1, far outside its 4-ulp band;
-              // both ρ > 0 keeps the pair within its range). First,
-              // inscribed balls that meet, by a margin far above the
-              // roundings of |r|² and (ρ + ρ_e)².
+              // Deep overlaps, decided without the narrow phase: a point
+              // inside both ellipsoids scaled by 1 − 2⁻²⁰, so μ² <
+              // 1 − 2⁻¹⁹ and pw85_overlap() would give −1, far outside
+              // its 4-ulp band (deep_overlap(); ρ_e > 0 and line_factor()
+              // keep the pair within the range of pw85_overlap()).
               if (e.rho > 0.0) {
-                if (rho < 0.0) rho = inscribed_radius(q);
-                double const s = rho + e.rho;
-                double const d2 = dot(r, r);
-                if (rho > 0.0 && d2 < s * s * (1.0 - 0x1p-20)) {
-                  best = -1;
-                  best_id = e.id;
-                  return false;
-                }
                 if (line < 0) {
-                  double const tr = q[0] + q[3] + q[5];
-                  line = rho > 0.0 && tr <= 0x1p20 * (rho * rho) &&
-                         cholesky_decomp(q, lq);
-                  reach = 1.5 * std::sqrt(tr);  // above every semi-axis
+                  line = line_factor(q, lq);
+                  reach = 1.5 * std::sqrt(q[0] + q[3] + q[5]);  // > every semi-axis
                 }
                 // Only if the candidate may reach the stored ellipsoid's
                 // ball (a filter: it decides nothing).
+                double const d2 = dot(r, r);
                 double const gap = reach + e.rho;
                 if (line > 0 && d2 < gap * gap && deep_overlap(lq, r, d2, e.rho)) {
                   best = -1;
