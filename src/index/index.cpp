@@ -609,10 +609,11 @@ Status Index::overlap_any(double const c[dim], double const q[sym],
   s = visit(c, h, 1.0, to_exclude(exclude), true,
             [&](Entry const &e, std::int32_t const *, double const r[dim]) {
               // Deep overlaps, decided without the narrow phase: a point
-              // inside both ellipsoids scaled by 1 − 2⁻²⁰, so μ² <
-              // 1 − 2⁻¹⁹ and pw85_overlap() would give −1, far outside
-              // its 4-ulp band (deep_overlap(); ρ_e > 0 and line_factor()
-              // keep the pair within the range of pw85_overlap()).
+              // inside both ellipsoids scaled by 1 − 2⁻²⁰, so μ² ≤
+              // (1 − 2⁻²⁰)² < 1 − 2⁻²⁰ and pw85_overlap() would give −1,
+              // far outside its 4-ulp band (deep_overlap(); ρ_e > 0 and
+              // line_factor() keep the pair within the range of
+              // pw85_overlap()).
               if (e.rho > 0.0) {
                 if (line < 0) {
                   line = line_factor(q, lq);
