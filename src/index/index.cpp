@@ -18,6 +18,16 @@ void half_widths(double const q[sym], double h[dim]) noexcept {
 
 namespace {
 
+// Is every Q_kk in [2⁻³⁰⁰, 2³⁰⁰]? The range in which the shortcuts of
+// overlap_any() work (inscribed radii, the candidate's factor): nothing
+// below over- or underflows, and two such forms are within the range that
+// pw85_overlap() accepts.
+bool moderate_diagonal(double const q[sym]) noexcept {
+  double const lo = std::min(std::min(q[0], q[3]), q[5]);
+  double const hi = std::max(std::max(q[0], q[3]), q[5]);
+  return lo >= 0x1p-300 && hi <= 0x1p300;
+}
+
 // Does the Cholesky factorisation of Q − s·I (cholesky_decomp()) complete
 // with every pivot > 0? (Then Q − s·I + E is positive definite for some
 // ‖E‖₂ < 2⁻⁴⁸·M, M = max Q_kk ≥ s: see inscribed_radius() in index.hpp.)
@@ -50,9 +60,8 @@ double least_eigenvalue_estimate(double const q[sym]) noexcept {
 }  // namespace
 
 double inscribed_radius(double const q[sym]) noexcept {
+  if (!moderate_diagonal(q)) return 0.0;
   double const m = std::max(std::max(q[0], q[3]), q[5]);
-  double const least = std::min(std::min(q[0], q[3]), q[5]);
-  if (!(least >= 0x1p-300 && m <= 0x1p300)) return 0.0;
   double const margin = 0x1p-46 * m;
   // First the cubic's estimate, lowered by 2⁻¹⁶ of itself; if the check
   // fails (an ill-conditioned Q, whose λmin the estimate gets wrong), the
@@ -538,12 +547,8 @@ std::uint32_t to_exclude(std::size_t id) noexcept {
   return id > max_id ? no_id : static_cast<std::uint32_t>(id);
 }
 
-}  // namespace
-
-namespace {
-
-// The second shortcut of overlap_any(): the point p of the segment from
-// the candidate's centre c to the stored one's, c + r, at distance
+// The shortcut of overlap_any() for deep overlaps: the point p of the
+// segment from the candidate's centre c to the stored one's, c + r, at distance
 // ρ_e·(1 − 2⁻²⁰) from c + r, lies inside the stored ellipsoid scaled by
 // 1 − 2⁻²⁰ (its inscribed ball); is it inside the candidate so scaled,
 // ((p − c)ᵀQ⁻¹(p − c) ≤ (1 − 2⁻²⁰)²)? With p − c = (t/|r|)·r, t = |r| −
@@ -569,8 +574,7 @@ bool deep_overlap(double const lq[sym], double const r[dim], double d2,
 }
 
 // The candidate's side of deep_overlap(): its Cholesky factor l, when
-// every Q_kk is in [2⁻³⁰⁰, 2³⁰⁰] (as for an inscribed radius: the pair is
-// then within the range of pw85_overlap()) and tr(Q) ≤ 2²⁰·s for a
+// moderate_diagonal(q) (as for an inscribed radius) and tr(Q) ≤ 2²⁰·s for a
 // certified lower bound s of λmin(Q). The computed factor L is that of
 // some Q + ΔA, ‖ΔA‖₂ ≤ γ₄·‖L‖_F² < 2⁻⁵⁰·tr(Q) (Higham th. 10.3), and for a
 // 3×3 matrix σmin(L) = |det L|/(σ₁σ₂) ≥ 2·|det L|/‖L‖_F², so λmin(Q) ≥
@@ -578,10 +582,7 @@ bool deep_overlap(double const lq[sym], double const r[dim], double d2,
 // dozen roundings) and the second is taken as 2⁻⁴⁸·tr(Q). No eigenvalue
 // is computed: a query factors its candidate once.
 bool line_factor(double const q[sym], double l[sym]) noexcept {
-  double const lo = std::min(std::min(q[0], q[3]), q[5]);
-  double const hi = std::max(std::max(q[0], q[3]), q[5]);
-  if (!(lo >= 0x1p-300 && hi <= 0x1p300) || !cholesky_decomp(q, l))
-    return false;
+  if (!moderate_diagonal(q) || !cholesky_decomp(q, l)) return false;
   double const tr = q[0] + q[3] + q[5];
   double f = 0.0;
   for (int k = 0; k < sym; ++k) f += l[k] * l[k];
