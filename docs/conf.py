@@ -12,7 +12,7 @@ PW85_FIGURE_DIR       the build directory where docs/meson.build draws the
                       when pypw85 is not built
 PW85_LIBRARY          libpw85 of this build, loaded by pypw85 (autodoc)
 PW85_LEGACY_LIBRARY   libpw85_legacy of this build (empty if not built)
-PYTHONPATH            src/python, where pypw85 lives
+PYTHONPATH            bindings/python, where pypw85 lives
 
 Formulas are rendered at build time by LaTeX and dvisvgm (imgmath): the
 site uses no network, neither to build nor to read.
@@ -93,7 +93,7 @@ breathe_show_define_initializer = True
 breathe_show_enumvalue_initializer = True
 breathe_separate_member_pages = False
 
-# -- Python: autodoc imports pypw85 from src/python -------------------------
+# -- Python: autodoc imports pypw85 from bindings/python -------------------------
 autodoc_member_order = "bysource"
 autodoc_typehints = "none"
 napoleon_google_docstring = False
@@ -101,7 +101,7 @@ napoleon_numpy_docstring = True
 napoleon_use_rtype = False
 napoleon_use_ivar = True
 
-sys.path.insert(0, str(ROOT / "src" / "python"))
+sys.path.insert(0, str(ROOT / "bindings" / "python"))
 
 
 def _importable(name):

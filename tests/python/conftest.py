@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """Shared fixtures of the pypw85 tests (run by `meson test --suite python`).
 
-meson sets PYTHONPATH to src/python, PW85_LIBRARY (and PW85_LEGACY_LIBRARY)
+meson sets PYTHONPATH to bindings/python, PW85_LIBRARY (and PW85_LEGACY_LIBRARY)
 to the libraries of the build tree, PW85_REF_DATA, PW85_SOURCE_ROOT and
 PW85_EXPECTED_VERSION.
 """

@@ -181,9 +181,9 @@ print(" ".join(sorted(new - set(sys.stdlib_module_names))))
 
 
 def test_meson_installs_every_module():
-    """src/python/meson.build installs every module of the package (a
+    """bindings/python/meson.build installs every module of the package (a
     module left out breaks only the installed copy)."""
-    meson_build = (SOURCE_ROOT / "src" / "python" / "meson.build").read_text()
+    meson_build = (SOURCE_ROOT / "bindings" / "python" / "meson.build").read_text()
     installed = set(re.findall(r"'pypw85/(\w+\.py)'", meson_build))
     modules = {p.name for p in PACKAGE_DIR.glob("*.py")} - {"_paths.py"}
     assert "__init__.py" in modules and "legacy.py" in modules
