@@ -19,32 +19,38 @@ bool valid_f_input(double lambda, double const *r, double const *q1,
 
 namespace {
 
-// The factors of the rule: ldl_decomp() of D·Q·D, D = diag(2^−h[i]).
-bool scaled_ldl(double const q[sym], Ldl *f, int h[dim]) noexcept {
-  if (!all_finite<sym>(q)) return false;
-  for (int i = 0; i < dim; ++i) {
-    if (!(q[diag_of[i]] > 0.0)) return false;
-    h[i] = exponent(q[diag_of[i]]) / 2;
-  }
-  double scaled[sym];
+// D·Q·D, D = diag(2^−h[i]), and its ldl_decomp() factors (false when a
+// pivot is ≤ 0). Q finite with a positive diagonal.
+bool scaled_ldl(double const q[sym], double scaled[sym], Ldl *f,
+                int h[dim]) noexcept {
+  for (int i = 0; i < dim; ++i) h[i] = exponent(q[diag_of[i]]) / 2;
   for (int k = 0; k < sym; ++k)
     scaled[k] = times_pow2(q[k], -(h[row_of[k]] + h[col_of[k]]));
   return ldl_decomp(scaled, f);
 }
 
+bool finite_with_positive_diagonal(double const q[sym]) noexcept {
+  return all_finite<sym>(q) && q[0] > 0.0 && q[3] > 0.0 && q[5] > 0.0;
+}
+
 }  // namespace
 
 bool is_positive_definite(double const q[sym]) noexcept {
+  if (!finite_with_positive_diagonal(q)) return false;
   Ldl f;
   int h[dim];
-  return scaled_ldl(q, &f, h);
+  double scaled[sym];
+  if (scaled_ldl(q, scaled, &f, h) && ldl_certifies(scaled, f)) return true;
+  return exactly_positive_definite(q);
 }
 
 bool cholesky_by_rule(double const q[sym], double l[sym]) noexcept {
+  if (!is_positive_definite(q)) return false;
+  if (cholesky_decomp(q, l)) return true;
   Ldl f;
   int h[dim];
-  if (!scaled_ldl(q, &f, h)) return false;
-  if (cholesky_decomp(q, l)) return true;
+  double scaled[sym];
+  if (!scaled_ldl(q, scaled, &f, h)) return false;
   // Q = D⁻¹·L̃·diag(d)·L̃ᵀ·D⁻¹, so L = D⁻¹·L̃·diag(√d): column j of L̃
   // times √dⱼ, row i divided by Dᵢ = 2^−hᵢ.
   double root_d[dim];

@@ -4,6 +4,7 @@
 #define PW85_SRC_CHECKS_HPP
 
 #include "compiler.hpp"
+#include "ldl.hpp"
 #include "status.hpp"
 #include "sym3.hpp"
 
@@ -39,20 +40,43 @@ inline Status check_pointers_and_finite(double const *r, double const *q1,
   return Status::success;
 }
 
-// The definiteness rule of both libraries (pw85.h): q is positive definite
-// when the L·D·Lᵀ factorisation (ldl_decomp()) of D·Q·D has positive
-// pivots, D = diag(2^−hᵢ) the exact power-of-two scaling that brings the
-// diagonal of Q to [1/4, 1). Such a scaling changes none of the roundings
-// of the factorisation (barring underflow), so the rule decides as the
-// factorisation of Q itself, or of Q scaled by any power of two, would
-// (prepare() in problem.cpp), and no square overflows or underflows however
-// widely the diagonal entries range. False for a non-finite entry.
+// The definiteness rule of both libraries (pw85.h): q is accepted when its
+// entries are finite and it is positive definite exactly, as stored
+// (Sylvester's criterion on the exact values of its six doubles). Decided
+// by ldl_certifies() on the factors of D·Q·D, D = diag(2^−hᵢ) the exact
+// power-of-two scaling that brings the diagonal to [1/4, 2), where their
+// rounding errors allow, else by exactly_positive_definite(): never wrong,
+// however nearly singular q is, and whatever its scaling underflows.
 bool is_positive_definite(double const q[sym]) noexcept;
+
+// Sylvester's criterion evaluated exactly, in integer arithmetic
+// (definite.cpp): Q00 > 0, Q00·Q11 − Q01² > 0, det Q > 0. False for a
+// non-finite entry.
+bool exactly_positive_definite(double const q[sym]) noexcept;
+
+// True when the factors f that ldl_decomp() computed from a (all pivots
+// > 0) prove a positive definite. A = L·D·Lᵀ, the exact product of the
+// computed factors, is a − Δ with ‖Δ‖₂ ≤ γ·tr(|L|·D·|Lᵀ|) = γ·tr(A) for
+// γ = γ₄ = 4u/(1 − 4u) (Higham, Accuracy and Stability of Numerical
+// Algorithms, 2nd ed., Thm 10.3, for L·D·Lᵀ; the reciprocal pivots add a
+// rounding), plus at most 2^−1060 for results that underflowed, in the
+// factorisation or in the scaling of a. Weyl: λmin(a) ≥ λmin(A) − ‖Δ‖₂,
+// and λmin(A) ≥ 1/tr(A⁻¹) (ldl_trace_inverse()). So a is positive definite
+// when tr(A⁻¹)·(γ·tr(A) + 2^−1060) < 1; 2^−48 (8γ₄) in place of γ covers
+// the roundings of this test and of tr(A) from the diagonal of a. Decides
+// forms with tr(a)·tr(a⁻¹) below about 2.8e14; beyond, or with an
+// overflow (tr(A⁻¹) = +∞), false: not proven.
+PW85_INLINE bool ldl_certifies(double const a[sym], Ldl const &f) noexcept {
+  constexpr double g = 0x1p-48;
+  double const margin = g * a[0] + g * a[3] + g * a[5] + 0x1p-1060;
+  return ldl_trace_inverse(f) * margin < 1.0;
+}
 
 // The Cholesky factor of q (storage of cholesky.hpp) when q is positive
 // definite by the rule above, else false: cholesky_decomp(), or, where one
 // of its pivots rounds to ≤ 0 although the rule accepts q, L̃·√D/D from the
-// rule's factors (so that the two never disagree).
+// factors of D·Q·D. False also when those meet a pivot ≤ 0: q positive
+// definite but singular to the precision of double.
 bool cholesky_by_rule(double const q[sym], double l[sym]) noexcept;
 
 // check_pointers_and_finite(), then Status::not_positive_definite if q1 or

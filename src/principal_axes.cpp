@@ -69,7 +69,9 @@ Status principal_axes(double const q[sym], double a[dim],
     for (int i = 0; i < dim; ++i) col[j][i] = v[dim * i + j];
     dd const vv = dot_dd(col[j], col[j]);
     a2[j] = quad_form_dd(qs, col[j]) / (vv.hi + vv.lo);
-    if (!(a2[j] > 0.0)) return Status::not_positive_definite;
+    // Q is positive definite (the rule, exact): a quotient ≤ 0 is below
+    // the precision of double-double, not a sign of indefiniteness.
+    if (!(a2[j] > 0.0)) return Status::out_of_range;
   }
   // Decreasing order: an insertion sort of three, stable (std::stable_sort
   // may allocate a buffer).

@@ -6,11 +6,11 @@
 
 namespace pw85::detail {
 
-Status why_unprepared(double const q1[sym], double const q2[sym]) noexcept {
-  // Not definite, or definite but out of range once rescaled together.
+Status prepare_uncertified(double const q1[sym], double const q2[sym],
+                           bool factorised) noexcept {
   if (!is_positive_definite(q1) || !is_positive_definite(q2))
     return Status::not_positive_definite;
-  return Status::out_of_range;
+  return factorised ? Status::success : Status::out_of_range;
 }
 
 }  // namespace pw85::detail

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "checks.hpp"
+#include "compiler.hpp"
 #include "ldl.hpp"
 #include "scaling.hpp"
 #include "status.hpp"
@@ -59,23 +61,31 @@ inline void orient(Problem *p) noexcept {
   p->a2 = a;
 }
 
-// Why prepare() failed, from the input forms (problem.cpp):
-// Status::not_positive_definite, or Status::out_of_range when they are
-// definite but their diagonals span more than the range of a double.
-Status why_unprepared(double const q1[sym], double const q2[sym]) noexcept;
+// prepare() where the factors of the rescaled forms did not prove them
+// positive definite (problem.cpp): the rule of checks.hpp on the forms as
+// stored decides Status::not_positive_definite; a form that passes but
+// that could not be factorised once rescaled with the other
+// (factorised false: its diagonal spans, with the other's, more than the
+// range of a double, or it is singular to the precision of double) gives
+// Status::out_of_range; else Status::success (the factors stand).
+Status prepare_uncertified(double const q1[sym], double const q2[sym],
+                           bool factorised) noexcept;
 
-// rescale(), then the factorisations of Q1 and Q2, which decide their
-// definiteness (the rule of checks.hpp, applied to Q scaled by a power of
-// two); aᵢ are not yet computed (quads()), nor the problem oriented
-// (orient()). Input: finite.
-// Returns Status::success, or the status of why_unprepared(). Inline: it
-// runs on every call.
+// rescale(), then the factorisations of Q1 and Q2, which prove them
+// positive definite (ldl_certifies()) on the fast path; else the rule of
+// checks.hpp decides, on the forms as stored (prepare_uncertified()). aᵢ
+// are not yet computed (quads()), nor the problem oriented (orient()).
+// Input: finite. Returns Status::success, Status::not_positive_definite or
+// Status::out_of_range. Inline: it runs on every call.
 inline Status prepare(double const r[dim], double const q1[sym],
                       double const q2[sym], Problem *p) noexcept {
-  if (!(rescale(r, q1, q2, p) && ldl_decomp(p->q1, &p->f1) &&
-        ldl_decomp(p->q2, &p->f2)))
-    return why_unprepared(q1, q2);
   p->swapped = false;
+  bool const factorised = rescale(r, q1, q2, p) &&
+                          ldl_decomp(p->q1, &p->f1) &&
+                          ldl_decomp(p->q2, &p->f2);
+  if (PW85_UNLIKELY(!(factorised && ldl_certifies(p->q1, p->f1) &&
+                      ldl_certifies(p->q2, p->f2))))
+    return prepare_uncertified(q1, q2, factorised);
   return Status::success;
 }
 

@@ -173,6 +173,7 @@ double pw85_f_neg(double lambda,
   double const *q2 = q1 + PW85_SYM;
   double value = 0.0;
   if (!core::valid_f_input(lambda, r12, q1, q2) ||
+      !core::is_positive_definite(q1) || !core::is_positive_definite(q2) ||
       !core::f_compensated(lambda, r12, q1, q2, &value))
     return NAN;
   return -value;

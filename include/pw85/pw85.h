@@ -18,12 +18,19 @@
  * unit vectors vᵢ. Q has the dimension of a squared length.
  *
  * Positive definite, as stored: every function of pw85 and pw85_legacy
- * applies one rule. The entries are finite, the diagonal positive, and
- * the L·D·Lᵀ factorisation in double of D·Q·D, D = diag(2^−hᵢ) the exact
- * power-of-two scaling that brings the diagonal to [1/4, 1), has positive
- * pivots. (The scaling changes no rounding: the rule decides as the
- * factorisation of Q itself would, barring underflow or overflow.) A form
- * with cond(Q) far below 1/ε passes; one nearly singular may pass or not.
+ * applies one rule. A form is accepted when its entries are finite and it
+ * is positive definite exactly, as stored: Sylvester's criterion,
+ * Q00 > 0, Q00·Q11 − Q01² > 0, det Q > 0, on the exact values of the six
+ * doubles. The floating-point factorisation decides where its error bound
+ * proves the answer (forms with cond(Q) up to about 1e14); beyond, the
+ * minors are evaluated exactly, in integer arithmetic (a few hundred
+ * nanoseconds more). So no form that is not positive definite is ever
+ * accepted, and none that is is refused, however nearly singular, and
+ * whatever its scale (since 2.3.0; earlier releases decided by the
+ * factorisation alone, and accepted some indefinite forms). A form so
+ * nearly singular that double cannot factorise it (cond(Q) ≳ 1/ε, far
+ * beyond the documented domain) is accepted; the functions that must
+ * factorise it answer PW85_ERANGE.
  *
  * Thread safety: every function is reentrant and thread-safe; none keeps
  * state between calls. None prints, aborts, exits, allocates from the heap,
@@ -145,7 +152,9 @@ PW85_API const char *pw85_version(void) PW85_NOEXCEPT;
  * positive definite by the rule above (a NaN or infinite entry included),
  * every entry of l is set to NaN; otherwise l holds the factor (should the
  * usual algorithm meet a pivot ≤ 0 on a form that the rule accepts, L is
- * formed from the rule's L·D·Lᵀ factors instead).
+ * formed from the L·D·Lᵀ factors of A scaled by powers of two per axis;
+ * should those meet one too, A being singular to the precision of double,
+ * NaN as well).
  * @param[in] a the matrix A (upper triangle, see the file description).
  * @param[out] l the lower-triangular factor L (see the file description).
  */
@@ -203,7 +212,8 @@ PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
  * @return −f(λ), never positive for λ in [0, 1] (−0 where rounding, with
  *         cond(Q(λ)) beyond ~1e14, would make f negative); NaN if params
  *         is NULL, if lambda or an entry of params is not finite, or if
- *         Q(λ) is not positive definite to the resolution of its
+ *         q1 or q2 is not positive definite by the rule above, or if Q(λ)
+ *         is not positive definite to the resolution of its
  *         factorisation.
  */
 PW85_API double pw85_f_neg(double lambda,
@@ -278,6 +288,9 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity, out[1] = λ;
  *         or if the diagonal entries of q1 and q2 together span more than
  *         the range of a double (ratio above about 1e600: out untouched);
+ *         or if q1 or q2, positive definite, cannot be factorised in
+ *         double once both are rescaled (singular to that precision,
+ *         cond ≳ 1/ε: out untouched);
  *         PW85_ENOMEM if GSL's minimiser would need more than the working
  *         memory reserved on the stack (out untouched; not expected).
  *         (pw85 1.0 returned 0 always; these statuses since 2.1.0.)
@@ -408,11 +421,11 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
  *             direction of a[j]).
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
- *         positive definite by the rule above (or an eigenvalue is not > 0
- *         to double-double precision); PW85_ERANGE if cond(Q) exceeds
- *         about 1e270 (tr(Q)·tr(Q⁻¹) > 2^900: GSL's iterations could meet
- *         subnormal numbers, where they may not converge). a and rot are
- *         written on success only.
+ *         positive definite by the rule above; PW85_ERANGE if cond(Q)
+ *         exceeds about 1e270 (tr(Q)·tr(Q⁻¹) > 2^900: GSL's iterations
+ *         could meet subnormal numbers, where they may not converge), or
+ *         if a Rayleigh quotient is not > 0 in double-double (cond(Q)
+ *         beyond about 1e32). a and rot are written on success only.
  * @since 2.2.0
  */
 PW85_API int pw85_principal_axes(double const q[PW85_SYM],

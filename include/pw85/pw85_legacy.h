@@ -131,7 +131,8 @@ void pw85__rT_adjQ_r_as_poly(double const r[PW85_DIM],
  * @param[out] out NULL, or 3 doubles that receive out[0] = f(λ),
  *                 out[1] = f′(λ), out[2] = f″(λ); NaN in each entry when
  *                 the function returns NaN.
- * @return f(λ); NaN if r12, q1 or q2 is NULL, if an input is not finite, or
+ * @return f(λ); NaN if r12, q1 or q2 is NULL, if an input is not finite,
+ *         if q1 or q2 is not positive definite by the rule of pw85.h, or
  *         if Q(λ) is not positive definite.
  */
 PW85_API double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
@@ -154,6 +155,7 @@ PW85_API double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
  * @param[out] out NULL, or 1 double that receives f(λ) (NaN when the
  *                 function returns NaN).
  * @return f(λ); NaN if r12, q1 or q2 is NULL, if an input is not finite,
+ *         if q1 or q2 is not positive definite by the rule of pw85.h,
  *         if Q(λ) is not positive definite, or if the computed b(λ) is 0
  *         (then 0/0 at λ = 1, where the rounded b(1) can vanish).
  */

@@ -21,14 +21,16 @@ using core::Scaled;
 // core::check_input(): core::rescale(), then the answers that need no
 // search. Returns true when *status (and out) is already the answer:
 // Status::out_of_range when the diagonals of Q1 and Q2 together span more
-// than the range of a double (the rescaled forms are then no longer
-// positive definite); for coincident centres, μ² = 0 and λ = ½ (f ≡ 0, λ
+// than the range of a double, or when a form (positive definite as stored:
+// check_input()) cannot be factorised in double once rescaled with the
+// other (singular to that precision); for coincident centres, μ² = 0 and λ = ½ (f ≡ 0, λ
 // is arbitrary), as pw85_contact_function answers.
 bool answered_before_search(double const r[dim], double const q1[sym],
                             double const q2[sym], Scaled *p, double out[2],
                             Status *status) noexcept {
-  if (!core::rescale(r, q1, q2, p) || !core::is_positive_definite(p->q1) ||
-      !core::is_positive_definite(p->q2)) {
+  core::Ldl f1, f2;
+  if (!core::rescale(r, q1, q2, p) || !core::ldl_decomp(p->q1, &f1) ||
+      !core::ldl_decomp(p->q2, &f2)) {
     *status = Status::out_of_range;
     return true;
   }

@@ -61,6 +61,7 @@ double pw85_legacy_f1(double lambda, double const r12[PW85_DIM],
                       double *out) noexcept {
   double f = NAN;
   if (!core::valid_f_input(lambda, r12, q1, q2) ||
+      !core::is_positive_definite(q1) || !core::is_positive_definite(q2) ||
       !legacy::f1(lambda, r12, q1, q2, &f, out) || std::isnan(f)) {
     if (out != nullptr) out[0] = out[1] = out[2] = NAN;
     return NAN;
@@ -73,6 +74,7 @@ double pw85_legacy_f2(double lambda, double const r12[PW85_DIM],
                       double *out) noexcept {
   double f = NAN;
   if (core::valid_f_input(lambda, r12, q1, q2) &&
+      core::is_positive_definite(q1) && core::is_positive_definite(q2) &&
       legacy::q_positive_definite(lambda, q1, q2))
     f = legacy::f2(lambda, r12, q1, q2);
   if (out != nullptr) out[0] = f;
