@@ -40,7 +40,9 @@ bool is_positive_definite(double const q[sym]) noexcept {
   Ldl f;
   int h[dim];
   double scaled[sym];
-  if (scaled_ldl(q, scaled, &f, h) && ldl_certifies(scaled, f)) return true;
+  if (scaled_ldl(q, scaled, &f, h) &&
+      ldl_certifies(scaled, ldl_trace_inverse(f)))
+    return true;
   return exactly_positive_definite(q);
 }
 

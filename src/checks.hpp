@@ -55,7 +55,8 @@ bool is_positive_definite(double const q[sym]) noexcept;
 bool exactly_positive_definite(double const q[sym]) noexcept;
 
 // True when the factors f that ldl_decomp() computed from a (all pivots
-// > 0) prove a positive definite. A = L·D·Lᵀ, the exact product of the
+// > 0), through trace_inverse = ldl_trace_inverse(f), prove a positive
+// definite. A = L·D·Lᵀ, the exact product of the
 // computed factors, is a − Δ with ‖Δ‖₂ ≤ γ·tr(|L|·D·|Lᵀ|) = γ·tr(A) for
 // γ = γ₄ = 4u/(1 − 4u) (Higham, Accuracy and Stability of Numerical
 // Algorithms, 2nd ed., Thm 10.3, for L·D·Lᵀ; the reciprocal pivots add a
@@ -65,11 +66,10 @@ bool exactly_positive_definite(double const q[sym]) noexcept;
 // when tr(A⁻¹)·(γ·tr(A) + 2^−1060) < 1; 2^−48 (8γ₄) in place of γ covers
 // the roundings of this test and of tr(A) from the diagonal of a. Decides
 // forms with tr(a)·tr(a⁻¹) below about 2.8e14; beyond, or with an
-// overflow (tr(A⁻¹) = +∞), false: not proven.
-PW85_INLINE bool ldl_certifies(double const a[sym], Ldl const &f) noexcept {
+// overflow (tr(A⁻¹) or tr(a) = +∞), false: not proven.
+PW85_INLINE bool ldl_certifies(double const a[sym], double trace_inverse) noexcept {
   constexpr double g = 0x1p-48;
-  double const margin = g * a[0] + g * a[3] + g * a[5] + 0x1p-1060;
-  return ldl_trace_inverse(f) * margin < 1.0;
+  return trace_inverse * (g * (a[0] + a[3] + a[5]) + 0x1p-1060) < 1.0;
 }
 
 // The Cholesky factor of q (storage of cholesky.hpp) when q is positive

@@ -127,8 +127,8 @@ Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
     quads(&p);
     Filtering const s{p,
                       one,
-                      ldl_cond_bound(p.q1, p.f1),
-                      ldl_cond_bound(p.q2, p.f2),
+                      trace(p.q1) * p.tinv1,  // κ̄(Q1) (ldl_cond_bound())
+                      trace(p.q2) * p.tinv2,
                       p.a1,
                       p.a2};
     d = centre_filter(s);

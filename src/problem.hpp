@@ -20,6 +20,8 @@ struct Problem : Scaled {
   Ldl f2;      // Q2 = L·D·Lᵀ
   double a1;   // rᵀ·Q1⁻¹·r
   double a2;   // rᵀ·Q2⁻¹·r
+  double tinv1;  // tr(Q1⁻¹) (ldl_trace_inverse() of f1)
+  double tinv2;  // tr(Q2⁻¹)
   // Q1 and Q2 (with their factors and aᵢ) were exchanged by orient(): the
   // problem's λ is then 1 − λ of the input (f(λ; Q1, Q2) = f(1−λ; Q2, Q1)).
   bool swapped;
@@ -59,6 +61,9 @@ inline void orient(Problem *p) noexcept {
   double const a = p->a1;
   p->a1 = p->a2;
   p->a2 = a;
+  double const t = p->tinv1;
+  p->tinv1 = p->tinv2;
+  p->tinv2 = t;
 }
 
 // prepare() where the factors of the rescaled forms did not prove them
@@ -83,9 +88,13 @@ inline Status prepare(double const r[dim], double const q1[sym],
   bool const factorised = rescale(r, q1, q2, p) &&
                           ldl_decomp(p->q1, &p->f1) &&
                           ldl_decomp(p->q2, &p->f2);
-  if (PW85_UNLIKELY(!(factorised && ldl_certifies(p->q1, p->f1) &&
-                      ldl_certifies(p->q2, p->f2))))
-    return prepare_uncertified(q1, q2, factorised);
+  if (PW85_UNLIKELY(!factorised))
+    return prepare_uncertified(q1, q2, false);
+  p->tinv1 = ldl_trace_inverse(p->f1);
+  p->tinv2 = ldl_trace_inverse(p->f2);
+  if (PW85_UNLIKELY(!(ldl_certifies(p->q1, p->tinv1) &&
+                      ldl_certifies(p->q2, p->tinv2))))
+    return prepare_uncertified(q1, q2, true);
   return Status::success;
 }
 
