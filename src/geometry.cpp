@@ -126,6 +126,20 @@ PW85_INLINE void cross_dd(double const a[dim], double const a_lo[dim],
   }
 }
 
+// x = m·2^e exactly, m in [1/2, 1) (m = 0 for x = 0); products keep
+// the mantissa in [1/4, 1) and add the exponents, so that no product of
+// weights underflows.
+struct Pow2Split {
+  double m;
+  int e;
+  Pow2Split operator*(Pow2Split o) const noexcept { return {m * o.m, e + o.e}; }
+};
+
+PW85_INLINE Pow2Split split_pow2(double x) noexcept {
+  int const e = exponent(x);
+  return {times_pow2(x, -e), e};
+}
+
 // x · 2^k for the 3 or 6 entries of x.
 PW85_INLINE void scale_back(double *x, int n, int k) noexcept {
   PW85_UNROLL
@@ -156,19 +170,22 @@ bool outputs(Contact const &c, double out[geom::size],
         p.moderate ? polish<true>(p, c.lambda) : polish<false>(p, c.lambda);
     double s[dim], s_lo[dim];
     if (!solve_accurately(p, lambda, s, s_lo)) return false;
-    // Everything below is computed from s·2^−es and Qᵢ'·2^−eq, both of
-    // magnitude below 1 (exact scalings by powers of two), so that no
-    // product overflows whatever the input's range; the exponents are
-    // put back at the end.
+    // Everything below is computed from s·2^−es, Q1'·2^−e1 and Q2'·2^−e2,
+    // each of magnitude below 1 (exact scalings by powers of two, each form
+    // by its own exponent, so that a form far smaller than the other keeps
+    // its digits), and from the weights λ^i·(1 − λ)^j split into a
+    // mantissa and a power of two: no product overflows or underflows
+    // whatever the input's range (a torque of order 2^−369 stays a normal
+    // double); the exponents are put back at the end, once.
     int const es = exponent(std::max(std::max(std::fabs(s[0]), std::fabs(s[1])),
                                      std::fabs(s[2])));
-    int const eq = exponent(std::max(std::max(std::max(p.q1[0], p.q1[3]), p.q1[5]),
-                                     std::max(std::max(p.q2[0], p.q2[3]), p.q2[5])));
+    int const e1 = exponent(std::max(std::max(p.q1[0], p.q1[3]), p.q1[5]));
+    int const e2 = exponent(std::max(std::max(p.q2[0], p.q2[3]), p.q2[5]));
     double q1[sym], q2[sym];
     PW85_UNROLL
     for (int k = 0; k < sym; ++k) {
-      q1[k] = times_pow2(p.q1[k], -eq);
-      q2[k] = times_pow2(p.q2[k], -eq);
+      q1[k] = times_pow2(p.q1[k], -e1);
+      q2[k] = times_pow2(p.q2[k], -e2);
     }
     PW85_UNROLL
     for (int i = 0; i < dim; ++i) {
@@ -179,23 +196,27 @@ bool outputs(Contact const &c, double out[geom::size],
     double t1[dim], t1_lo[dim], t2[dim], t2_lo[dim];
     sym_mul_dd(q1, s, s_lo, t1, t1_lo);  // Q1'·s, scaled
     sym_mul_dd(q2, s, s_lo, t2, t2_lo);  // Q2'·s, scaled
+    // Weights as m·2^e, m in [1/2, 1): λ, 1 − λ, λ(1 − λ), λ(1 − λ)² (of
+    // Q1') and λ²(1 − λ) (of Q2'); the products of mantissas are exact
+    // to rounding and far from underflow.
+    Pow2Split const wu = split_pow2(u), wv = split_pow2(v);
+    Pow2Split const w = wu * wv, w1 = w * wv, w2 = w * wu;
     // s is that of the input (Q'(λ') = Q(λ), r unchanged), and x − c1 is
     // (1 − λ)·Q1·s (9a) in the input's terms: (1 − λ')·Q1'·s, or λ'·Q2'·s
     // when the problem is swapped.
     double *point = out + geom::point;
     PW85_UNROLL
-    for (int i = 0; i < dim; ++i) point[i] = p.swapped ? u * t2[i] : v * t1[i];
+    for (int i = 0; i < dim; ++i)
+      point[i] = p.swapped ? wu.m * t2[i] : wv.m * t1[i];
+    int const point_exp = p.swapped ? wu.e + e2 : wv.e + e1;
     // n = s/‖s‖ (s scaled: no square overflows).
     double const norm = std::sqrt(dot(s, s));
     PW85_UNROLL
     for (int i = 0; i < dim; ++i) out[geom::normal + i] = s[i] / norm;
     out[geom::lambda] = p.swapped ? v : u;
     // The envelope theorem: ∂μ²/∂y = ∂f/∂y at λ* for every input y.
-    double const w = u * v;
-    double const w1 = u * (v * v);  // λ(1 − λ)² of Q1'
-    double const w2 = (u * u) * v;  // λ²(1 − λ) of Q2'
     PW85_UNROLL
-    for (int i = 0; i < dim; ++i) der[deriv::r12 + i] = 2.0 * w * s[i];
+    for (int i = 0; i < dim; ++i) der[deriv::r12 + i] = 2.0 * w.m * s[i];
     double rot1[dim], rot2[dim];
     cross_dd(s, s_lo, t1, t1_lo, rot1);
     cross_dd(s, s_lo, t2, t2_lo, rot2);
@@ -203,8 +224,8 @@ bool outputs(Contact const &c, double out[geom::size],
     int const second = p.swapped ? deriv::rot1 : deriv::rot2;
     PW85_UNROLL
     for (int i = 0; i < dim; ++i) {
-      der[first + i] = 2.0 * w1 * rot1[i];
-      der[second + i] = 2.0 * w2 * rot2[i];
+      der[first + i] = 2.0 * w1.m * rot1[i];
+      der[second + i] = 2.0 * w2.m * rot2[i];
     }
     int const first_q = p.swapped ? deriv::q2 : deriv::q1;
     int const second_q = p.swapped ? deriv::q1 : deriv::q2;
@@ -213,17 +234,19 @@ bool outputs(Contact const &c, double out[geom::size],
       // ∂(sᵀQs)/∂q[k]: s_i², or 2·s_i·s_j for an off-diagonal entry.
       double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;
       double const ss = factor * s[row_of[k]] * s[col_of[k]];
-      der[first_q + k] = -w1 * ss;
-      der[second_q + k] = -w2 * ss;
+      der[first_q + k] = -w1.m * ss;
+      der[second_q + k] = -w2.m * ss;
     }
     // Back to the input's scale: r = r'·2^a, Q = Q'·2^b, so s = s'·2^(a−b),
     // x − c1 scales as r, ∂μ²/∂r as s, ∂μ²/∂ω as μ², ∂μ²/∂q as s²; and the
-    // scalings by 2^es and 2^eq above.
+    // scalings by 2^es, 2^e1, 2^e2 and of the weights above.
     int const a = p.r_exp, b = p.q_exp;
-    scale_back(point, dim, a + eq + es);
-    scale_back(der + deriv::r12, dim, a - b + es);
-    scale_back(der + deriv::rot1, 2 * dim, 2 * a - b + 2 * es + eq);
-    scale_back(der + deriv::q1, 2 * sym, 2 * (a - b + es));
+    scale_back(point, dim, a + point_exp + es);
+    scale_back(der + deriv::r12, dim, a - b + es + w.e);
+    scale_back(der + first, dim, 2 * a - b + 2 * es + e1 + w1.e);
+    scale_back(der + second, dim, 2 * a - b + 2 * es + e2 + w2.e);
+    scale_back(der + first_q, sym, 2 * (a - b + es) + w1.e);
+    scale_back(der + second_q, sym, 2 * (a - b + es) + w2.e);
   }
   return true;
 }
