@@ -6,6 +6,8 @@
 // fuzz-contact-raw and fuzz-contact-structured.
 #include "fuzz_common.h"
 
+#include <gmp.h>
+
 namespace fuzz {
 namespace {
 
@@ -32,6 +34,39 @@ void print_input(const double r[3], const double q1[6], const double q2[6]) {
                q2[3], q2[4], q2[5]);
 }
 
+// Positive definite exactly, as stored (pw85.h): Sylvester's criterion on
+// the exact rational values of the doubles (GMP), independent of pw85.
+bool exactly_definite(const double q[6]) {
+  if (!all_finite(q, 6)) return false;
+  mpq_t a[6], t, u, m2, det;
+  for (auto &x : a) mpq_init(x);
+  mpq_inits(t, u, m2, det, nullptr);
+  for (int k = 0; k < 6; ++k) mpq_set_d(a[k], q[k]);
+  // m2 = a00·a11 − a01²
+  mpq_mul(m2, a[0], a[3]);
+  mpq_mul(t, a[1], a[1]);
+  mpq_sub(m2, m2, t);
+  // det = a00(a11·a22 − a12²) − a01(a01·a22 − a12·a02) + a02(a01·a12 − a11·a02)
+  mpq_mul(t, a[3], a[5]);
+  mpq_mul(u, a[4], a[4]);
+  mpq_sub(t, t, u);
+  mpq_mul(det, a[0], t);
+  mpq_mul(t, a[1], a[5]);
+  mpq_mul(u, a[4], a[2]);
+  mpq_sub(t, t, u);
+  mpq_mul(t, a[1], t);
+  mpq_sub(det, det, t);
+  mpq_mul(t, a[1], a[4]);
+  mpq_mul(u, a[3], a[2]);
+  mpq_sub(t, t, u);
+  mpq_mul(t, a[2], t);
+  mpq_add(det, det, t);
+  bool const pd = q[0] > 0 && mpq_sgn(m2) > 0 && mpq_sgn(det) > 0;
+  for (auto &x : a) mpq_clear(x);
+  mpq_clears(t, u, m2, det, nullptr);
+  return pd;
+}
+
 #define CHECK_IN(cond, ...)                                      \
   do {                                                           \
     if (!(cond)) print_input(r12, q1, q2);                       \
@@ -51,6 +86,13 @@ void check_contact(const double r12[3], const double q1[6],
   CHECK_IN(is_contact_status(st), "status %d", st);
   CHECK_IN(finite_in == (st != PW85_EDOM), "status %d, finite %d", st,
            finite_in);
+  // One definiteness rule, exact (pw85.h): ENOTPOSDEF exactly when a form
+  // is not positive definite as stored.
+  if (finite_in) {
+    bool const definite = exactly_definite(q1) && exactly_definite(q2);
+    CHECK_IN(definite == (st != PW85_ENOTPOSDEF),
+             "status %d, exactly positive definite %d", st, definite);
+  }
   bool const erange_inf = st == PW85_ERANGE && !untouched;
   if (st != PW85_SUCCESS && st != PW85_ERANGE)
     CHECK_IN(untouched, "status %d wrote out", st);
