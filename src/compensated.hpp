@@ -9,6 +9,7 @@
 #include "compiler.hpp"
 #include "dd.hpp"
 #include "ldl.hpp"
+#include "scaling.hpp"
 #include "sym3.hpp"
 #include "tolerances.hpp"
 
@@ -89,9 +90,26 @@ PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
 struct Compensated {
   double f;
   double f_lo;  // f + f_lo: f before its rounding to double
-  double p1;    // P1, when asked for
-  double p2;    // P2, when asked for
+  double p1;    // P1·2^−p_exp, when asked for
+  double p2;    // P2·2^−p_exp, when asked for
+  int p_exp;    // Pᵢ are formed from s scaled to |s|∞ in [1/2, 1) (exact),
+                // so that neither underflows when Qᵢ and s are both small
+                // (one form far below the other): ρ = √(P2/P1) is the same
 };
+
+// s and s_lo scaled by the power of two 2^−e that brings |s|∞ to [1/2, 1)
+// (exact, barring the underflow of a tail far below s); returns 2e, the
+// exponent by which Pᵢ = sᵀQᵢs from the scaled s must be multiplied.
+PW85_INLINE int scale_for_p(double s[dim], double s_lo[dim]) noexcept {
+  int const e = exponent(std::fmax(std::fmax(std::fabs(s[0]), std::fabs(s[1])),
+                                   std::fabs(s[2])));
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    s[i] = times_pow2(s[i], -e);
+    if (s_lo != nullptr) s_lo[i] = times_pow2(s_lo[i], -e);
+  }
+  return 2 * e;
+}
 
 // The evaluation from Q(λ) = hi + lo factorised in double-double
 // (compensated_dd.cpp): for Q(λ) too ill-conditioned for the double
@@ -159,6 +177,7 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   out->f = value.hi;
   out->f_lo = value.lo;
   if (WithP) {
+    out->p_exp = scale_for_p(ds, carry ? ds_lo : nullptr);
     out->p1 = quad_form_dd(q1, ds);
     out->p2 = quad_form_dd(q2, ds);
     if (carry) {

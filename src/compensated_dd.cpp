@@ -82,6 +82,7 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
   out->f = value.hi;
   out->f_lo = value.lo;
   if (with_p) {
+    out->p_exp = scale_for_p(s, s_lo);
     double t1[dim], t2[dim];
     sym_mul(q1, s, t1);
     sym_mul(q2, s, t2);

@@ -7,6 +7,7 @@
 
 #include "compensated.hpp"
 #include "compiler.hpp"
+#include "scaling.hpp"
 #include "tolerances.hpp"
 
 namespace pw85::detail {
@@ -21,12 +22,14 @@ PW85_INLINE double omega_of(double lambda, Compensated const &a) noexcept {
 
 // The quadratic model's gain over f(λ) for the Newton step Δλ = −step
 // (eq. (5.10)): ½·f′·Δλ = ½·√P1·ω·(μ1 + μ2)·step, with μ1 = (1−λ)√P1 and
-// μ2 = λ√P2.
+// μ2 = λ√P2 (Pᵢ = a.pᵢ·2^p_exp).
 PW85_INLINE double model_gain(double lambda, Compensated const &a,
                               double omega, double step) noexcept {
   double const root_p1 = std::sqrt(a.p1);
   double const sum_mu = (1.0 - lambda) * root_p1 + lambda * std::sqrt(a.p2);
-  return 0.5 * root_p1 * omega * sum_mu * step;
+  // √P1·(μ1 + μ2) back to scale first: it is of order μ², however small
+  // the scaled P1 and P2 are.
+  return 0.5 * times_pow2(root_p1 * sum_mu, a.p_exp) * omega * step;
 }
 
 // The largest compensated f seen, and where.
@@ -56,6 +59,7 @@ bool finish(Problem const &p, FinishStart const &start,
   // every ω computed here, which is reliable (unlike that of the plain ω
   // when Q(λ) is ill-conditioned).
   double lo = 0.0, hi = 1.0;
+  int fall = 10;  // the exponent of the next fallback step towards an end
   for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
     Compensated a;
     if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
@@ -66,13 +70,14 @@ bool finish(Problem const &p, FinishStart const &start,
     if (omega < 0.0) lo = std::max(lo, lambda);
     if (omega > 0.0) hi = std::min(hi, lambda);
     // The slope: the secant through the previous point once there is one
-    // (and it is positive, as ω′ is), else the plain ω′.
-    if (evaluations > 1 && lambda != prev_lambda) {
+    // (and it is positive and finite, as ω′ is), else the plain ω′.
+    if (evaluations > 1 && lambda != prev_lambda && std::isfinite(omega)) {
       double const secant = (omega - prev_omega) / (lambda - prev_lambda);
-      if (secant > 0.0) domega = secant;
+      if (secant > 0.0 && secant < HUGE_VAL) domega = secant;
     }
     // Newton's step (NaN without a usable slope).
-    double const step = domega > 0.0 ? omega / domega : NAN;
+    double const step =
+        domega > 0.0 && domega < HUGE_VAL ? omega / domega : NAN;
     double next = lambda - step;
     if (next > 0.0 && next < 1.0 &&
         std::fabs(step) <= finish_accept * std::min(lambda, 1.0 - lambda)) {
@@ -84,14 +89,32 @@ bool finish(Problem const &p, FinishStart const &start,
         return true;
       }
     }
+    if (std::isnan(step) && evaluations == 1) {
+      // No slope at the start (Newton did not converge there): a probe
+      // 2^−20 away, relative to the nearer end, towards the root, so that
+      // the next slope is a local secant.
+      double const d = (omega > 0.0 ? -1.0 : 1.0) * 0x1p-20;
+      next = lambda <= 0.5 ? lambda * (1.0 + d) : 1.0 - (1.0 - lambda) * (1.0 - d);
+    }
     if (!(next > lo && next < hi)) {
       // Newton's step leaves the bracket (a start far from the root, with
-      // the slope of a plain ω′ that rounding made meaningless): a step
-      // into the bracket instead, by a factor 2^10 towards the end of
-      // [0, 1] it lies at, or to its middle away from both ends.
-      next = lo == 0.0 ? hi * 0x1p-10
-                       : (hi == 1.0 ? 1.0 - (1.0 - lo) * 0x1p-10
-                                    : 0.5 * (lo + hi));
+      // a slope that rounding made meaningless): a step into the bracket
+      // instead, towards the end of [0, 1] it reaches by 2^−10, 2^−20,
+      // 2^−40, … (a root near an end may be 2^−1000 from it), or to its
+      // geometric middle relative to the nearer end while its ends differ
+      // by more than a factor 4, else to its middle.
+      if (lo == 0.0) {
+        next = times_pow2(hi, -fall);
+      } else if (hi == 1.0) {
+        next = 1.0 - times_pow2(1.0 - lo, -fall);
+      } else if (hi <= 0.5 && hi > 4.0 * lo) {
+        next = std::sqrt(lo) * std::sqrt(hi);
+      } else if (lo >= 0.5 && 1.0 - lo > 4.0 * (1.0 - hi)) {
+        next = 1.0 - std::sqrt(1.0 - lo) * std::sqrt(1.0 - hi);
+      } else {
+        next = 0.5 * (lo + hi);
+      }
+      if (lo == 0.0 || hi == 1.0) fall = std::min(2 * fall, 1100);
       if (!(next > lo && next < hi)) break;
     }
     prev_lambda = lambda;
