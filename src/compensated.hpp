@@ -92,10 +92,32 @@ struct Compensated {
   double f_lo;  // f + f_lo: f before its rounding to double
   double p1;    // P1·2^−p_exp, when asked for
   double p2;    // P2·2^−p_exp, when asked for
-  int p_exp;    // Pᵢ are formed from s scaled to |s|∞ in [1/2, 1) (exact),
-                // so that neither underflows when Qᵢ and s are both small
-                // (one form far below the other): ρ = √(P2/P1) is the same
+  int p_exp;    // 0, or where P1 or P2 would fall below p_floor, 2e for s
+                // scaled by 2^−e to |s|∞ in [1/2, 1) (exact): neither then
+                // underflows when Qᵢ and s are both small (one form far
+                // below the other), and ρ = √(P2/P1) is the same
 };
+
+// Pᵢ = sᵀQᵢs into out (s_lo: nullptr, or the tail of s = s + s_lo, taken
+// to first order: s rounded alone would leave Pᵢ off by up to
+// ε·√cond(Qᵢ) relative, and λ by as much).
+PW85_INLINE void p_from(double const q1[sym], double const q2[sym],
+                        double const s[dim], double const s_lo[dim],
+                        Compensated *out) noexcept {
+  out->p1 = quad_form_dd(q1, s);
+  out->p2 = quad_form_dd(q2, s);
+  if (s_lo != nullptr) {
+    double t1[dim], t2[dim];
+    sym_mul(q1, s, t1);
+    sym_mul(q2, s, t2);
+    out->p1 += 2.0 * dot(t1, s_lo);
+    out->p2 += 2.0 * dot(t2, s_lo);
+  }
+}
+
+// Below this, P1 or P2 may have lost digits to underflow (its terms then
+// lie below 2^−1022): they are formed again from s scaled to order one.
+constexpr double p_floor = 0x1p-900;
 
 // s and s_lo scaled by the power of two 2^−e that brings |s|∞ to [1/2, 1)
 // (exact, barring the underflow of a tail far below s); returns 2e, the
@@ -177,18 +199,11 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   out->f = value.hi;
   out->f_lo = value.lo;
   if (WithP) {
-    out->p_exp = scale_for_p(ds, carry ? ds_lo : nullptr);
-    out->p1 = quad_form_dd(q1, ds);
-    out->p2 = quad_form_dd(q2, ds);
-    if (carry) {
-      // Pᵢ = sᵀQᵢs for s = ds + ds_lo, to second order in ds_lo: ds
-      // rounded alone would leave Pᵢ off by up to ε·√cond(Qᵢ) relative,
-      // and λ by as much.
-      double t1[dim], t2[dim];
-      sym_mul(q1, ds, t1);
-      sym_mul(q2, ds, t2);
-      out->p1 += 2.0 * dot(t1, ds_lo);
-      out->p2 += 2.0 * dot(t2, ds_lo);
+    out->p_exp = 0;
+    p_from(q1, q2, ds, carry ? ds_lo : nullptr, out);
+    if (PW85_UNLIKELY(!(out->p1 > p_floor && out->p2 > p_floor))) {
+      out->p_exp = scale_for_p(ds, carry ? ds_lo : nullptr);
+      p_from(q1, q2, ds, carry ? ds_lo : nullptr, out);
     }
   }
 }

@@ -82,12 +82,12 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
   out->f = value.hi;
   out->f_lo = value.lo;
   if (with_p) {
-    out->p_exp = scale_for_p(s, s_lo);
-    double t1[dim], t2[dim];
-    sym_mul(q1, s, t1);
-    sym_mul(q2, s, t2);
-    out->p1 = quad_form_dd(q1, s) + 2.0 * dot(t1, s_lo);
-    out->p2 = quad_form_dd(q2, s) + 2.0 * dot(t2, s_lo);
+    out->p_exp = 0;
+    p_from(q1, q2, s, s_lo, out);
+    if (!(out->p1 > p_floor && out->p2 > p_floor)) {
+      out->p_exp = scale_for_p(s, s_lo);
+      p_from(q1, q2, s, s_lo, out);
+    }
   }
   return true;
 }

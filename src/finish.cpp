@@ -29,7 +29,9 @@ PW85_INLINE double model_gain(double lambda, Compensated const &a,
   double const sum_mu = (1.0 - lambda) * root_p1 + lambda * std::sqrt(a.p2);
   // √P1·(μ1 + μ2) back to scale first: it is of order μ², however small
   // the scaled P1 and P2 are.
-  return 0.5 * times_pow2(root_p1 * sum_mu, a.p_exp) * omega * step;
+  double const scale = a.p_exp == 0 ? root_p1 * sum_mu
+                                     : times_pow2(root_p1 * sum_mu, a.p_exp);
+  return 0.5 * scale * omega * step;
 }
 
 // The largest compensated f seen, and where.

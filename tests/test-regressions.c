@@ -1,11 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* The pairs that fuzzing found wrong (issue 25), against references at 700
  * digits (tests/regression-pairs.txt, data/gen_regressions.py; not from
- * pw85). Each test states the promise of pw85.h it checks.
- *
- * Tests whose defect is not fixed yet run in a second program, 'pending',
- * which meson expects to fail (should_fail): a fix turns it into an
- * unexpected pass, which fails the suite until the test moves here. */
+ * pw85). Each test states the promise of pw85.h it checks; each failed
+ * before its fix. */
 #include <glib.h>
 #include <math.h>
 #include <stdio.h>
@@ -129,8 +126,8 @@ static void test_needle_far_larger(void) {
   g_assert_cmpint(res, ==, 1);
 }
 
-/* Not fixed yet (issue 25): run by the program 'pending'.
- * λ and ∂μ²/∂r12 of a flat maximum within 1e-13 relative (issue 25). */
+/* λ and ∂μ²/∂r12 of a flat maximum (f″·λ²/μ² = −1.5e-5, cond(Q(λ*)) =
+ * 2.9) within 1e-13 relative (issue 25). */
 static void test_flat_maximum(void) {
   Pair const *p = pair("flat-maximum");
   double g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
@@ -154,17 +151,11 @@ static void test_lambda_near_zero(void) {
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
-  gboolean const pending = g_getenv("PW85_TEST_PENDING") != NULL;
-  if (!pending) {
-    g_test_add_func("/pw85/regressions/indefinite", test_indefinite);
-    g_test_add_func("/pw85/regressions/torque-underflow",
-                    test_torque_underflow);
-    g_test_add_func("/pw85/regressions/needle-far-larger",
-                    test_needle_far_larger);
-    g_test_add_func("/pw85/regressions/lambda-near-zero",
-                    test_lambda_near_zero);
-  } else {
-    g_test_add_func("/pw85/regressions/flat-maximum", test_flat_maximum);
-  }
+  g_test_add_func("/pw85/regressions/indefinite", test_indefinite);
+  g_test_add_func("/pw85/regressions/torque-underflow", test_torque_underflow);
+  g_test_add_func("/pw85/regressions/needle-far-larger",
+                  test_needle_far_larger);
+  g_test_add_func("/pw85/regressions/lambda-near-zero", test_lambda_near_zero);
+  g_test_add_func("/pw85/regressions/flat-maximum", test_flat_maximum);
   return g_test_run();
 }
