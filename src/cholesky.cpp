@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The Cholesky factorisation and solve (cholesky.hpp; seed ch. 4.1).
+// The Cholesky factorisation and solve (cholesky.hpp; docs/implementation.rst, "Implementation 1").
 #include "cholesky.hpp"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The Cholesky factorisation and solve of seed ch. 4.1, as exposed by
+// The Cholesky factorisation and solve of docs/implementation.rst, "Implementation 1", as exposed by
 // pw85__cholesky_decomp() and pw85__cholesky_solve() (private).
 // L is stored l[0]=L00 l[1]=L10 l[2]=L20 l[3]=L11 l[4]=L21 l[5]=L22.
 #ifndef PW85_SRC_CHOLESKY_HPP

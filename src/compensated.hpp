@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The compensated evaluation of f and Pᵢ at λ (private; seed ch. 4, eq. (4),
+// The compensated evaluation of f and Pᵢ at λ (private; docs/implementation.rst, eq. (4.4),
 // and ch. 5, eqs. (1a)–(1b); docs/implementation.rst). Header-only: the
 // callers are compiled for CPUs with and without FMA (PW85_FMA_CLONES),
 // and these kernels with them.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The contact function μ² = max f over [0, 1] (private; seed ch. 5;
+// The contact function μ² = max f over [0, 1] (private; docs/optimisation.rst;
 // docs/optimisation.rst, "The algorithm").
 #ifndef PW85_SRC_CONTACT_HPP
 #define PW85_SRC_CONTACT_HPP

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Ellipsoids from semi-axes and an orientation, and back (private; seed
-// ch. 3, eq. (2): Q = Σ aᵢ²·vᵢ·vᵢᵀ).
+// Ellipsoids from semi-axes and an orientation, and back (private;
+// docs/theory.rst, eq. (3.2): Q = Σ aᵢ²·vᵢ·vᵢᵀ).
 #ifndef PW85_SRC_ELLIPSOID_HPP
 #define PW85_SRC_ELLIPSOID_HPP
 

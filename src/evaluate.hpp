@@ -18,7 +18,7 @@
 
 namespace pw85::detail {
 
-// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4, eqs. (1)–(4)) in plain double:
+// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (docs/implementation.rst, eqs. (4.1)–(4.4)) in plain double:
 // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ with z = L⁻¹·r, one triangular solve instead of the
 // two of ch. 4, eq. (4), no square root, and no cancellation. Returns false
 // when Q(λ) does not factorise. fast: see ldl_decomp_q().

@@ -8,14 +8,14 @@
 
 namespace pw85::detail {
 
-// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4, eqs. (1)–(4)), compensated
+// f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (docs/implementation.rst, eqs. (4.1)–(4.4)), compensated
 // (compensated.hpp): accurate to about one ulp while cond(Q(λ)) is below
 // ~1e10; never below 0 for λ in [0, 1]. Returns false when Q(λ) is not
 // positive definite to the resolution of its factorisation.
 bool f_compensated(double lambda, double const r[dim], double const q1[sym],
                    double const q2[sym], double *f) noexcept;
 
-// out = {f(λ), g(λ), g′(λ)} with g = μ2² − μ1² (seed ch. 5, eqs. (4)–(5)),
+// out = {f(λ), g(λ), g′(λ)} with g = μ2² − μ1² (docs/optimisation.rst, eqs. (5.4)–(5.5)),
 // f compensated, g and g′ in plain double from the Cholesky factors.
 // Where Q(λ) is not positive definite, out holds NaN.
 void residual(double lambda, double const r[dim], double const q1[sym],

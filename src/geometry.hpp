@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The contact point, the common normal and the first derivatives of μ²,
-// from the maximiser of the search (private; seed ch. 3, eqs. (8)–(14);
+// from the maximiser of the search (private; docs/theory.rst, eqs. (3.8)–(3.14);
 // docs/geometry.rst).
 #ifndef PW85_SRC_GEOMETRY_HPP
 #define PW85_SRC_GEOMETRY_HPP

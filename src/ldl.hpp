@@ -11,7 +11,7 @@
 namespace pw85::detail {
 
 // Q = L·D·Lᵀ with L unit lower triangular: no square root, unlike the
-// Cholesky factor of seed ch. 4.1, and the same pivots dᵢ (squares of its
+// Cholesky factor of docs/implementation.rst, "Implementation 1", and the same pivots dᵢ (squares of its
 // diagonal), whose positivity decides definiteness.
 struct Ldl {
   // The entries of L below its unit diagonal:

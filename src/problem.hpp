@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The problem as the search solves it: the rescaled input and the
-// factorisations of Q1 and Q2 (seed ch. 5; docs/optimisation.rst, step 2).
+// factorisations of Q1 and Q2 (docs/optimisation.rst, step 2).
 #ifndef PW85_SRC_PROBLEM_HPP
 #define PW85_SRC_PROBLEM_HPP
 

@@ -19,7 +19,7 @@ double pow2(int k) noexcept;
 // normal double.
 double times_pow2(double x, int k) noexcept;
 
-// r, Q1, Q2 rescaled exactly by powers of two (seed ch. 3, eq. (6):
+// r, Q1, Q2 rescaled exactly by powers of two (docs/theory.rst, eq. (3.6):
 // μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2), λ unchanged): r to order
 // one, Q1 and Q2 so that their diagonals (which bound every entry of a
 // positive definite matrix) straddle one. μ²(input) = μ²(scaled)·2^shift.

@@ -7,7 +7,7 @@
 
 namespace pw85::detail {
 
-// Q = a²·I + (c² − a²)·n·nᵀ (seed ch. 3, eq. (2) for a spheroid), each entry
+// Q = a²·I + (c² − a²)·n·nᵀ (docs/theory.rst, eq. (3.2) for a spheroid), each entry
 // from a double-double evaluation rounded once.
 void spheroid(double a, double c, double const n[dim], double q[sym]) noexcept;
 

@@ -41,7 +41,7 @@ PW85_INLINE double trace(double const a[sym]) noexcept {
   return a[0] + a[3] + a[5];
 }
 
-// Q(λ) = (1−λ)·Q1 + λ·Q2 (seed ch. 4, eq. (2)).
+// Q(λ) = (1−λ)·Q1 + λ·Q2 (docs/implementation.rst, eq. (4.2)).
 PW85_INLINE void combine(double lambda, double const q1[sym],
                          double const q2[sym], double q[sym]) noexcept {
   PW85_COUNT_EVALUATION();

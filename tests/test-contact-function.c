@@ -86,7 +86,7 @@ static void test_residual_spheres(void) {
        * (measured: 2.2e-16). */
       assert_close("residual f, spheres %zu, lambda %g", out[0],
                    -pw85_f_neg(lambda, params), 4.5e-16, k, lambda);
-      /* g = −f′ (seed ch. 5, eq. (4) and ch. 4, eq. (6)); absolute error
+      /* g = −f′ (docs/optimisation.rst, eq. (5.4) and ch. 4, eq. (6)); absolute error
        * relative to the size of the terms, R/d (measured: 1.3e-15). */
       double const scale = norm2(s->r) / fmin(s->a1 * s->a1, s->a2 * s->a2);
       g_assert_cmpfloat(fabs(out[1] + sphere_df(s, lambda)) / scale, <=,

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* pw85_contact_geometry() and pw85_contact_derivatives(): the input
  * contract, r12 = 0, agreement with pw85_contact_function(), the identities
- * of the seed's theory (ch. 3, eqs. (8), (9a)–(9b), (14a)–(14b)) checked in
+ * of docs/theory.rst (eqs. (3.8), (3.9a)–(3.9b), (3.14a)–(3.14b)) checked in
  * double-double, the swapping symmetry, and finite differences of μ².
  * The comparison with independent references at high precision is
  * test-geometry-refs.c. */

@@ -73,7 +73,7 @@ static void solve(double const q[PW85_SYM], double const b[PW85_DIM],
   pw85__cholesky_solve(l, b, x);
 }
 
-/* μ1² = (1−λ)²·sᵀQ1s and μ2² = λ²·sᵀQ2s, s = Q(λ)⁻¹·r (seed ch. 5,
+/* μ1² = (1−λ)²·sᵀQ1s and μ2² = λ²·sᵀQ2s, s = Q(λ)⁻¹·r (docs/optimisation.rst,
  * eqs. (1a)–(1b)): a formula independent of pw85__residual's (ch. 5,
  * eqs. (3)–(4)), evaluated here in double-double (tests/ddref.h) by
  * Gaussian elimination so that the check measures the library, not this
@@ -114,7 +114,7 @@ static void mu_squared(double lambda, double const r[PW85_DIM],
   *mu2 = dd_to_double(dd_mul(dd_mul(lam, lam), p2));
 }
 
-/* f′ and f″ by the analytic expressions of seed ch. 4.1, eqs. (5)–(9):
+/* f′ and f″ by the analytic expressions of docs/implementation.rst, "Implementation 1", eqs. (5)–(9):
  * s = Q⁻¹r, u = Q12·s, v = Q⁻¹u, f′ = (1−2λ)·r·s − λ(1−λ)·s·u,
  * f″ = −2·r·s − 2(1−2λ)·s·u + 2λ(1−λ)·u·v. */
 static void f_derivatives(double lambda, double const r[PW85_DIM],
@@ -141,7 +141,7 @@ static void f_derivatives(double lambda, double const r[PW85_DIM],
 
 /* out[0] against F (pw85__residual reports the compensated f: measured 0,
  * every value correctly rounded; tolerance one ulp). g = −f′ and g′ = −f″
- * against seed ch. 4.1 (the same operations in another arrangement:
+ * against docs/implementation.rst, "Implementation 1" (the same operations in another arrangement:
  * measured 0; tolerance one ulp of the size of the terms). g against
  * μ2² − μ1² of eqs. (1a)–(1b), a different formula evaluated in long
  * double: g itself is a plain double evaluation whose error is
@@ -211,8 +211,8 @@ static void test_residual(void) {
 static void test_contact_function(void) {
   Worst wmu = worst_init("pw85_contact_function mu^2 vs MU2", TOL_MU2);
   Worst wl = worst_init("pw85_contact_function |lambda - LAMBDA|", TOL_LAMBDA);
-  Worst wseed_mu = worst_init("seed ch. 6: mu1^2, mu2^2 vs mu^2", TOL_SEED_MU);
-  Worst wseed_df = worst_init("seed ch. 6: |f'| / |f''|", TOL_SEED_DF);
+  Worst wseed_mu = worst_init("docs/testing.rst: mu1^2, mu2^2 vs mu^2", TOL_SEED_MU);
+  Worst wseed_df = worst_init("docs/testing.rst: |f'| / |f''|", TOL_SEED_DF);
   for (size_t i = 0; i < data.num_spheroids; i++)
     for (size_t j = 0; j < data.num_spheroids; j++)
       for (size_t k = 0; k < data.num_directions; k++)

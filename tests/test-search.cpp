@@ -132,8 +132,8 @@ double cond_at(core::Problem const &p, double lambda) {
 
 // How far from λ* comparisons of the plain f can be fooled by its rounding
 // noise η = plain_form_margin·κ̄(Q)·f (the bound tolerances.hpp derives):
-// f is flat to within η over |λ − λ*| ≤ δ = √(2η/|f″|), f″ = −g′ (seed
-// ch. 5, eq. (5)); and a bracket of width w about a point at distance d
+// f is flat to within η over |λ − λ*| ≤ δ = √(2η/|f″|), f″ = −g′
+// (docs/optimisation.rst, eq. (5.5)); and a bracket of width w about a point at distance d
 // from λ* passes the check of step 5 when the difference of f across it,
 // about |f″|·d·w, is below η, that is up to d = η/(|f″|·w), w the width of
 // the first bracket.

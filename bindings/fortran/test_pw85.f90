@@ -20,7 +20,7 @@ program test_pw85
 
   call get_command_argument(1, expected_version)
 
-  ! The tutorial's pair (seed chapter 2.2).
+  ! The tutorial's pair (docs/tutorial.rst).
   n = [zero, zero, one]
   call pw85_spheroid(10._c_double, 0.1_c_double, n, q1)
   call check('spheroid: Q = a²I + (c² − a²)nnᵀ', &

@@ -4,7 +4,7 @@
  * @brief The legacy C ABI of pw85 (library libpw85_legacy, pkg-config
  *        module pw85_legacy): the earlier implementations of the function f
  *        and of the contact function, kept for reference and for the
- *        accuracy comparison of the documentation (seed chapters 4 and 7.3).
+ *        accuracy comparison of the documentation (docs/implementation.rst and docs/legacy-api.rst).
  *        New code should call pw85_f_neg() and pw85_contact_function().
  *
  * Storage conventions, status codes and the contact problem are those of
@@ -206,7 +206,7 @@ PW85_API int pw85_legacy_contact_function1(double const r12[PW85_DIM],
  *
  * Arguments and input contract as pw85_contact_function(). Bisection always
  * terminates, but the coefficients of a, b and c, computed from values at
- * λ = 0, 1, −1, ½ (seed ch. 4, eq. (12)), lose accuracy to cancellation when
+ * λ = 0, 1, −1, ½ (docs/implementation.rst, eq. (4.12)), lose accuracy to cancellation when
  * the ellipsoids differ much in size or shape: μ² may then have few correct
  * digits, or the rounded c may have no sign change inside (0, 1), in which
  * case bisection ends on λ = 0 or 1 and the function fails.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The two historical contact functions of seed ch. 7.3: Newton–Raphson on
+// The two historical contact functions of docs/legacy-api.rst: Newton–Raphson on
 // f′ of implementation #1, and bisection on the numerator of f′ of
 // implementation #2.
 #include <cmath>
@@ -74,7 +74,7 @@ Status contact_function1(double const r[dim], double const q1[sym],
     return status;
 
   // Plain Newton–Raphson on f′(λ) = 0 from λ = ½: λ ← λ − f′(λ)/f″(λ), f′
-  // and f″ from seed ch. 4, eqs. (6) and (9), with no safeguard. Seed ch. 5
+  // and f″ from docs/implementation.rst, eqs. (4.6) and (4.9), with no safeguard. docs/optimisation.rst
   // explains why it is not robust: f varies sharply near λ = 0 or 1 when the
   // ellipsoids differ in size or shape, and the steps overshoot, out of
   // [0, 1] (already for two spheres of radii 1 and 3, from where it comes
@@ -102,7 +102,7 @@ Status contact_function1(double const r[dim], double const q1[sym],
     if (!std::isfinite(step)) break;  // f″ = 0, or overflow
     lambda -= step;
     if (std::fabs(step) <= nr_step_tol) {
-      // Converged: μ² = f(λ) at the last iterate (seed ch. 4, eq. (4)).
+      // Converged: μ² = f(λ) at the last iterate (docs/implementation.rst, eq. (4.4)).
       if (!(lambda >= 0.0 && lambda <= 1.0)) break;
       if (!f1(lambda, p.r, p.q1, p.q2, &f, nullptr)) break;
       return unscale(p, f, lambda, Status::success, out);
@@ -125,11 +125,11 @@ Status contact_function2(double const r[dim], double const q1[sym],
   }
   double a[dim];
   double b[dim + 1];
-  rT_adjQ_r_as_poly(p.r, p.q1, p.q2, q3, a);  // seed ch. 4, eqs. (12a)–(12c)
-  detQ_as_poly(p.q1, p.q2, q3, q4, b);        // seed ch. 4, eqs. (12d)–(12g)
+  rT_adjQ_r_as_poly(p.r, p.q1, p.q2, q3, a);  // docs/implementation.rst, eqs. (4.12a)–(4.12c)
+  detQ_as_poly(p.q1, p.q2, q3, q4, b);        // docs/implementation.rst, eqs. (4.12d)–(4.12g)
 
-  // f′ = c/b², c of degree 6 (seed ch. 4, eqs. (13)–(14)); c[k] from
-  // seed ch. 4, eq. (15a) for k = 0 to eq. (15g) for k = 6.
+  // f′ = c/b², c of degree 6 (docs/implementation.rst, eqs. (4.13)–(4.14)); c[k] from
+  // docs/implementation.rst, eq. (4.15a) for k = 0 to eq. (4.15g) for k = 6.
   double const c[7] = {
       a[0] * b[0],
       2.0 * (a[1] - a[0]) * b[0],
@@ -142,7 +142,7 @@ Status contact_function2(double const r[dim], double const q1[sym],
   if (!core::all_finite<7>(c)) return Status::out_of_range;
 
   // Bisection on c over [0, 1]: c(0) = a0·b0 > 0 > c(1) = −a(1)·b(1) in
-  // exact arithmetic, and c has one root there (seed ch. 4.2). The bracket
+  // exact arithmetic, and c has one root there (docs/implementation.rst, "Implementation 2"). The bracket
   // halves until it is one ulp wide; the signs are those of the rounded c.
   double lo = 0.0;
   double hi = 1.0;
@@ -159,14 +159,14 @@ Status contact_function2(double const r[dim], double const q1[sym],
     }
   }
   double const lambda = 0.5 * (lo + hi);
-  // μ² = f(λ) = λ(1−λ)·a(λ)/b(λ), seed ch. 4, eq. (10).
+  // μ² = f(λ) = λ(1−λ)·a(λ)/b(λ), docs/implementation.rst, eq. (4.10).
   double const a_lambda = horner(a, lambda);
   double const b_lambda = horner(b, lambda);
   double const mu2 = lambda * (1.0 - lambda) * a_lambda / b_lambda;
   // The root lies strictly inside (0, 1), where a > 0 (adj Q(λ) is
   // positive definite) and b > 0. When the rounded coefficients have no
   // sign change of c inside (0, 1), bisection ends on 0 or 1, where
-  // f = 0 (and b(1) may have rounded to 0 or below: seed ch. 4.3): the
+  // f = 0 (and b(1) may have rounded to 0 or below: docs/implementation.rst, "Accuracy"): the
   // method failed, and the only lower bound of μ² it knows is 0.
   if (!(lambda > 0.0 && lambda < 1.0 && a_lambda > 0.0 && b_lambda > 0.0 &&
         std::isfinite(mu2)))

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The two implementations of f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (seed ch. 4).
+// The two implementations of f(λ) = λ(1−λ)·rᵀ·Q(λ)⁻¹·r (docs/implementation.rst).
 #include "legacy.hpp"
 
 #include "cholesky.hpp"
@@ -24,27 +24,27 @@ bool f1(double lambda, double const r[dim], double const q1[sym],
   double q[sym];
   double l[sym];
   combine(lambda, q1, q2, q);
-  if (!core::cholesky_decomp(q, l)) return false;  // seed ch. 4, eq. (3)
+  if (!core::cholesky_decomp(q, l)) return false;  // docs/implementation.rst, eq. (4.3)
   // rᵀ·s = rᵀ·Q⁻¹·r = |L⁻¹·r|², a sum of squares (no cancellation).
   double y[dim];
   core::forward_solve(l, r, y);
   double const rs = dot(y, y);
   double const w = lambda * (1.0 - lambda);
-  *f = w * rs;  // seed ch. 4, eq. (4)
+  *f = w * rs;  // docs/implementation.rst, eq. (4.4)
   if (out == nullptr) return true;
 
   double q12[sym];
   for (int i = 0; i < sym; ++i) q12[i] = q2[i] - q1[i];
   double s[dim], u[dim], z[dim];
   core::cholesky_solve(l, r, s);  // s = Q⁻¹·r
-  sym_mul(q12, s, u);             // u = Q12·s, seed ch. 4, eq. (5)
+  sym_mul(q12, s, u);             // u = Q12·s, docs/implementation.rst, eq. (4.5)
   core::forward_solve(l, u, z);   // uᵀ·v = uᵀ·Q⁻¹·u = |L⁻¹·u|²
   double const su = dot(s, u);
   double const uv = dot(z, z);
   out[0] = *f;
-  out[1] = (1.0 - 2.0 * lambda) * rs - w * su;  // seed ch. 4, eq. (6)
+  out[1] = (1.0 - 2.0 * lambda) * rs - w * su;  // docs/implementation.rst, eq. (4.6)
   out[2] = -2.0 * rs - 2.0 * (1.0 - 2.0 * lambda) * su +
-           2.0 * w * uv;  // seed ch. 4, eq. (9)
+           2.0 * w * uv;  // docs/implementation.rst, eq. (4.9)
   return true;
 }
 
@@ -58,12 +58,12 @@ double f2(double lambda, double const r[dim], double const q1[sym],
   }
   double a[dim];
   double b[dim + 1];
-  rT_adjQ_r_as_poly(r, q1, q2, q3, a);  // seed ch. 4, eqs. (12a)–(12c)
-  detQ_as_poly(q1, q2, q3, q4, b);      // seed ch. 4, eqs. (12d)–(12g)
+  rT_adjQ_r_as_poly(r, q1, q2, q3, a);  // docs/implementation.rst, eqs. (4.12a)–(4.12c)
+  detQ_as_poly(q1, q2, q3, q4, b);      // docs/implementation.rst, eqs. (4.12d)–(4.12g)
   double const a_lambda = (a[2] * lambda + a[1]) * lambda + a[0];  // (11a)
   double const b_lambda =
       ((b[3] * lambda + b[2]) * lambda + b[1]) * lambda + b[0];  // (11b)
-  return lambda * (1.0 - lambda) * a_lambda / b_lambda;  // seed ch. 4, (10)
+  return lambda * (1.0 - lambda) * a_lambda / b_lambda;  // docs/implementation.rst, eq. (4.10)
 }
 
 }  // namespace pw85::legacy::detail

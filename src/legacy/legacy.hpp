@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The numerical core of libpw85_legacy (private: never installed): the two
-// implementations of f and the two historical contact functions of seed
-// ch. 4 and ch. 7.3. Storage conventions are those of include/pw85/pw85.h.
-// Equation numbers refer to shared/seeds/pw85-1.0-documentation.txt,
-// "ch. N, eq. (k)".
+// implementations of f and the two historical contact functions of
+// docs/implementation.rst and docs/legacy-api.rst. Storage conventions
+// are those of include/pw85/pw85.h. Equation (C.N) is that of the docs page
+// of chapter C (docs/theory.rst: 3 theory, 4 implementation, 5
+// optimisation, 6 testing).
 #ifndef PW85_SRC_LEGACY_LEGACY_HPP
 #define PW85_SRC_LEGACY_LEGACY_HPP
 
@@ -16,7 +17,7 @@ using pw85::detail::dim;
 using pw85::detail::Status;
 using pw85::detail::sym;
 
-// The most Newton–Raphson steps contact_function1() takes (seed ch. 7.3).
+// The most Newton–Raphson steps contact_function1() takes (docs/legacy-api.rst).
 constexpr int nr_max_iter = 50;
 // contact_function1() stops when a Newton step moves λ by at most this much:
 // the step after it would be of order nr_step_tol², far below the resolution

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Determinant, adjugate quadratic form and the polynomial coefficients of
-// implementation #2 of f (seed ch. 4.2).
+// implementation #2 of f (docs/implementation.rst, "Implementation 2").
 #include "legacy.hpp"
 
 namespace pw85::legacy::detail {
@@ -45,9 +45,9 @@ void rT_adjQ_r_as_poly(double const r[dim], double const q1[sym],
   double const a_0 = xT_adjA_x(r, q1);
   double const a_1 = xT_adjA_x(r, q2);
   double const a_m1 = xT_adjA_x(r, q3);
-  a[0] = a_0;                       // seed ch. 4, eq. (12a)
-  a[1] = 0.5 * (a_1 - a_m1);        // seed ch. 4, eq. (12b)
-  a[2] = 0.5 * (a_1 + a_m1) - a_0;  // seed ch. 4, eq. (12c)
+  a[0] = a_0;                       // docs/implementation.rst, eq. (4.12a)
+  a[1] = 0.5 * (a_1 - a_m1);        // docs/implementation.rst, eq. (4.12b)
+  a[2] = 0.5 * (a_1 + a_m1) - a_0;  // docs/implementation.rst, eq. (4.12c)
 }
 
 }  // namespace pw85::legacy::detail

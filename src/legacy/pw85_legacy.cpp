@@ -47,7 +47,7 @@ void pw85_legacy__rT_adjQ_r_as_poly(double const r[PW85_DIM],
   legacy::rT_adjQ_r_as_poly(r, q1, q2, q3, a);
 }
 
-// The seed's spelling (ch. 7.3), kept so that code written from it links.
+// The original spelling (docs/legacy-api.rst), kept so that code written from it links.
 void pw85__rT_adjQ_r_as_poly(double const r[PW85_DIM],
                              double const q1[PW85_SYM],
                              double const q2[PW85_SYM],

@@ -66,7 +66,7 @@ double f_neg(double lambda, void *params) {
   return -lambda * (1. - lambda) * (p[0] * s[0] + p[1] * s[1] + p[2] * s[2]);
 }
 
-// out = {f, g, g′}, seed ch. 5, eqs. (4)–(5).
+// out = {f, g, g′}, docs/optimisation.rst, eqs. (5.4)–(5.5).
 void residual(double lambda, double const *p, double out[3]) {
   ++evaluations;
   double q[6], q12[6], l[6], s[3], u[3], v[3];

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* The accuracy comparison of seed ch. 4.3: histograms of the number of
+/* The accuracy comparison of docs/implementation.rst, "Accuracy": histograms of the number of
  * correct decimal digits, prec = floor(−log10(relative error)) in bins
  * 0..16 (an exact result goes to the top bin), of
  * - f over the whole dataset F of data/pw85_ref_data.h5, for

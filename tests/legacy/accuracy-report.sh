@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: BSD-3-Clause
-# Regenerates the accuracy comparison of seed ch. 4.3: the CSV histograms
+# Regenerates the accuracy comparison of docs/implementation.rst, "Accuracy": the CSV histograms
 # (accuracy-report) and their figures (plot_accuracy.py).
 # Usage: accuracy-report.sh REPORT-EXE DATA.h5 OUTDIR PYTHON PLOT-SCRIPT
 set -eu

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* The two legacy contact functions (seed ch. 7.3) against MU2 and LAMBDA of
+/* The two legacy contact functions (docs/legacy-api.rst) against MU2 and LAMBDA of
  * data/pw85_ref_data.h5 (correctly rounded references), over the whole
  * dataset: r12 = distances[m]·directions[k] (componentwise, in double),
  * q1 = spheroids[i], q2 = spheroids[j]. Each sweep prints its worst error
@@ -82,7 +82,7 @@ static void replay(gconstpointer user_data) {
   g_free(what_lambda);
 }
 
-/* Newton–Raphson on f′ from λ = ½ is not robust (seed ch. 5 and 7.3).
+/* Newton–Raphson on f′ from λ = ½ is not robust (docs/optimisation.rst and docs/legacy-api.rst).
  * Measured on the 419,904 cases: 246,816 failures (58.8%), all of one kind:
  * a step leaves [0, 1] and, further out, Q(λ) is no longer positive
  * definite (no iterate ever came back). Newton's iterates do not depend on
@@ -94,7 +94,7 @@ static Replay const replay1 = {
     "contact_function1", pw85_legacy_contact_function1, 1e-8, 3e-9, 246816};
 
 /* Bisection on the rounded c(λ), then f by the rational fraction: the
- * cancellation of eqs. (12a)–(12g) (seed ch. 4.3) leaves some results with
+ * cancellation of eqs. (12a)–(12g) (docs/implementation.rst, "Accuracy") leaves some results with
  * no correct digit. Measured: 736 failures (bisection ends on λ = 0 or 1:
  * the rounded c has no sign change inside (0, 1)), and among the 419,168
  * successes worst relative errors 0.979 (μ², record 374148) and 0.00375

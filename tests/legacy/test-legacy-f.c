@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* The two implementations of f of libpw85_legacy (seed ch. 4) against the
+/* The two implementations of f of libpw85_legacy (docs/implementation.rst) against the
  * dataset F of data/pw85_ref_data.h5 (correctly rounded references), and
  * the derivatives of implementation #1 against closed forms and finite
  * differences. Each sweep prints its worst error and where it occurred;
@@ -68,7 +68,7 @@ static void test_f1_ref_data(void) {
 }
 
 /* Implementation #2 (rational fraction): the coefficients of a and b come
- * from values at λ = 0, 1, −1, ½ (seed ch. 4, eqs. (12a)–(12g)) and cancel
+ * from values at λ = 0, 1, −1, ½ (docs/implementation.rst, eqs. (4.12a)–(4.12g)) and cancel
  * when the ellipsoids differ much. Measured worst relative error of the
  * finite values: 1.33e-8 (record 1060024). For 96 pairs (q1, q2) the
  * computed b(1) = b0 + b1 + b2 + b3 rounds to exactly 0, so that
@@ -93,7 +93,7 @@ static void coaxial_f(double lambda, double const r[3], double const p[3],
   long double const l = lambda;
   long double const n = l * (1.0L - l), n1 = 1.0L - 2.0L * l, n2 = -2.0L;
   long double f = 0.0L, f1 = 0.0L, f2 = 0.0L;
-  long double rs = 0.0L, su = 0.0L, uv = 0.0L; /* seed ch. 4, eqs. (4)–(9) */
+  long double rs = 0.0L, su = 0.0L, uv = 0.0L; /* docs/implementation.rst, eqs. (4.4)–(4.9) */
   for (int i = 0; i < 3; i++) {
     long double const d = (1.0L - l) * p[i] + l * q[i];
     long double const delta = (long double)q[i] - p[i];
@@ -114,7 +114,7 @@ static void coaxial_f(double lambda, double const r[3], double const p[3],
   out[2] = (double)f2;
 }
 
-/* The sizes of the terms of seed ch. 4, eqs. (6) and (9), from f, f′, f″
+/* The sizes of the terms of docs/implementation.rst, eqs. (4.6) and (9), from f, f′, f″
  * (rᵀs = f/N, sᵀu = ((1−2λ)rᵀs − f′)/N, uᵀv = (f″ + 2rᵀs +
  * 2(1−2λ)sᵀu)/(2N), N = λ(1−λ)): the natural scale of their rounding
  * errors, since both sums cancel (f′ vanishes at the maximiser). f is added

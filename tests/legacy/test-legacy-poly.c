@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* The determinant, the adjugate quadratic form and the polynomial
- * coefficients of implementation #2 of f (seed ch. 4.2, ch. 7.3), against
+ * coefficients of implementation #2 of f (docs/implementation.rst, "Implementation 2", ch. 7.3), against
  * direct evaluation: exact on small integer matrices, and within measured
  * tolerances on seeded random ones (references in long double, 64-bit
  * significand on x86-64). */

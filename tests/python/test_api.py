@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""pypw85, the new API (seed, chapter 8.1): every function, every error."""
+"""pypw85, the new API (docs/python-api.rst): every function, every error."""
 
 import math
 import os
@@ -24,7 +24,7 @@ def rel(actual, expected):
 
 
 def f_numpy(lambda_, r12, q1, q2):
-    """f(λ) by NumPy (seed ch. 3, eq. (11))."""
+    """f(λ) by NumPy (docs/theory.rst, eq. (3.11))."""
     q = (1 - lambda_) * full(q1) + lambda_ * full(q2)
     return lambda_ * (1 - lambda_) * r12 @ np.linalg.solve(q, r12)
 
@@ -73,7 +73,7 @@ def test_error_unknown_status():
     assert e.status == 1000 and "1000" in str(e)
 
 
-# --- the tutorial (seed ch. 2.1) ---------------------------------------------
+# --- the tutorial (docs/tutorial.rst) ---------------------------------------------
 
 def test_tutorial_spheroids(tutorial):
     assert tutorial.q1 == pytest.approx([1e2, 0, 0, 1e2, 0, 1e-2],

@@ -112,7 +112,7 @@ mpmath.mp.dps = 40
 
 def mp_mu2(r, q1, q2, lam0):
     """μ² = max f by mpmath: the root of f′(λ) = (1 − 2λ)·r·s −
-    λ(1−λ)·sᵀ(Q2 − Q1)s, s = Q(λ)⁻¹r (seed ch. 4, eq. (5)), from lam0."""
+    λ(1−λ)·sᵀ(Q2 − Q1)s, s = Q(λ)⁻¹r (docs/implementation.rst, eq. (4.5)), from lam0."""
     def full(q):
         return mpmath.matrix([[q[0], q[1], q[2]], [q[1], q[3], q[4]],
                               [q[2], q[4], q[5]]])

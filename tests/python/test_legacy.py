@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""pypw85.legacy (seed, chapter 8.2) over libpw85_legacy.
+"""pypw85.legacy (docs/python-api.rst) over libpw85_legacy.
 
 Skipped, with the reason, when libpw85_legacy is not built; a failure when
 meson says it is (PW85_EXPECT_LEGACY=1) but it does not load.

@@ -6,7 +6,7 @@ const test = require('node:test');
 const assert = require('node:assert/strict');
 const pw85 = require('..');
 
-// The tutorial's pair (seed chapter 2.2, tutorial/tutorial.c).
+// The tutorial's pair (docs/tutorial.rst, tutorial/tutorial.c).
 const q1 = pw85.spheroid(10, 0.1, [0, 0, 1]);
 const q2 = pw85.spheroid(0.5, 5, [1, 0, 0]);
 const r12 = [0.7, -0.7, 1.1];

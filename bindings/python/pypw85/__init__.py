@@ -204,7 +204,7 @@ _c_contact_derivatives = _lib.pw85_contact_derivatives
 
 
 # ---------------------------------------------------------------------------
-# The new API (seed, chapter 8.1).
+# The new API (docs/python-api.rst).
 
 def _cholesky_decomp(a, l=None):
     """Compute the Cholesky decomposition A = L·Lᵀ of a 3×3 matrix.
@@ -422,7 +422,7 @@ def f_neg(lambda_, r12, q1, q2):
 def _residual(lambda_, r12, q1, q2, out=None):
     """Return f(λ), g(λ) = μ2²(λ) − μ1²(λ) and g′(λ).
 
-    Internal (exposed for testing; g is the residual of seed chapter 5,
+    Internal (exposed for testing; g is the residual of docs/optimisation.rst,
     whose sign the Newton steps of `contact_function` follow); may change
     without notice.
 
@@ -470,7 +470,7 @@ def contact_function(r12, q1, q2, out=None, *, threads=1):
     """Return the contact function μ² of two ellipsoids and its maximiser λ.
 
     μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
-    (seed, chapter 3). μ is the common factor by which both ellipsoids must
+    (docs/theory.rst). μ is the common factor by which both ellipsoids must
     be scaled, their centres fixed, to be externally tangent: μ² < 1 means
     they overlap, μ² > 1 that they are disjoint.
 
@@ -805,7 +805,7 @@ def contact_geometry(r12, q1, q2, out=None, *, threads=1):
 
     One search (that of `contact_function`: the same μ², bit for bit), λ
     polished, then ``x − c1 = (1 − λ)·Q1·s`` and ``n = s/‖s‖`` with
-    s = Q(λ)⁻¹·r12 (seed, chapter 3, eqs. (8), (9a)). See the docs page
+    s = Q(λ)⁻¹·r12 (docs/theory.rst, eqs. (3.8), (3.9a)). See the docs page
     "Contact geometry, forces and torques".
 
     Parameters

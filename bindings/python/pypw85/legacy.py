@@ -3,7 +3,7 @@
 
 Earlier implementations of the function f and of the contact function,
 discarded for accuracy or robustness and kept for reference and for the
-comparisons of the documentation (seed, chapters 4 and 8.2). New code
+comparisons of the documentation (docs/implementation.rst and docs/python-api.rst). New code
 should call `pypw85.f` and `pypw85.contact_function`.
 
 Vectors, symmetric matrices, array-likes, preallocated outputs, exceptions
@@ -112,7 +112,7 @@ def _xT_adjA_x(x, a):
 def _detQ_as_poly(q1, q2, q3=None, q4=None, b=None):
     """Compute the coefficients of λ ↦ det[(1−λ)·Q1 + λ·Q2].
 
-    det[(1−λ)·Q1 + λ·Q2] = b0 + b1·λ + b2·λ² + b3·λ³ (seed, chapter 4.2,
+    det[(1−λ)·Q1 + λ·Q2] = b0 + b1·λ + b2·λ² + b3·λ³ (docs/implementation.rst, "Implementation 2",
     eqs. (12d)-(12g)). Internal (exposed for testing); may change without
     notice.
 
@@ -156,7 +156,7 @@ def _detQ_as_poly(q1, q2, q3=None, q4=None, b=None):
 def _rT_adjQ_r_as_poly(r, q1, q2, q3=None, a=None):
     """Compute the coefficients of λ ↦ rᵀ·adj[(1−λ)·Q1 + λ·Q2]·r.
 
-    rᵀ·adj[(1−λ)·Q1 + λ·Q2]·r = a0 + a1·λ + a2·λ² (seed, chapter 4.2,
+    rᵀ·adj[(1−λ)·Q1 + λ·Q2]·r = a0 + a1·λ + a2·λ² (docs/implementation.rst, "Implementation 2",
     eqs. (12a)-(12c)). Internal (exposed for testing); may change without
     notice.
 
@@ -220,7 +220,7 @@ def _f(where, c_function, size, lambda_, r12, q1, q2, out):
 def f1(lambda_, r12, q1, q2, out=None):
     """Return f(λ) = λ(1−λ)·r12ᵀ·Q⁻¹·r12, Q = (1−λ)·Q1 + λ·Q2, and f′, f″.
 
-    Implementation #1 (seed, chapter 4.1): a Cholesky factorisation of Q,
+    Implementation #1 (docs/implementation.rst, "Implementation 1"): a Cholesky factorisation of Q,
     plain double arithmetic (|r12|² and the entries of Q1, Q2 between about
     1e-300 and 1e300).
 
@@ -256,7 +256,7 @@ def f1(lambda_, r12, q1, q2, out=None):
 def f2(lambda_, r12, q1, q2, out=None):
     """Alternative implementation of `f1`: f(λ) as a rational fraction.
 
-    Implementation #2 (seed, chapter 4.2): f(λ) = λ(1−λ)·a(λ)/b(λ), with
+    Implementation #2 (docs/implementation.rst, "Implementation 2"): f(λ) = λ(1−λ)·a(λ)/b(λ), with
     a(λ) = r12ᵀ·adj[Q]·r12 and b(λ) = det Q. Less accurate than `f1`. See
     `f1` for lambda_, r12, q1, q2 and the exceptions.
 
@@ -309,7 +309,7 @@ def contact_function1(r12, q1, q2, out=None):
 def contact_function2(r12, q1, q2, out=None):
     """Return μ² and λ by bisection on the numerator of f′ (a polynomial).
 
-    f′(λ) = c(λ)/b(λ)², c of degree 6 (seed, chapter 4.2, eqs. (13)-(15));
+    f′(λ) = c(λ)/b(λ)², c of degree 6 (docs/implementation.rst, "Implementation 2", eqs. (4.13)-(4.15));
     μ² = f(λ) as a rational fraction. Always terminates, but inaccurate for
     very flat or slender ellipsoids: prefer `pypw85.contact_function`.
     Arguments, result and exceptions as `pypw85.contact_function`.
