@@ -91,11 +91,12 @@ from __future__ import annotations
 import ctypes
 import math
 import sys
-from typing import TYPE_CHECKING, Optional, Tuple, Union
+import typing
 
 import numpy as np
 
-if TYPE_CHECKING:  # numpy.typing is not imported at run time
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Optional, Tuple, Union
     from numpy.typing import ArrayLike, NDArray
     _F64 = NDArray[np.float64]
 

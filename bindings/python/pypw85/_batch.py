@@ -19,9 +19,12 @@ statuses are asked for only when that call reports a failure.
 from __future__ import annotations
 
 import ctypes
-from typing import Optional
+import typing
 
 import numpy as np
+
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Optional
 
 from ._constants import (DERIV_SIZE, DIM, EINVAL, GEOM_SIZE, SUCCESS, SYM,
                          UNIT_TOL)

@@ -29,12 +29,14 @@ from __future__ import annotations
 
 import ctypes
 import math
-from typing import TYPE_CHECKING, Iterator, Optional, Tuple, Union
+import typing
 
 import numpy as np
 
-if TYPE_CHECKING:  # numpy.typing is not imported at run time
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Iterator, Optional, Tuple, Union
     from numpy.typing import ArrayLike, NDArray
+    IdLike = Union[int, np.integer]  # an id: int or a NumPy integer
 
 from ._batch import threads_count as _threads_count
 from ._constants import EDOM, EINVAL, ENOTPOSDEF
@@ -88,7 +90,6 @@ MAX_ID = 0xFFFFFFFE
 _SIDE_MARGIN = 1.0 + 2.0**-20
 _CENTRE_REACH = 2.0**29
 
-IdLike = Union[int, np.integer]  # an id: int or a NumPy integer
 
 
 def _array(name, x, dtype, shape):

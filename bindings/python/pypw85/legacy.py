@@ -19,11 +19,12 @@ none works (for example when pw85 was configured with ``-Dlegacy=false``).
 from __future__ import annotations
 
 import math as _math
-from typing import TYPE_CHECKING, Optional
+import typing
 
 import numpy as _np
 
-if TYPE_CHECKING:  # numpy.typing is not imported at run time
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Optional
     from numpy.typing import ArrayLike, NDArray
 
 from ._constants import (DIM as _DIM, ENOTPOSDEF as _ENOTPOSDEF,
