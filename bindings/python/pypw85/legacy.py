@@ -34,12 +34,12 @@ from ._convert import (
     check_finite as _check_finite, output as _output, real as _real,
     unaliased as _unaliased, vector as _vector,
 )
-from ._errors import Error
+from ._errors import Error as _Error
 from ._loader import load_library as _load_library
 from ._symbols import LIBPW85_LEGACY as _LIBPW85_LEGACY, declare as _declare
 
 __all__ = [
-    "ENOCONV", "Error", "contact_function1", "contact_function2", "f1", "f2",
+    "ENOCONV", "contact_function1", "contact_function2", "f1", "f2",
 ]
 
 #: Status of `contact_function1` when Newton's method does not converge
@@ -222,7 +222,7 @@ def _f(where, c_function, size, lambda_, r12, q1, q2, out):
                        q2.ctypes.data, out_p)
     if _math.isnan(value):
         _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
-        raise Error(_ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
+        raise _Error(_ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
                     "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
     return value
 
@@ -294,7 +294,7 @@ def _contact(where, c_function, r12, q1, q2, out):
     status = c_function(r12.ctypes.data, q1.ctypes.data, q2.ctypes.data,
                         out.ctypes.data)
     if status != _SUCCESS:
-        raise Error(status, where,
+        raise _Error(status, where,
                     "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
     return out
 
