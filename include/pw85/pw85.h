@@ -645,7 +645,8 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
  * @param[in] threads the count requested: 0 for OpenMP's default, k ≥ 1.
  * @param[in] n the number of pairs.
  * @return the count, ≥ 1: min(k, n/256) and at least 1 (k = OpenMP's
- *         default for threads = 0); 1 when libpw85 was built without
+ *         default for threads = 0); 1 for n ≥ 2⁵⁶ (a batch that large
+ *         runs in the calling thread) and when libpw85 was built without
  *         OpenMP; 0 if threads < 0 (the batch calls reject it).
  * @since 2.2.0
  */
