@@ -5,12 +5,14 @@
         Run Doxygen on DOXYFILE (warnings fail it), after removing XML_DIR
         so that nothing stale survives; then touch STAMP.
     build_step.py sphinx SOURCE_DIR HTML_DIR DOCTREE_DIR
-        Run sphinx-build (HTML, fresh environment, warnings as errors, every
+        Check the versions named in prose (check_versions.py), then run
+        sphinx-build (HTML, fresh environment, warnings as errors, every
         warning listed) with the interpreter running this script; then touch
         HTML_DIR, the output that ninja tracks.
 """
 
 import os
+import pathlib
 import shutil
 import subprocess
 import sys
@@ -40,6 +42,13 @@ def doxygen(doxygen_exe, doxyfile, xml_dir, stamp):
 
 def sphinx(source_dir, html_dir, doctree_dir):
     start = time.monotonic()
+    # The version named in prose is the project's (check_versions.py).
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import check_versions
+    stale = check_versions.check(os.environ["PW85_VERSION"],
+                                 pathlib.Path(source_dir).resolve().parent)
+    if stale:
+        sys.exit("\n".join(stale + ["stale versions in the prose (above)"]))
     # -E: a fresh environment every time. Sphinx would otherwise reread
     # only the pages it knows to have changed, and miss changes of conf.py's
     # code, of the environment (PW85_LIBRARY, ...) or of what pypw85 can

@@ -7,6 +7,7 @@
 
 #include "checks.hpp"
 #include "dd.hpp"
+#include "spheroid.hpp"
 
 namespace pw85::detail {
 
@@ -91,6 +92,66 @@ Status ellipsoid_quaternion(double const a[dim], double const p[4],
   r[5] = dd_mul(c, dd_sub(pp[y][z], pp[w][x]));  // R12
   r[7] = dd_mul(c, dd_add(pp[y][z], pp[w][x]));  // R21
   form(r, a2, q);
+  return Status::success;
+}
+
+Status spheroid_checked(double a, double c, double const n[dim],
+                        double q[sym]) noexcept {
+  if (!(std::isfinite(a) && std::isfinite(c) && all_finite<dim>(n)))
+    return Status::not_finite;
+  if (!(a > 0.0 && c > 0.0)) return Status::invalid_argument;
+  // ‖n‖² in double-double (exact products), as for a quaternion.
+  dd const nn = dd_add(dd_add(two_prod(n[0], n[0]), two_prod(n[1], n[1])),
+                       two_prod(n[2], n[2]));
+  if (!(std::fabs(nn.hi - 1.0) <= unit_tol)) return Status::invalid_argument;
+  double const a2 = a * a, c2 = c * c;
+  if (!(a2 >= DBL_MIN && a2 <= DBL_MAX && c2 >= DBL_MIN && c2 <= DBL_MAX))
+    return Status::out_of_range;
+  spheroid(a, c, n, q);
+  return Status::success;
+}
+
+Status principal_axes_quaternion(double const q[sym], double a[dim],
+                                 double p[4]) noexcept {
+  double r[dim * dim], axes[dim];
+  Status const status = principal_axes(q, axes, r);
+  if (status != Status::success) return status;
+  // The quaternion of a rotation matrix (Shepperd, J. Guidance and Control
+  // 1(3), 223-224, 1978): of 4w² = 1 + tr R, 4x² = 1 + R00 − R11 − R22,
+  // 4y² = 1 − R00 + R11 − R22, 4z² = 1 − R00 − R11 + R22, the largest
+  // gives its component by a square root, far from cancellation (≥ 1/4);
+  // the others come from the off-diagonal sums and differences, with
+  // R(p) as in ellipsoid_quaternion(): R21 − R12 = 4wx, R02 − R20 = 4wy,
+  // R10 − R01 = 4wz, R01 + R10 = 4xy, R02 + R20 = 4xz, R12 + R21 = 4yz.
+  auto R = [&r](int i, int j) { return r[dim * i + j]; };
+  double const four[4] = {1.0 + R(0, 0) + R(1, 1) + R(2, 2),
+                          1.0 + R(0, 0) - R(1, 1) - R(2, 2),
+                          1.0 - R(0, 0) + R(1, 1) - R(2, 2),
+                          1.0 - R(0, 0) - R(1, 1) + R(2, 2)};
+  int big = 0;
+  for (int k = 1; k < 4; ++k)
+    if (four[k] > four[big]) big = k;
+  double const s = std::sqrt(four[big]);  // 2·|p_big|
+  double const h = 0.5 / s;               // 1/(4·|p_big|)
+  double const wx = R(2, 1) - R(1, 2), wy = R(0, 2) - R(2, 0),
+               wz = R(1, 0) - R(0, 1), xy = R(0, 1) + R(1, 0),
+               xz = R(0, 2) + R(2, 0), yz = R(1, 2) + R(2, 1);
+  double t[4];
+  switch (big) {
+    case 0: t[0] = 0.5 * s; t[1] = wx * h; t[2] = wy * h; t[3] = wz * h; break;
+    case 1: t[1] = 0.5 * s; t[0] = wx * h; t[2] = xy * h; t[3] = xz * h; break;
+    case 2: t[2] = 0.5 * s; t[0] = wy * h; t[1] = xy * h; t[3] = yz * h; break;
+    default: t[3] = 0.5 * s; t[0] = wz * h; t[1] = xz * h; t[2] = yz * h; break;
+  }
+  // Unit norm to rounding, and the sign of the pair ±p fixed: w > 0, or
+  // w = 0 and the first non-zero component positive.
+  double const norm = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2] +
+                                t[3] * t[3]);
+  int first = 0;
+  while (first < 3 && t[first] == 0.0) ++first;
+  double const sign = t[first] < 0.0 ? -1.0 : 1.0;
+  for (int k = 0; k < dim; ++k) a[k] = axes[k];
+  for (int k = 0; k < 4; ++k) p[k] = sign * t[k] / norm + 0.0;
   return Status::success;
 }
 

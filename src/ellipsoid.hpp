@@ -30,6 +30,19 @@ Status ellipsoid_quaternion(double const a[dim], double const p[4],
 Status principal_axes(double const q[sym], double a[dim],
                       double rot[dim * dim]) noexcept;
 
+// pw85_principal_axes_quaternion(): principal_axes(), then the unit
+// quaternion p = (w, x, y, z) of R (w ≥ 0). Statuses as principal_axes();
+// a and p are written on success only.
+Status principal_axes_quaternion(double const q[sym], double a[dim],
+                                 double p[4]) noexcept;
+
+// pw85_spheroid_checked(): the preconditions of pw85_spheroid() checked
+// (finite, a > 0, c > 0, |‖n‖² − 1| ≤ unit_tol, a² and c² normal), then
+// spheroid(). Returns Status::success, not_finite, invalid_argument or
+// out_of_range; q is written on success only.
+Status spheroid_checked(double a, double c, double const n[dim],
+                        double q[sym]) noexcept;
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_ELLIPSOID_HPP

@@ -214,6 +214,18 @@ int pw85_principal_axes(double const q[PW85_SYM], double a[PW85_DIM],
   return to_code(core::principal_axes(q, a, rot));
 }
 
+int pw85_principal_axes_quaternion(double const q[PW85_SYM],
+                                   double a[PW85_DIM], double p[4]) noexcept {
+  if (q == nullptr || a == nullptr || p == nullptr) return PW85_EFAULT;
+  return to_code(core::principal_axes_quaternion(q, a, p));
+}
+
+int pw85_spheroid_checked(double a, double c, double const n[PW85_DIM],
+                          double q[PW85_SYM]) noexcept {
+  if (n == nullptr || q == nullptr) return PW85_EFAULT;
+  return to_code(core::spheroid_checked(a, c, n, q));
+}
+
 int pw85_contact_geometry(double const r12[PW85_DIM],
                           double const q1[PW85_SYM], double const q2[PW85_SYM],
                           double out[PW85_GEOM_SIZE]) noexcept {
@@ -338,6 +350,19 @@ int pw85_principal_axes_batch(size_t n, double const *q, size_t q_stride,
         return to_code(core::principal_axes(q + i * q_stride,
                                             a + PW85_DIM * i,
                                             rot + PW85_DIM * PW85_DIM * i));
+      });
+}
+
+int pw85_principal_axes_quaternion_batch(size_t n, double const *q,
+                                         size_t q_stride, double *a,
+                                         double *p, int *status,
+                                         int threads) noexcept {
+  return run_items(
+      n, q != nullptr && a != nullptr && p != nullptr,
+      valid_stride(q_stride, PW85_SYM), status, threads,
+      [=](std::size_t i) noexcept {
+        return to_code(core::principal_axes_quaternion(
+            q + i * q_stride, a + PW85_DIM * i, p + 4 * i));
       });
 }
 

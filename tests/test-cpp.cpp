@@ -42,9 +42,31 @@ void test_wrappers() {
 
   double const n[pw85::dim] = {0.6, 0.8, 0.};
   double q[pw85::sym], q_c[pw85::sym];
-  pw85::spheroid(2., 3., n, q);
+  g_assert_cmpint(pw85::spheroid(2., 3., n, q), ==, PW85_SUCCESS);
   pw85_spheroid(2., 3., n, q_c);
   g_assert_cmpmem(q, sizeof q, q_c, sizeof q_c);
+  // Since 2.3.0: the preconditions of pw85_spheroid() checked; on error q
+  // is all NaN (never the singular or mirrored form pw85_spheroid() gives).
+  double const n_long[pw85::dim] = {0.6, 0.8, 0.1};
+  struct {
+    double a, c;
+    double const *n;
+    int status;
+  } const bad[] = {{0., 3., n, PW85_EINVAL},      {-2., 3., n, PW85_EINVAL},
+                   {2., 0., n, PW85_EINVAL},      {2., 3., n_long, PW85_EINVAL},
+                   {NAN, 3., n, PW85_EDOM},       {2., 3., nullptr, PW85_EFAULT},
+                   {1e200, 3., n, PW85_ERANGE}};
+  for (auto const &b : bad) {
+    g_assert_cmpint(pw85::spheroid(b.a, b.c, b.n, q), ==, b.status);
+    for (double x : q) g_assert_true(std::isnan(x));
+  }
+  double pq[4], axes_q[pw85::dim], axes_q_c[pw85::dim], p_c[4];
+  g_assert_cmpint(pw85::principal_axes_quaternion(q_c, axes_q, pq), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(pw85_principal_axes_quaternion(q_c, axes_q_c, p_c), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpmem(axes_q, sizeof axes_q, axes_q_c, sizeof axes_q_c);
+  g_assert_cmpmem(pq, sizeof pq, p_c, sizeof p_c);
 
   double params[15];
   std::memcpy(params, r12, sizeof r12);

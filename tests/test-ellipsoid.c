@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* pw85_ellipsoid_rotation(), pw85_ellipsoid_quaternion() and
- * pw85_principal_axes(): the input contract, hand-derived cases, the error
+/* pw85_ellipsoid_rotation(), pw85_ellipsoid_quaternion(),
+ * pw85_principal_axes(), pw85_principal_axes_quaternion() and
+ * pw85_spheroid_checked(): the input contract, hand-derived cases, the error
  * bound of pw85.h against a double-double reference computed here
  * (aspect ratios to 1e8), and the properties of the principal axes. The
  * comparison with references at 60 digits is test-geometry-refs.c. */
@@ -317,6 +318,163 @@ static void test_axes_properties(void) {
   g_rand_free(rng);
 }
 
+/* pw85_principal_axes_quaternion(): the contract of pw85_principal_axes(),
+ * and hand-derived cases. diag(9, 4, 1) is the identity, p = (1, 0, 0, 0)
+ * exactly; diag(4, 9, 1) puts a[0] = 3 along y, a[1] = 2 along x, so R has
+ * columns e_y, e_x and −e_z (det +1): the half-turn about (1, 1, 0)/√2,
+ * p = (0, √½, √½, 0) (x > 0: the sign rule for w = 0). */
+static void test_axes_quaternion_contract(void) {
+  double const q[6] = {1.0, 0.1, 0.0, 2.0, 0.0, 0.5};
+  double const indefinite[6] = {1.0, 2.0, 0.0, 1.0, 0.0, 1.0};
+  double a[3], p[4];
+  g_assert_cmpint(pw85_principal_axes_quaternion(NULL, a, p), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_principal_axes_quaternion(q, NULL, p), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_principal_axes_quaternion(q, a, NULL), ==, PW85_EFAULT);
+  for (int k = 0; k < 6; k++) {
+    double bad[6];
+    memcpy(bad, q, sizeof bad);
+    bad[k] = k % 2 ? NAN : INFINITY;
+    fill(a, 3), fill(p, 4);
+    g_assert_cmpint(pw85_principal_axes_quaternion(bad, a, p), ==, PW85_EDOM);
+    g_assert_true(untouched(a, 3) && untouched(p, 4));
+  }
+  fill(a, 3), fill(p, 4);
+  g_assert_cmpint(pw85_principal_axes_quaternion(indefinite, a, p), ==,
+                  PW85_ENOTPOSDEF);
+  g_assert_true(untouched(a, 3) && untouched(p, 4));
+
+  double const d1[6] = {9.0, 0.0, 0.0, 4.0, 0.0, 1.0};
+  g_assert_cmpint(pw85_principal_axes_quaternion(d1, a, p), ==, PW85_SUCCESS);
+  double const a1[3] = {3.0, 2.0, 1.0}, p1[4] = {1.0, 0.0, 0.0, 0.0};
+  g_assert_cmpmem(a, sizeof a, a1, sizeof a1);
+  g_assert_cmpmem(p, sizeof p, p1, sizeof p1);
+  double const d2[6] = {4.0, 0.0, 0.0, 9.0, 0.0, 1.0};
+  g_assert_cmpint(pw85_principal_axes_quaternion(d2, a, p), ==, PW85_SUCCESS);
+  g_assert_cmpmem(a, sizeof a, a1, sizeof a1);
+  g_assert_cmpfloat(p[0], ==, 0.0);
+  g_assert_cmpfloat(fabs(p[1] - (G_SQRT2 / 2.0)), <=, 2.0 * U);
+  g_assert_cmpfloat(fabs(p[2] - (G_SQRT2 / 2.0)), <=, 2.0 * U);
+  g_assert_cmpfloat(p[3], ==, 0.0);
+}
+
+/* On random ellipsoids (aspect ratios to 1e8): the semi-axes are those of
+ * pw85_principal_axes(), bit for bit; w ≥ 0; ‖p‖² within 4u of 1
+ * (measured; held to 8u); R(p), computed here in double-double, within
+ * 11u of the rotation of pw85_principal_axes() (measured on these 20000
+ * cases, GSL's R being itself orthonormal only to 18u; held to 16u); and
+ * pw85_ellipsoid_quaternion(a, p) rebuilds Q within 6.6u·‖Q‖ (measured;
+ * held to 16u, as the residual of test_axes_properties). The
+ * batch gives every item's result bit for bit, also with stride 0. */
+static void test_axes_quaternion_properties(void) {
+  GRand *rng = g_rand_new_with_seed(11);
+  Worst unit = worst_init("|p.p - 1| / u", 8.0);
+  Worst match = worst_init("|R(p) - R| / u", 16.0);
+  Worst trip = worst_init("|rebuilt q - q| / (u |Q|)", 16.0);
+  enum { N = 20000 };
+  static double qs[N][6], as[N][3], ps[N][4];
+  for (int k = 0; k < N; k++) {
+    double a0[3], p0[4], rot0[9], q[6], a[3], p[4], ar[3], rot[9], back[6];
+    random_case(rng, k % 2 ? 1e8 : 10.0, a0, p0, rot0);
+    g_assert_cmpint(pw85_ellipsoid_quaternion(a0, p0, q), ==, PW85_SUCCESS);
+    memcpy(qs[k], q, sizeof q);
+    g_assert_cmpint(pw85_principal_axes_quaternion(q, a, p), ==, PW85_SUCCESS);
+    memcpy(as[k], a, sizeof a), memcpy(ps[k], p, sizeof p);
+    g_assert_cmpint(pw85_principal_axes(q, ar, rot), ==, PW85_SUCCESS);
+    g_assert_cmpmem(a, sizeof a, ar, sizeof ar);
+    g_assert_cmpfloat(p[0], >=, 0.0);
+    double const nn = p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3];
+    worst_check(&unit, (size_t)k, nn, 1.0, fabs(nn - 1.0) / U);
+    /* R(p) = I + 2(w[u]x + [u]x^2) for unit p, in double-double. */
+    DD const w = dd(p[0]), x = dd(p[1]), y = dd(p[2]), z = dd(p[3]);
+    DD const two = dd(2.0), one = dd(1.0);
+    DD r[9];
+    r[0] = dd_sub(one, dd_mul(two, dd_add(dd_mul(y, y), dd_mul(z, z))));
+    r[4] = dd_sub(one, dd_mul(two, dd_add(dd_mul(x, x), dd_mul(z, z))));
+    r[8] = dd_sub(one, dd_mul(two, dd_add(dd_mul(x, x), dd_mul(y, y))));
+    r[1] = dd_mul(two, dd_sub(dd_mul(x, y), dd_mul(w, z)));
+    r[3] = dd_mul(two, dd_add(dd_mul(x, y), dd_mul(w, z)));
+    r[2] = dd_mul(two, dd_add(dd_mul(x, z), dd_mul(w, y)));
+    r[6] = dd_mul(two, dd_sub(dd_mul(x, z), dd_mul(w, y)));
+    r[5] = dd_mul(two, dd_sub(dd_mul(y, z), dd_mul(w, x)));
+    r[7] = dd_mul(two, dd_add(dd_mul(y, z), dd_mul(w, x)));
+    double e = 0.0;
+    for (int m = 0; m < 9; m++)
+      e = fmax(e, fabs(dd_to_double(dd_sub(r[m], dd(rot[m])))));
+    worst_check(&match, (size_t)k, e, 0.0, e / U);
+    g_assert_cmpint(pw85_ellipsoid_quaternion(a, p, back), ==, PW85_SUCCESS);
+    double t = 0.0;
+    for (int m = 0; m < 6; m++) t = fmax(t, fabs(back[m] - q[m]));
+    worst_check(&trip, (size_t)k, t, 0.0, t / (U * a[0] * a[0]));
+  }
+  worst_report(&unit);
+  worst_report(&match);
+  worst_report(&trip);
+  g_rand_free(rng);
+
+  static double ab[N][3], pb[N][4];
+  static int st[N];
+  g_assert_cmpint(pw85_principal_axes_quaternion_batch(
+                      N, &qs[0][0], 6, &ab[0][0], &pb[0][0], st, 2),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(ab, sizeof ab, as, sizeof as);
+  g_assert_cmpmem(pb, sizeof pb, ps, sizeof ps);
+  g_assert_cmpint(pw85_principal_axes_quaternion_batch(
+                      3, qs[5], 0, &ab[0][0], &pb[0][0], st, 1),
+                  ==, PW85_SUCCESS);
+  for (int i = 0; i < 3; i++) {
+    g_assert_cmpmem(ab[i], sizeof ab[i], as[5], sizeof as[5]);
+    g_assert_cmpmem(pb[i], sizeof pb[i], ps[5], sizeof ps[5]);
+  }
+  g_assert_cmpint(pw85_principal_axes_quaternion_batch(
+                      3, qs[5], 2, &ab[0][0], &pb[0][0], st, 1),
+                  ==, PW85_EINVAL);
+}
+
+/* pw85_spheroid_checked(): each precondition of pw85_spheroid() refused
+ * with its status and q untouched; the tolerance on ‖n‖² as for a
+ * quaternion (0.8·tol passes, 1.5·tol fails); otherwise the Q of
+ * pw85_spheroid(), bit for bit. */
+static void test_spheroid_checked(void) {
+  double const n[3] = {0.0, 0.6, 0.8};
+  double q[6], ref[6];
+  g_assert_cmpint(pw85_spheroid_checked(1.0, 2.0, NULL, q), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_spheroid_checked(1.0, 2.0, n, NULL), ==, PW85_EFAULT);
+  double const bad[][2] = {{NAN, 1.0}, {1.0, INFINITY}, {0.0, 1.0},
+                           {1.0, 0.0}, {-1.0, 2.0}, {1.0, -0.0},
+                           {1e155, 1.0}, {1.0, 1e-160}};
+  int const expected[] = {PW85_EDOM, PW85_EDOM, PW85_EINVAL, PW85_EINVAL,
+                          PW85_EINVAL, PW85_EINVAL, PW85_ERANGE, PW85_ERANGE};
+  for (size_t k = 0; k < G_N_ELEMENTS(expected); k++) {
+    fill(q, 6);
+    g_assert_cmpint(pw85_spheroid_checked(bad[k][0], bad[k][1], n, q), ==,
+                    expected[k]);
+    g_assert_true(untouched(q, 6));
+  }
+  double const nan_axis[3] = {0.0, NAN, 1.0}, zero_axis[3] = {0.0, 0.0, 0.0};
+  fill(q, 6);
+  g_assert_cmpint(pw85_spheroid_checked(1.0, 2.0, nan_axis, q), ==, PW85_EDOM);
+  g_assert_cmpint(pw85_spheroid_checked(1.0, 2.0, zero_axis, q), ==,
+                  PW85_EINVAL);
+  g_assert_true(untouched(q, 6));
+  double const factors[4] = {0.8, -0.8, 1.5, -1.5};
+  for (int k = 0; k < 4; k++) {
+    double const f = sqrt(1.0 + factors[k] * PW85_UNIT_TOL);
+    double const nk[3] = {n[0] * f, n[1] * f, n[2] * f};
+    fill(q, 6);
+    g_assert_cmpint(pw85_spheroid_checked(1.0, 2.0, nk, q), ==,
+                    k < 2 ? PW85_SUCCESS : PW85_EINVAL);
+    if (k < 2) {
+      pw85_spheroid(1.0, 2.0, nk, ref);
+      g_assert_cmpmem(q, sizeof q, ref, sizeof ref);
+    } else {
+      g_assert_true(untouched(q, 6));
+    }
+  }
+  g_assert_cmpint(pw85_spheroid_checked(10.0, 0.1, n, q), ==, PW85_SUCCESS);
+  pw85_spheroid(10.0, 0.1, n, ref);
+  g_assert_cmpmem(q, sizeof q, ref, sizeof ref);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -329,5 +487,10 @@ int main(int argc, char **argv) {
   g_test_add_func("/principal-axes/contract", test_axes_contract);
   g_test_add_func("/principal-axes/diagonal", test_axes_diagonal);
   g_test_add_func("/principal-axes/properties", test_axes_properties);
+  g_test_add_func("/principal-axes-quaternion/contract",
+                  test_axes_quaternion_contract);
+  g_test_add_func("/principal-axes-quaternion/properties",
+                  test_axes_quaternion_properties);
+  g_test_add_func("/spheroid-checked/contract", test_spheroid_checked);
   return g_test_run();
 }

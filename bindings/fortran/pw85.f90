@@ -52,7 +52,9 @@ module pw85
             pw85_contact_function_batch, pw85_overlap_batch, &
             pw85_contact_geometry_batch, pw85_contact_derivatives_batch, &
             pw85_spheroid_batch, pw85_ellipsoid_rotation_batch, &
-            pw85_ellipsoid_quaternion_batch, pw85_principal_axes_batch
+            pw85_ellipsoid_quaternion_batch, pw85_principal_axes_batch, &
+            pw85_spheroid_checked, pw85_principal_axes_quaternion, &
+            pw85_principal_axes_quaternion_batch
   public :: pw85_contact, pw85_message, pw85_library_version
 
   interface
@@ -88,6 +90,17 @@ module pw85
       real(c_double), intent(in) :: n(PW85_DIM)
       real(c_double), intent(out) :: q(PW85_SYM)
     end subroutine
+
+    !> pw85_spheroid with its preconditions checked (a > 0, c > 0,
+    !> |‖n‖² − 1| ≤ PW85_UNIT_TOL): PW85_SUCCESS, PW85_EDOM, PW85_EINVAL or
+    !> PW85_ERANGE; q written on success only. Prefer it to pw85_spheroid.
+    integer(c_int) function pw85_spheroid_checked(a, c, n, q) &
+        bind(C, name='pw85_spheroid_checked')
+      import :: c_double, c_int, PW85_DIM, PW85_SYM
+      real(c_double), value :: a, c
+      real(c_double), intent(in) :: n(PW85_DIM)
+      real(c_double), intent(inout) :: q(PW85_SYM)
+    end function
 
     !> −f(λ); params = r12(3), q1(6), q2(6).
     real(c_double) function pw85_f_neg(lambda, params) bind(C, name='pw85_f_neg')
@@ -223,6 +236,27 @@ module pw85
       integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
       real(c_double), intent(in) :: r12(*), q1(*), q2(*)
       real(c_double), intent(inout) :: geometry(*), d(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> Semi-axes (decreasing) and unit quaternion p = (w, x, y, z), scalar
+    !> first (OVITO and SciPy write (x, y, z, w)), of a form.
+    integer(c_int) function pw85_principal_axes_quaternion(q, a, p) &
+        bind(C, name='pw85_principal_axes_quaternion')
+      import :: c_double, c_int, PW85_DIM, PW85_SYM
+      real(c_double), intent(in) :: q(PW85_SYM)
+      real(c_double), intent(inout) :: a(PW85_DIM), p(4)
+    end function
+
+    !> pw85_principal_axes_quaternion for n forms: a(PW85_DIM, n), p(4, n).
+    integer(c_int) function pw85_principal_axes_quaternion_batch(n, q, &
+        q_stride, a, p, status, threads) &
+        bind(C, name='pw85_principal_axes_quaternion_batch')
+      import :: c_double, c_int, c_size_t, PW85_SYM
+      integer(c_size_t), value :: n, q_stride
+      real(c_double), intent(in) :: q(*)
+      real(c_double), intent(inout) :: a(*), p(*)
       integer(c_int), intent(inout) :: status(*)
       integer(c_int), value :: threads
     end function

@@ -13,7 +13,7 @@ program test_pw85
   real(c_double) :: n(PW85_DIM), q1(PW85_SYM), q2(PW85_SYM), r12(PW85_DIM)
   real(c_double) :: out(2), mu2, lambda, l(PW85_SYM), x(PW85_DIM)
   real(c_double) :: params(PW85_DIM + 2 * PW85_SYM), res(3), strided(2 * PW85_DIM)
-  real(c_double) :: bad(PW85_SYM)
+  real(c_double) :: bad(PW85_SYM), axes(PW85_DIM), p(4)
   integer(c_int) :: status, overlap
   integer :: failures = 0
   character(len=32) :: expected_version
@@ -89,6 +89,34 @@ program test_pw85
 
   call check('version: ' // pw85_library_version(), &
              pw85_library_version() == trim(expected_version))
+
+  ! Since 2.3.0: the spheroid's preconditions checked (issue 30), and a
+  ! form back to semi-axes and a quaternion. Hand-derived: diag(4, 9, 1)
+  ! has semi-axes 3, 2, 1 along y, x, −z: the half-turn about
+  ! (1, 1, 0)/√2, p = (0, √½, √½, 0).
+  ! (Each status is assigned first: Fortran may evaluate the operands of
+  ! .and. in any order.)
+  n = [zero, zero, one]
+  q1 = -7
+  status = pw85_spheroid_checked(zero, 2._c_double, n, q1)
+  call check('spheroid_checked: a = 0 refused, q untouched', &
+             status == PW85_EINVAL .and. all(q1 == -7))
+  status = pw85_spheroid_checked(-one, 2._c_double, n, q1)
+  call check('spheroid_checked: a < 0 refused', status == PW85_EINVAL)
+  status = pw85_spheroid_checked(one, 2._c_double, [one, one, zero], q1)
+  call check('spheroid_checked: non-unit axis refused', status == PW85_EINVAL)
+  status = pw85_spheroid_checked(2._c_double, 3._c_double, n, q1)
+  call check('spheroid_checked: Q = a²I + (c² − a²)nnᵀ', &
+             status == PW85_SUCCESS .and. all(q1 == [4._c_double, zero, &
+             zero, 4._c_double, zero, 9._c_double]))
+  status = pw85_principal_axes_quaternion([4._c_double, zero, zero, &
+                                           9._c_double, zero, one], axes, p)
+  call check('principal_axes_quaternion: semi-axes and p', &
+             status == PW85_SUCCESS &
+             .and. all(axes == [3._c_double, 2._c_double, one]) &
+             .and. p(1) == zero .and. p(4) == zero &
+             .and. abs(p(2) - sqrt(0.5_c_double)) <= epsilon(one) &
+             .and. abs(p(3) - sqrt(0.5_c_double)) <= epsilon(one))
 
   if (failures > 0) then
     write(*, '(i0, a)') failures, ' check(s) failed'

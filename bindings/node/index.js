@@ -4,22 +4,39 @@
  * pw85 for Node.js: the contact function of Perram and Wertheim for two
  * ellipsoids, from libpw85.so.2 through koffi (a foreign function
  * interface whose native part comes with its npm package: nothing to
- * compile).
+ * compile). TypeScript declarations: index.d.ts.
  *
  * Vectors are arrays (or typed arrays) of 3 numbers; a symmetric matrix Q
  * is an array of 6, its upper triangle row by row:
  * [Q00, Q01, Q02, Q11, Q12, Q22]. An ellipsoid of centre c is
  * {m : (m − c)ᵀ Q⁻¹ (m − c) ≤ 1}. A status other than PW85_SUCCESS is
- * thrown as a Pw85Error carrying pw85's message; an array of the wrong
- * length is a RangeError, thrown before libpw85 is called.
+ * thrown as a Pw85Error carrying pw85's message and what was wrong; an
+ * array of the wrong length is a RangeError and an argument of the wrong
+ * type a TypeError, thrown before libpw85 is called.
  *
- * The library: the environment variable PW85_LIBRARY (a path), or else
- * libpw85.so.2 wherever the dynamic loader finds it.
+ * Batches take Float64Arrays of n records laid end to end (3·n numbers
+ * for vectors, 6·n for forms), or one record for every item (stride 0: no
+ * copy), and return typed arrays; one call into the library for all.
+ *
+ * The library: the environment variable PW85_LIBRARY (a full path), or
+ * else libpw85.so.2 wherever the dynamic loader finds it.
  */
 const koffi = require('koffi');
 
 const DIM = 3;
 const SYM = 6;
+const UNIT_TOL = 1e-6;
+const GEOM_SIZE = 8;
+const DERIV_SIZE = 21;
+/** Offsets into the output of contactGeometry (PW85_GEOM_*). */
+const GEOM = Object.freeze({ MU2: 0, LAMBDA: 1, POINT: 2, NORMAL: 5,
+  SIZE: GEOM_SIZE });
+/** Offsets into the derivatives of contactDerivatives (PW85_DERIV_*). */
+const DERIV = Object.freeze({ R12: 0, ROT1: 3, ROT2: 6, Q1: 9, Q2: 15,
+  SIZE: DERIV_SIZE });
+/** The largest id of an Index (PW85_INDEX_MAX_ID). */
+const MAX_ID = 0xFFFFFFFE;
+const NO_ID = 0xFFFFFFFFFFFFFFFFn;
 
 /** Status codes of pw85.h; values never change. */
 const status = Object.freeze({
@@ -35,18 +52,96 @@ const status = Object.freeze({
 const statusNames = Object.fromEntries(
   Object.entries(status).map(([name, value]) => [value, name]));
 
-const path = process.env.PW85_LIBRARY || 'libpw85.so.2';
-const lib = koffi.load(path);
+const SONAME = 'libpw85.so.2';
+const fromEnv = Boolean(process.env.PW85_LIBRARY);
+const path = fromEnv ? process.env.PW85_LIBRARY : SONAME;
+
+function load() {
+  try {
+    return koffi.load(path);
+  } catch (e) {
+    const where = fromEnv
+      ? `${path} (from the environment variable PW85_LIBRARY)`
+      : `${SONAME} (the dynamic loader's search: LD_LIBRARY_PATH, ` +
+        '/etc/ld.so.cache, the default directories; PW85_LIBRARY is not set)';
+    throw new Error(`pw85: cannot load ${where}: ${e.message}. Set ` +
+      `PW85_LIBRARY to the full path of ${SONAME} (for a build: ` +
+      'build/src/libpw85.so.2), or install pw85 and run ldconfig.');
+  }
+}
+const lib = load();
+
+koffi.opaque('pw85_index');
+const BATCH = 'size_t n, const double *r12, size_t r12_stride, ' +
+  'const double *q1, size_t q1_stride, const double *q2, size_t q2_stride';
 const c = {
   strerror: lib.func('const char *pw85_strerror(int status)'),
   version: lib.func('const char *pw85_version(void)'),
-  spheroid: lib.func('void pw85_spheroid(double a, double c, ' +
-                     'const double *n, _Out_ double *q)'),
+  choleskyDecomp: lib.func('void pw85__cholesky_decomp(const double *a, ' +
+    '_Out_ double *l)'),
+  spheroid: lib.func('int pw85_spheroid_checked(double a, double c, ' +
+    'const double *n, _Out_ double *q)'),
+  fNeg: lib.func('double pw85_f_neg(double lambda, const double *params)'),
   contactFunction: lib.func('int pw85_contact_function(const double *r12, ' +
-                            'const double *q1, const double *q2, ' +
-                            '_Out_ double *out)'),
+    'const double *q1, const double *q2, _Out_ double *out)'),
   overlap: lib.func('int pw85_overlap(const double *r12, const double *q1, ' +
-                    'const double *q2, _Out_ int *result)'),
+    'const double *q2, _Out_ int *result)'),
+  ellipsoidRotation: lib.func('int pw85_ellipsoid_rotation(const double *a, ' +
+    'const double *rot, _Out_ double *q)'),
+  ellipsoidQuaternion: lib.func('int pw85_ellipsoid_quaternion(' +
+    'const double *a, const double *p, _Out_ double *q)'),
+  principalAxes: lib.func('int pw85_principal_axes(const double *q, ' +
+    '_Out_ double *a, _Out_ double *rot)'),
+  principalAxesQuaternion: lib.func('int pw85_principal_axes_quaternion(' +
+    'const double *q, _Out_ double *a, _Out_ double *p)'),
+  contactGeometry: lib.func('int pw85_contact_geometry(const double *r12, ' +
+    'const double *q1, const double *q2, _Out_ double *out)'),
+  contactDerivatives: lib.func('int pw85_contact_derivatives(' +
+    'const double *r12, const double *q1, const double *q2, ' +
+    '_Out_ double *geometry, _Out_ double *d)'),
+  batchThreads: lib.func('int pw85_batch_threads(int threads, size_t n)'),
+  contactFunctionBatch: lib.func(`int pw85_contact_function_batch(${BATCH}, ` +
+    '_Out_ double *out, _Out_ int *status, int threads)'),
+  overlapBatch: lib.func(`int pw85_overlap_batch(${BATCH}, ` +
+    '_Out_ int *result, _Out_ int *status, int threads)'),
+  contactGeometryBatch: lib.func(`int pw85_contact_geometry_batch(${BATCH}, ` +
+    '_Out_ double *out, _Out_ int *status, int threads)'),
+  contactDerivativesBatch: lib.func('int pw85_contact_derivatives_batch(' +
+    `${BATCH}, _Out_ double *geometry, _Out_ double *d, _Out_ int *status, ` +
+    'int threads)'),
+  indexCreate: lib.func('int pw85_index_create(const double *box, ' +
+    '_Out_ pw85_index **index)'),
+  indexDestroy: lib.func('void pw85_index_destroy(pw85_index *index)'),
+  indexCount: lib.func('int pw85_index_count(const pw85_index *index, ' +
+    '_Out_ size_t *count)'),
+  indexInsertMany: lib.func('int pw85_index_insert_many(pw85_index *index, ' +
+    'size_t n, const size_t *ids, const double *centres, const double *q)'),
+  indexUpdate: lib.func('int pw85_index_update(pw85_index *index, ' +
+    'size_t id, const double *centre, const double *q)'),
+  indexRemove: lib.func('int pw85_index_remove(pw85_index *index, ' +
+    'size_t id)'),
+  indexGet: lib.func('int pw85_index_get(const pw85_index *index, ' +
+    'size_t id, _Out_ double *centre, _Out_ double *q)'),
+  indexOverlapAny: lib.func('int pw85_index_overlap_any(' +
+    'const pw85_index *index, const double *centre, const double *q, ' +
+    'size_t exclude, _Out_ int *result, _Out_ size_t *id)'),
+  indexOverlapAnyBatch: lib.func('int pw85_index_overlap_any_batch(' +
+    'const pw85_index *index, size_t n, const double *centres, ' +
+    'size_t centre_stride, const double *q, size_t q_stride, ' +
+    'const size_t *exclude, _Out_ int *results, _Out_ size_t *ids, ' +
+    '_Out_ int *status, int threads)'),
+  indexWithin: lib.func('int pw85_index_within(const pw85_index *index, ' +
+    'const double *centre, const double *q, double t, size_t exclude, ' +
+    'size_t capacity, _Out_ size_t *ids, _Out_ int *shifts, ' +
+    '_Out_ double *mu2_lambda, _Out_ size_t *count)'),
+  indexOverlappingPairs: lib.func('int pw85_index_overlapping_pairs(' +
+    'const pw85_index *index, int threads, size_t capacity, ' +
+    '_Out_ size_t *ids, _Out_ int *shifts, _Out_ int *results, ' +
+    '_Out_ size_t *count)'),
+  indexPairsWithin: lib.func('int pw85_index_pairs_within(' +
+    'const pw85_index *index, double t, int threads, size_t capacity, ' +
+    '_Out_ size_t *ids, _Out_ int *shifts, _Out_ double *mu2_lambda, ' +
+    '_Out_ size_t *count)'),
 };
 
 const loaded = c.version();
@@ -56,13 +151,16 @@ if (loaded.split('.')[0] !== '2') {
 
 /** A pw85 status other than PW85_SUCCESS. */
 class Pw85Error extends Error {
-  constructor(code, call) {
-    super(`${call}: ${c.strerror(code)}`);
+  constructor(code, call, detail) {
+    super(`${call}: ${c.strerror(code)} (${statusNames[code] ||
+      `status ${code}`})${detail ? `: ${detail}` : ''}`);
     this.name = 'Pw85Error';
     /** The status, a value of `status`. */
     this.status = code;
     /** Its name, "PW85_EDOM" for example. */
     this.code = statusNames[code] || `PW85_${code}`;
+    /** What was wrong, or undefined. */
+    this.detail = detail;
   }
 }
 
@@ -75,53 +173,652 @@ function doubles(x, n, name) {
   return x instanceof Float64Array ? x : Float64Array.from(x);
 }
 
+function number(x, name) {
+  if (typeof x !== 'number') {
+    throw new TypeError(`pw85: ${name} must be a number, got ${typeof x}`);
+  }
+  return x;
+}
+
+const fmt = (x) => String(x);
+const list = (x) => `[${Array.from(x, fmt).join(', ')}]`;
+const isPosDef = (q) => {
+  const l = new Float64Array(SYM);
+  c.choleskyDecomp(q, l);
+  return !Number.isNaN(l[0]);
+};
+
 // The outputs of the calls below, reused: a call runs to completion on
 // this thread before the next starts, and the values are copied out.
 const outPair = new Float64Array(2);
 const outInt = new Int32Array(1);
 
+function check(code, call, detail) {
+  if (code !== status.PW85_SUCCESS) {
+    throw new Pw85Error(code, call,
+      typeof detail === 'function' ? detail() : detail);
+  }
+}
+
+function pairDetail(r12, q1, q2) {
+  return () => `r12 = ${list(r12)}, q1 = ${list(q1)}, q2 = ${list(q2)}`;
+}
+
 /**
- * The quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ.
- * @param {number} a the equatorial radius.
- * @param {number} c the polar radius.
- * @param {ArrayLike<number>} n the unit vector of the axis (3 numbers).
+ * The preconditions of a spheroid that (a, c, n) breaks, or undefined.
+ */
+function spheroidRule(a, c_, n) {
+  const nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  if (!(a > 0)) return `a = ${fmt(a)} is not > 0`;
+  if (!(c_ > 0)) return `c = ${fmt(c_)} is not > 0`;
+  if (!(Math.abs(nn - 1) <= UNIT_TOL)) {
+    return `n is not a unit vector: ‖n‖² = ${fmt(nn)}, |‖n‖² − 1| > ` +
+      `UNIT_TOL = ${UNIT_TOL}`;
+  }
+  return undefined;
+}
+
+/**
+ * The quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ
+ * (pw85_spheroid_checked: a > 0, c > 0, n a unit vector to UNIT_TOL).
  * @returns {Float64Array} Q, 6 numbers.
+ * @throws {Pw85Error} PW85_EDOM, PW85_EINVAL (naming the rule), PW85_ERANGE.
  */
 function spheroid(a, c_, n) {
+  number(a, 'a');
+  number(c_, 'c');
+  const nd = doubles(n, DIM, 'n');
   const q = new Float64Array(SYM);
-  c.spheroid(a, c_, doubles(n, DIM, 'n'), q);
+  const code = c.spheroid(a, c_, nd, q);
+  check(code, 'pw85_spheroid', () => {
+    const rule = code === status.PW85_EINVAL ? spheroidRule(a, c_, nd) : '';
+    return `${rule ? `${rule}: ` : ''}a = ${fmt(a)}, c = ${fmt(c_)}, ` +
+      `n = ${list(nd)}`;
+  });
   return q;
 }
 
 /**
+ * f(λ) = λ(1−λ)·r12ᵀ·Q(λ)⁻¹·r12, Q(λ) = (1−λ)·Q1 + λ·Q2 (pw85_f_neg).
+ * @returns {number} f(λ); NaN if an input is not finite or Q(λ) is not
+ *          positive definite.
+ */
+function f(lambda, r12, q1, q2) {
+  const params = new Float64Array(DIM + 2 * SYM);
+  params.set(doubles(r12, DIM, 'r12'));
+  params.set(doubles(q1, SYM, 'q1'), DIM);
+  params.set(doubles(q2, SYM, 'q2'), DIM + SYM);
+  return -c.fNeg(number(lambda, 'lambda'), params);
+}
+
+/**
  * The contact function μ² and its maximiser λ.
- * @param {ArrayLike<number>} r12 c2 − c1 (3 numbers).
- * @param {ArrayLike<number>} q1 the form of the first ellipsoid (6).
- * @param {ArrayLike<number>} q2 the form of the second ellipsoid (6).
  * @returns {{mu2: number, lambda: number}} μ² < 1: they overlap.
  * @throws {Pw85Error} on any status but PW85_SUCCESS.
  */
 function contactFunction(r12, q1, q2) {
-  const code = c.contactFunction(doubles(r12, DIM, 'r12'),
-    doubles(q1, SYM, 'q1'), doubles(q2, SYM, 'q2'), outPair);
-  if (code !== status.PW85_SUCCESS) {
-    throw new Pw85Error(code, 'pw85_contact_function');
-  }
+  const args = [doubles(r12, DIM, 'r12'), doubles(q1, SYM, 'q1'),
+    doubles(q2, SYM, 'q2')];
+  check(c.contactFunction(...args, outPair), 'pw85_contact_function',
+    pairDetail(...args));
   return { mu2: outPair[0], lambda: outPair[1] };
 }
 
 /**
  * Do two ellipsoids overlap? The certified sign of μ² − 1.
- * @returns {number} −1 (overlap), +1 (disjoint), 0 (tangent within 4 ulps).
+ * @returns {number} −1 (overlap), +1 (disjoint), 0 (tangent within 4
+ *          ulps): a number, not a boolean (test `overlap(...) < 0`).
  * @throws {Pw85Error} on any status but PW85_SUCCESS.
  */
 function overlap(r12, q1, q2) {
-  const code = c.overlap(doubles(r12, DIM, 'r12'), doubles(q1, SYM, 'q1'),
-    doubles(q2, SYM, 'q2'), outInt);
-  if (code !== status.PW85_SUCCESS) {
-    throw new Pw85Error(code, 'pw85_overlap');
-  }
+  const args = [doubles(r12, DIM, 'r12'), doubles(q1, SYM, 'q1'),
+    doubles(q2, SYM, 'q2')];
+  check(c.overlap(...args, outInt), 'pw85_overlap', pairDetail(...args));
   return outInt[0];
+}
+
+/** Q = R·diag(a²)·Rᵀ; rot: 9 numbers row by row, column j the direction
+ *  of a[j] (pw85_ellipsoid_rotation). */
+function ellipsoidRotation(a, rot) {
+  const ad = doubles(a, DIM, 'a');
+  const rd = doubles(rot, DIM * DIM, 'rot');
+  const q = new Float64Array(SYM);
+  check(c.ellipsoidRotation(ad, rd, q), 'pw85_ellipsoid_rotation',
+    () => `a = ${list(ad)}, rot = ${list(rd)}`);
+  return q;
+}
+
+/**
+ * Q = R(p)·diag(a²)·R(p)ᵀ from semi-axes and a unit quaternion
+ * (pw85_ellipsoid_quaternion). p is (w, x, y, z), scalar first, by
+ * default; OVITO and SciPy write (x, y, z, w): pass
+ * `{ scalarFirst: false }`.
+ */
+function ellipsoidQuaternion(a, p, { scalarFirst = true } = {}) {
+  const ad = doubles(a, DIM, 'a');
+  let pd = doubles(p, 4, 'p');
+  if (!scalarFirst) pd = Float64Array.of(pd[3], pd[0], pd[1], pd[2]);
+  const q = new Float64Array(SYM);
+  check(c.ellipsoidQuaternion(ad, pd, q), 'pw85_ellipsoid_quaternion',
+    () => `a = ${list(ad)}, p (w, x, y, z) = ${list(pd)}`);
+  return q;
+}
+
+/** Semi-axes (decreasing) and rotation (9 numbers, row by row) of Q
+ *  (pw85_principal_axes). */
+function principalAxes(q) {
+  const qd = doubles(q, SYM, 'q');
+  const a = new Float64Array(DIM);
+  const rot = new Float64Array(DIM * DIM);
+  check(c.principalAxes(qd, a, rot), 'pw85_principal_axes',
+    () => `q = ${list(qd)}`);
+  return { a, rot };
+}
+
+/** Semi-axes (decreasing) and the unit quaternion of Q, w ≥ 0
+ *  (pw85_principal_axes_quaternion): (w, x, y, z) by default, (x, y, z, w)
+ *  (OVITO, SciPy) with `{ scalarFirst: false }`. */
+function principalAxesQuaternion(q, { scalarFirst = true } = {}) {
+  const qd = doubles(q, SYM, 'q');
+  const a = new Float64Array(DIM);
+  let p = new Float64Array(4);
+  check(c.principalAxesQuaternion(qd, a, p),
+    'pw85_principal_axes_quaternion', () => `q = ${list(qd)}`);
+  if (!scalarFirst) p = Float64Array.of(p[1], p[2], p[3], p[0]);
+  return { a, p };
+}
+
+/** μ², λ, the contact point x − c1 and the unit normal, laid out as GEOM
+ *  (pw85_contact_geometry). */
+function contactGeometry(r12, q1, q2) {
+  const args = [doubles(r12, DIM, 'r12'), doubles(q1, SYM, 'q1'),
+    doubles(q2, SYM, 'q2')];
+  const out = new Float64Array(GEOM_SIZE);
+  check(c.contactGeometry(...args, out), 'pw85_contact_geometry',
+    pairDetail(...args));
+  return out;
+}
+
+/** The geometry and the derivatives of μ², laid out as GEOM and DERIV
+ *  (pw85_contact_derivatives): forces and torques. */
+function contactDerivatives(r12, q1, q2) {
+  const args = [doubles(r12, DIM, 'r12'), doubles(q1, SYM, 'q1'),
+    doubles(q2, SYM, 'q2')];
+  const geometry = new Float64Array(GEOM_SIZE);
+  const d = new Float64Array(DERIV_SIZE);
+  check(c.contactDerivatives(...args, geometry, d),
+    'pw85_contact_derivatives', pairDetail(...args));
+  return { geometry, d };
+}
+
+// ---------------------------------------------------------------------------
+// Batches.
+
+function threadCount(threads) {
+  if (!Number.isInteger(threads) || threads < 0 || threads > 2 ** 31 - 1) {
+    throw new RangeError('pw85: threads must be 0 (OpenMP\'s default) or a ' +
+      `positive integer, got ${threads}`);
+  }
+  return threads;
+}
+
+/** The number of threads a batch of n pairs runs on (pw85_batch_threads);
+ *  n defaults to a batch large enough for every thread asked for. */
+function batchThreads(threads = 0, n = 256 * (2 ** 31 - 1)) {
+  return c.batchThreads(threadCount(threads), n);
+}
+
+// Inputs of a batch: each a Float64Array (or array) of one record (stride
+// 0) or of n records end to end.
+function records(inputs) {
+  let n = 1;
+  for (const [name, x, size] of inputs) {
+    if (x == null || typeof x.length !== 'number' || x.length % size !== 0 ||
+        x.length === 0) {
+      throw new RangeError(`pw85: ${name} must hold ${size}·n numbers`);
+    }
+    if (x.length !== size) n = x.length / size;
+  }
+  return inputs.map(([name, x, size]) => {
+    if (x.length !== size && x.length !== size * n) {
+      throw new RangeError(`pw85: ${name} holds ${x.length / size} records, ` +
+        `the others ${n}`);
+    }
+    const data = x instanceof Float64Array ? x : Float64Array.from(x);
+    return { name, data, size, stride: x.length === size ? 0 : size };
+  }).concat([n]);
+}
+
+function batchCall(fn, call, inputs, outputs, threads) {
+  const n = inputs[inputs.length - 1];
+  const ins = inputs.slice(0, -1);
+  const args = [n];
+  for (const x of ins) args.push(x.data, x.stride);
+  const code = fn(...args, ...outputs, null, threadCount(threads));
+  if (code !== status.PW85_SUCCESS) {
+    const st = new Int32Array(n);
+    fn(...args, ...outputs, st, threads);
+    const i = st.findIndex((s) => s !== 0);
+    const failed = st.reduce((k, s) => k + (s !== 0), 0);
+    const values = ins.map((x) => `${x.name} = ${list(
+      x.data.subarray(i * x.stride, i * x.stride + x.size))}`).join(', ');
+    const e = new Pw85Error(code, call,
+      `pair ${i} of ${n} (${failed} of ${n} failed): ${values}`);
+    e.index = i;
+    e.statuses = st;
+    throw e;
+  }
+}
+
+function pairs(r12, q1, q2) {
+  return records([['r12', r12, DIM], ['q1', q1, SYM], ['q2', q2, SYM]]);
+}
+
+/** contactFunction for n pairs: Float64Array(2·n) of (μ², λ) pairs. */
+function contactFunctionBatch(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs(r12, q1, q2);
+  const out = new Float64Array(2 * ins[3]);
+  batchCall(c.contactFunctionBatch, 'pw85_contact_function_batch', ins,
+    [out], threads);
+  return out;
+}
+
+/** overlap for n pairs: Int32Array(n) of −1, 0, +1. */
+function overlapBatch(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs(r12, q1, q2);
+  const out = new Int32Array(ins[3]);
+  batchCall(c.overlapBatch, 'pw85_overlap_batch', ins, [out], threads);
+  return out;
+}
+
+/** contactGeometry for n pairs: Float64Array(8·n). */
+function contactGeometryBatch(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs(r12, q1, q2);
+  const out = new Float64Array(GEOM_SIZE * ins[3]);
+  batchCall(c.contactGeometryBatch, 'pw85_contact_geometry_batch', ins,
+    [out], threads);
+  return out;
+}
+
+/** contactDerivatives for n pairs: {geometry: Float64Array(8·n),
+ *  d: Float64Array(21·n)}. */
+function contactDerivativesBatch(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs(r12, q1, q2);
+  const geometry = new Float64Array(GEOM_SIZE * ins[3]);
+  const d = new Float64Array(DERIV_SIZE * ins[3]);
+  batchCall(c.contactDerivativesBatch, 'pw85_contact_derivatives_batch', ins,
+    [geometry, d], threads);
+  return { geometry, d };
+}
+
+// ---------------------------------------------------------------------------
+// The index (pw85_index.h).
+
+const SIDE_MARGIN = 1 + 2 ** -20;
+const CENTRE_REACH = 2 ** 29;
+
+function idOf(x, name) {
+  if (!Number.isInteger(x) || x < 0 || x > MAX_ID) {
+    throw new TypeError(`pw85: ${name} must be an integer from 0 to ` +
+      `MAX_ID = ${MAX_ID}, got ${typeof x === 'number' ? x : typeof x}`);
+  }
+  return x;
+}
+
+/**
+ * A spatial index of ellipsoids in an open domain or a periodic box
+ * (pw85_index.h): its queries give the answers of overlap() and
+ * contactFunction() on every pair and periodic image. Holds library
+ * memory: call close() when done. Ids are integers from 0 to MAX_ID.
+ */
+class Index {
+  /** @param {ArrayLike<number>|null} box the sides of a periodic box, or
+   *  null for an open domain. */
+  constructor(box = null) {
+    const b = box == null ? null : doubles(box, DIM, 'box');
+    const h = [null];
+    const code = c.indexCreate(b, h);
+    check(code, 'pw85_index_create', () => {
+      const k = b.findIndex((x) => !(Number.isFinite(x) && x > 0));
+      return `box side L_${k} = ${fmt(b[k])} ` +
+        `${Number.isFinite(b[k]) ? 'is not > 0' : 'is not finite'}`;
+    });
+    this._h = h[0];
+    this._ids = new Set();
+    /** The sides of the box (a copy), or null. */
+    this.box = b == null ? null : Float64Array.from(b);
+  }
+
+  _handle() {
+    if (this._h == null) throw new Error('pw85: the index is closed');
+    return this._h;
+  }
+
+  /** Free the library's memory; the index is unusable afterwards. */
+  close() {
+    if (this._h != null) {
+      c.indexDestroy(this._h);
+      this._h = null;
+    }
+  }
+
+  /** The number of ellipsoids stored. */
+  get size() {
+    const n = [0];
+    check(c.indexCount(this._handle(), n), 'pw85_index_count');
+    return Number(n[0]);
+  }
+
+  /** Is this id stored? */
+  has(id) {
+    this._handle();
+    return Number.isInteger(id) && this._ids.has(id);
+  }
+
+  /** The stored ids, ascending. */
+  ids() {
+    this._handle();
+    return Array.from(this._ids).sort((x, y) => x - y);
+  }
+
+  [Symbol.iterator]() {
+    return this.ids()[Symbol.iterator]();
+  }
+
+  _placement(centre, q) {
+    if (this.box == null) return undefined;
+    for (let k = 0; k < DIM; ++k) {
+      const d = q[[0, 3, 5][k]];
+      const width = d > 0 ? 2 * Math.sqrt(d) * SIDE_MARGIN : 0;
+      if (!(width < this.box[k])) {
+        return `2·√Q_${k}${k}·(1 + 2⁻²⁰) = ${fmt(width)} ≥ L_${k} = ` +
+          `${fmt(this.box[k])} (an ellipsoid must be narrower than the box)`;
+      }
+    }
+    for (let k = 0; k < DIM; ++k) {
+      if (!(Math.abs(centre[k]) <= CENTRE_REACH * this.box[k])) {
+        return `|c_${k}| = ${fmt(Math.abs(centre[k]))} > 2²⁹·L_${k} = ` +
+          `${fmt(CENTRE_REACH * this.box[k])} (a centre must lie within 2²⁹ ` +
+          'box sides of the origin)';
+      }
+    }
+    return undefined;
+  }
+
+  // What makes (id, centre, q) fail, preferring a cause of status code.
+  _cause(code, centre, q, id, isNew, seen) {
+    const causes = [];
+    for (const [name, x] of [['centre', centre], ['q', q]]) {
+      if (!x.every(Number.isFinite)) {
+        causes.push([status.PW85_EDOM, `${name} = ${list(x)} is not finite`]);
+      }
+    }
+    if (id !== undefined) {
+      if (isNew && (this._ids.has(id) || seen.has(id))) {
+        causes.push([status.PW85_EINVAL, `id ${id} is already ` +
+          (this._ids.has(id) ? 'stored'
+            : 'used by an earlier item of this call')]);
+      }
+      if (!isNew && !this._ids.has(id)) {
+        causes.push([status.PW85_EINVAL, `id ${id} is not stored`]);
+      }
+    }
+    if (causes.length === 0) {
+      if (!isPosDef(q)) {
+        causes.push([status.PW85_ENOTPOSDEF,
+          `q = ${list(q)} is not positive definite`]);
+      }
+      const rule = this._placement(centre, q);
+      if (rule) causes.push([status.PW85_EINVAL, rule]);
+    }
+    const match = causes.find(([s]) => s === code) || causes[0];
+    return match ? match[1] : undefined;
+  }
+
+  /**
+   * Insert ellipsoids, all or none: ids (one integer or an array of n),
+   * centres (3 or 3·n numbers: one centre for all, or one each), q (6 or
+   * 6·n numbers). A Pw85Error names the first failing item, its id and
+   * the rule it breaks; the index is then unchanged.
+   */
+  insert(ids, centres, q) {
+    const one = typeof ids === 'number';
+    const idList = one ? [ids] : Array.from(ids);
+    const n = idList.length;
+    idList.forEach((id, k) => idOf(id, one ? 'id' : `ids[${k}]`));
+    const cs = records([['centres', centres, DIM]]);
+    const qs = records([['q', q, SYM]]);
+    const expand = ({ data, stride }, size) => {
+      if (stride === 0 && n !== 1) {
+        const out = new Float64Array(size * n);
+        for (let i = 0; i < n; ++i) out.set(data, i * size);
+        return out;
+      }
+      if (data.length !== size * n) {
+        throw new RangeError(`pw85: ${n} ids but ${data.length / size} ` +
+          'records');
+      }
+      return data;
+    };
+    const cd = expand(cs[0], DIM);
+    const qd = expand(qs[0], SYM);
+    const idArray = BigUint64Array.from(idList, BigInt);
+    const code = c.indexInsertMany(this._handle(), n, idArray, cd, qd);
+    if (code !== status.PW85_SUCCESS) {
+      const seen = new Set();
+      for (let k = 0; k < n; ++k) {
+        const ck = cd.subarray(DIM * k, DIM * k + DIM);
+        const qk = qd.subarray(SYM * k, SYM * k + SYM);
+        const cause = this._cause(code, ck, qk, idList[k], true, seen);
+        if (cause) {
+          const e = new Pw85Error(code, 'pw85_index_insert',
+            `ellipsoid ${idList[k]}${one ? '' : ` (item ${k} of ${n})`}: ` +
+            cause);
+          e.id = idList[k];
+          e.item = one ? undefined : k;
+          throw e;
+        }
+        seen.add(idList[k]);
+      }
+      throw new Pw85Error(code, 'pw85_index_insert');
+    }
+    for (const id of idList) this._ids.add(id);
+  }
+
+  /** Move or reshape a stored ellipsoid. */
+  update(id, centre, q) {
+    idOf(id, 'id');
+    const cd = doubles(centre, DIM, 'centre');
+    const qd = doubles(q, SYM, 'q');
+    const code = c.indexUpdate(this._handle(), id, cd, qd);
+    if (code !== status.PW85_SUCCESS) {
+      const e = new Pw85Error(code, 'pw85_index_update',
+        `ellipsoid ${id}: ${this._cause(code, cd, qd, id, false) ||
+          `centre = ${list(cd)}, q = ${list(qd)}`}`);
+      e.id = id;
+      throw e;
+    }
+  }
+
+  /** Remove a stored ellipsoid. */
+  remove(id) {
+    idOf(id, 'id');
+    check(c.indexRemove(this._handle(), id), 'pw85_index_remove',
+      `id ${id} is not stored`);
+    this._ids.delete(id);
+  }
+
+  /** {centre, q} of a stored ellipsoid, as inserted. */
+  get(id) {
+    idOf(id, 'id');
+    const centre = new Float64Array(DIM);
+    const q = new Float64Array(SYM);
+    check(c.indexGet(this._handle(), id, centre, q), 'pw85_index_get',
+      `id ${id} is not stored`);
+    return { centre, q };
+  }
+
+  _candidateError(code, call, centre, q) {
+    const detail = code === status.PW85_EINVAL
+      ? (this._placement(centre, Float64Array.of(0, 0, 0, 0, 0, 0)) ||
+         `centre = ${list(centre)}`)
+      : (this._cause(code, centre, q) ||
+         `centre = ${list(centre)}, q = ${list(q)}`);
+    return new Pw85Error(code, call, detail);
+  }
+
+  /**
+   * Does a candidate overlap a stored ellipsoid (but `exclude`)?
+   * @returns {{result: number, id: number|null}} result −1 (overlap), 0
+   *          (tangent), +1 (none); id of one with that result, or null.
+   */
+  overlapAny(centre, q, exclude = null) {
+    const cd = doubles(centre, DIM, 'centre');
+    const qd = doubles(q, SYM, 'q');
+    const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
+    const found = [0];
+    const code = c.indexOverlapAny(this._handle(), cd, qd, ex, outInt, found);
+    if (code !== status.PW85_SUCCESS) {
+      throw this._candidateError(code, 'pw85_index_overlap_any', cd, qd);
+    }
+    const id = BigInt(found[0]);
+    return { result: outInt[0], id: id === NO_ID ? null : Number(id) };
+  }
+
+  /**
+   * overlapAny for n candidates (centres: 3·n numbers; q: 6·n, or 6 for
+   * all), on threads. exclude: null or n ids (−1 for none).
+   * @returns {{results: Int32Array, ids: Float64Array}} ids −1 for none.
+   */
+  overlapAnyBatch(centres, q, { exclude = null, threads = 1 } = {}) {
+    const ins = records([['centres', centres, DIM], ['q', q, SYM]]);
+    const n = ins[2];
+    let ex = null;
+    if (exclude != null) {
+      if (exclude.length !== n) {
+        throw new RangeError(`pw85: exclude must hold ${n} ids`);
+      }
+      ex = BigUint64Array.from(exclude, (x) => (x === -1 ? NO_ID
+        : BigInt(idOf(x, 'exclude'))));
+    }
+    const results = new Int32Array(n);
+    const found = new BigUint64Array(n);
+    const args = [this._handle(), n, ins[0].data, ins[0].stride,
+      ins[1].data, ins[1].stride, ex, results, found];
+    const code = c.indexOverlapAnyBatch(...args, null, threadCount(threads));
+    if (code !== status.PW85_SUCCESS) {
+      const st = new Int32Array(n);
+      c.indexOverlapAnyBatch(...args, st, threads);
+      const i = st.findIndex((s) => s !== 0);
+      const at = (x) => x.data.subarray(i * x.stride, i * x.stride + x.size);
+      const inner = this._candidateError(code, 'pw85_index_overlap_any_batch',
+        at(ins[0]), at(ins[1]));
+      const e = new Pw85Error(code, 'pw85_index_overlap_any_batch',
+        `candidate ${i} of ${n}: ${inner.detail}`);
+      e.index = i;
+      e.statuses = st;
+      throw e;
+    }
+    const ids = Float64Array.from(found, (x) => (x === NO_ID ? -1
+      : Number(x)));
+    return { results, ids };
+  }
+
+  // Call with room for `guess` results, then again if too few.
+  _collect(call, name, idsPerRow, doublesPerRow, guess, error) {
+    let cap = guess;
+    for (;;) {
+      const ids = new BigUint64Array(idsPerRow * cap);
+      const shifts = new Int32Array(3 * cap);
+      const values = doublesPerRow ? new Float64Array(2 * cap)
+        : new Int32Array(cap);
+      const count = [0];
+      const code = call(cap, ids, shifts, values, count);
+      if (code !== status.PW85_SUCCESS) {
+        throw error ? error(code) : new Pw85Error(code, name);
+      }
+      const m = Number(count[0]);
+      if (m <= cap) return { m, ids, shifts, values };
+      cap = m;
+    }
+  }
+
+  /** Every stored ellipsoid and image with μ² < t from a candidate:
+   *  [{id, shift, mu2, lambda}], sorted by id, then shift. */
+  within(centre, q, t = 1, exclude = null) {
+    const cd = doubles(centre, DIM, 'centre');
+    const qd = doubles(q, SYM, 'q');
+    number(t, 't');
+    if (!(t > 0)) {
+      throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
+        : status.PW85_EINVAL, 'pw85_index_within', `t = ${t} is not > 0`);
+    }
+    const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
+    const r = this._collect((cap, ids, shifts, ml, count) => c.indexWithin(
+      this._handle(), cd, qd, t, ex, cap, ids, shifts, ml, count),
+    'pw85_index_within', 1, true, 16,
+    (code) => this._candidateError(code, 'pw85_index_within', cd, qd));
+    return Array.from({ length: r.m }, (_, k) => ({
+      id: Number(r.ids[k]),
+      shift: Array.from(r.shifts.subarray(3 * k, 3 * k + 3)),
+      mu2: r.values[2 * k],
+      lambda: r.values[2 * k + 1],
+    }));
+  }
+
+  _threads(threads, name) {
+    if (!Number.isInteger(threads) || threads < 1) {
+      throw new Pw85Error(status.PW85_EINVAL, name,
+        `threads = ${threads} is not an integer ≥ 1`);
+    }
+    return threads;
+  }
+
+  /** Every overlapping (or tangent) pair, each once:
+   *  [{i, j, shift, result}], sorted by i, j, shift. */
+  overlappingPairs({ threads = 1 } = {}) {
+    const th = this._threads(threads, 'pw85_index_overlapping_pairs');
+    const r = this._collect((cap, ids, shifts, res, count) =>
+      c.indexOverlappingPairs(this._handle(), th, cap, ids, shifts, res,
+        count), 'pw85_index_overlapping_pairs', 2, false,
+    4 * this.size + 16);
+    return Array.from({ length: r.m }, (_, k) => ({
+      i: Number(r.ids[2 * k]),
+      j: Number(r.ids[2 * k + 1]),
+      shift: Array.from(r.shifts.subarray(3 * k, 3 * k + 3)),
+      result: r.values[k],
+    }));
+  }
+
+  /** Every pair (and image) with μ² < t, each once:
+   *  [{i, j, shift, mu2, lambda}]. */
+  pairsWithin(t, { threads = 1 } = {}) {
+    number(t, 't');
+    if (!(t > 0)) {
+      throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
+        : status.PW85_EINVAL, 'pw85_index_pairs_within',
+      `t = ${t} is not > 0`);
+    }
+    const th = this._threads(threads, 'pw85_index_pairs_within');
+    const r = this._collect((cap, ids, shifts, ml, count) =>
+      c.indexPairsWithin(this._handle(), t, th, cap, ids, shifts, ml, count),
+    'pw85_index_pairs_within', 2, true, 8 * this.size + 16);
+    return Array.from({ length: r.m }, (_, k) => ({
+      i: Number(r.ids[2 * k]),
+      j: Number(r.ids[2 * k + 1]),
+      shift: Array.from(r.shifts.subarray(3 * k, 3 * k + 3)),
+      mu2: r.values[2 * k],
+      lambda: r.values[2 * k + 1],
+    }));
+  }
+
+  toString() {
+    if (this._h == null) return 'pw85.Index (closed)';
+    const n = this.size;
+    return `pw85.Index: ${this.box == null ? 'open domain'
+      : `periodic box (${list(this.box).slice(1, -1)})`}, ${n} ellipsoid` +
+      `${n === 1 ? '' : 's'}`;
+  }
 }
 
 /** The version of the library loaded, "MAJOR.MINOR.PATCH". */
@@ -135,6 +832,10 @@ function strerror(code) {
 }
 
 module.exports = {
-  DIM, SYM, status, Pw85Error, spheroid, contactFunction, overlap, version,
-  strerror, libraryPath: path,
+  DIM, SYM, UNIT_TOL, GEOM, DERIV, MAX_ID, status, Pw85Error, version,
+  strerror, libraryPath: path, spheroid, f, contactFunction, overlap,
+  ellipsoidRotation, ellipsoidQuaternion, principalAxes,
+  principalAxesQuaternion, contactGeometry, contactDerivatives, batchThreads,
+  contactFunctionBatch, overlapBatch, contactGeometryBatch,
+  contactDerivativesBatch, Index,
 };

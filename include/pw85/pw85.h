@@ -33,8 +33,9 @@
  * factorise it answer PW85_ERANGE.
  *
  * Thread safety: every function is reentrant and thread-safe; none keeps
- * state between calls. None prints, aborts, exits, allocates from the heap,
- * or changes process-wide state (in particular GSL's error handler is never
+ * state between calls. None prints, aborts, exits, allocates from the heap
+ * (the index of pw85_index.h does, and says so), or changes process-wide
+ * state (in particular GSL's error handler is never
  * installed nor reached).
  *
  * Versions: what carries no `@since` is the C API of pw85 1.0, same names
@@ -178,16 +179,41 @@ PW85_API void pw85__cholesky_solve(double const l[PW85_SYM],
 /**
  * @brief The quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ.
  *
+ * The signature of pw85 1.0, with no status: the preconditions are not
+ * checked. Preconditions: a > 0 and c > 0 (a = 0 or c = 0 gives a
+ * singular Q, and −a gives the Q of a), a² and c² within the normal range
+ * of a double, and ‖n‖ = 1 (a non-unit n gives the formula's Q, which is
+ * not that spheroid). pw85_spheroid_checked() checks them and returns a
+ * status; every binding calls it.
  * @param[in] a the equatorial radius (a length).
  * @param[in] c the polar radius (a length).
  * @param[in] n the unit vector of the axis of revolution (not normalised
- *              here: a non-unit n gives the formula's Q, not a spheroid).
+ *              here).
  * @param[out] q the matrix Q (a squared length). Not written if q is NULL;
  *               filled with NaN if n is NULL. Non-finite input gives
  *               non-finite entries.
  */
 PW85_API void pw85_spheroid(double a, double c, double const n[PW85_DIM],
                             double q[PW85_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_spheroid() with its preconditions checked.
+ *
+ * The same Q, bit for bit, when they hold.
+ * @param[in] a the equatorial radius (a length, > 0).
+ * @param[in] c the polar radius (a length, > 0).
+ * @param[in] n the unit vector of the axis of revolution:
+ *              |‖n‖² − 1| ≤ PW85_UNIT_TOL (not normalised here).
+ * @param[out] q the matrix Q (a squared length).
+ * @return PW85_SUCCESS; PW85_EFAULT if n or q is NULL; PW85_EDOM if a, c
+ *         or an entry of n is NaN or infinite; PW85_EINVAL if a ≤ 0,
+ *         c ≤ 0 or |‖n‖² − 1| > PW85_UNIT_TOL; PW85_ERANGE if a² or c²
+ *         overflows or is below DBL_MIN. q is written on success only.
+ * @since 2.3.0
+ */
+PW85_API int pw85_spheroid_checked(double a, double c,
+                                   double const n[PW85_DIM],
+                                   double q[PW85_SYM]) PW85_NOEXCEPT;
 
 /**
  * @brief Minus the function f of the contact problem:
@@ -377,7 +403,9 @@ PW85_API int pw85_ellipsoid_rotation(double const a[PW85_DIM],
  * @brief The quadratic form of an ellipsoid from its semi-axes and a unit
  *        quaternion: Q = R(p)·diag(a0², a1², a2²)·R(p)ᵀ.
  *
- * p = (w, x, y, z) = cos(θ/2) + sin(θ/2)·(u_x·i + u_y·j + u_z·k) is the
+ * p = (w, x, y, z), scalar first (OVITO and SciPy's Rotation.as_quat()
+ * write (x, y, z, w): reorder them), = cos(θ/2) + sin(θ/2)·(u_x·i +
+ * u_y·j + u_z·k) is the
  * rotation by θ about the unit axis u that maps the coordinate axes to the
  * principal directions (a[j] lies along R(p)·e_j): the convention of
  * HOOMD-blue's and LAMMPS's ellipsoids. p and −p give the same Q. p is
@@ -431,6 +459,31 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
 PW85_API int pw85_principal_axes(double const q[PW85_SYM],
                                  double a[PW85_DIM],
                                  double rot[PW85_DIM * PW85_DIM]) PW85_NOEXCEPT;
+
+/**
+ * @brief The semi-axes and orientation of an ellipsoid as a unit
+ *        quaternion: the inverse of pw85_ellipsoid_quaternion().
+ *
+ * pw85_principal_axes(), then the quaternion p of its rotation R
+ * (Shepperd's method: the largest of 4w², 4x², 4y², 4z² from the diagonal
+ * of R, the others from its off-diagonal entries), normalised:
+ * pw85_ellipsoid_quaternion(a, p, q') gives Q again, to the accuracy of
+ * the semi-axes and directions (pw85_principal_axes()). p = (w, x, y, z),
+ * scalar first, the convention of pw85_ellipsoid_quaternion(); OVITO and
+ * SciPy (Rotation.as_quat()) write (x, y, z, w). Of the pair ±p, the one
+ * with w > 0 (w = 0: the first non-zero component positive). Equal
+ * semi-axes: any orientation of their eigenspace, as pw85_principal_axes().
+ * @param[in] q the quadratic form Q.
+ * @param[out] a the semi-axes, in decreasing order.
+ * @param[out] p the unit quaternion (w, x, y, z): a[j] lies along
+ *             R(p)·e_j.
+ * @return the statuses of pw85_principal_axes(); a and p are written on
+ *         success only.
+ * @since 2.3.0
+ */
+PW85_API int pw85_principal_axes_quaternion(double const q[PW85_SYM],
+                                            double a[PW85_DIM],
+                                            double p[4]) PW85_NOEXCEPT;
 
 /** @name Layout of the output of pw85_contact_geometry()
  *  Offsets into `double out[PW85_GEOM_SIZE]`. Fixed: a later release adds
@@ -605,7 +658,8 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
  * @param[in] threads the count requested: 0 for OpenMP's default, k ≥ 1.
  * @param[in] n the number of pairs.
  * @return the count, ≥ 1: min(k, n/256) and at least 1 (k = OpenMP's
- *         default for threads = 0); 1 when libpw85 was built without
+ *         default for threads = 0); 1 for n ≥ 2⁵⁶ (a batch that large
+ *         runs in the calling thread) and when libpw85 was built without
  *         OpenMP; 0 if threads < 0 (the batch calls reject it).
  * @since 2.2.0
  */
@@ -774,7 +828,7 @@ PW85_API int pw85_ellipsoid_rotation_batch(size_t n, double const *a,
  * @brief pw85_ellipsoid_quaternion() for n ellipsoids.
  *
  * Item i reads the semi-axes `a + i·a_stride` and the quaternion
- * `p + i·p_stride` (w, x, y, z), and writes `q + i·PW85_SYM`; strides 0
+ * `p + i·p_stride` (w, x, y, z), scalar first, and writes `q + i·PW85_SYM`; strides 0
  * for one record for every item.
  *
  * @param[in] n the number of ellipsoids (0 is valid).
@@ -819,6 +873,29 @@ PW85_API int pw85_principal_axes_batch(size_t n, double const *q,
                                        size_t q_stride, double *a,
                                        double *rot, int *status,
                                        int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_principal_axes_quaternion() for n forms.
+ *
+ * Item i reads `q + i·q_stride` and writes `a + i·PW85_DIM` and
+ * `p + 4·i`.
+ *
+ * @param[in] n the number of forms (0 is valid).
+ * @param[in] q the quadratic forms.
+ * @param[in] q_stride PW85_SYM when contiguous, 0 for one form.
+ * @param[out] a n·PW85_DIM doubles: the semi-axes, decreasing.
+ * @param[out] p 4·n doubles: the quaternion (w, x, y, z) of item i at
+ *             `p + 4·i`.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k (see Batches).
+ * @return PW85_SUCCESS, or the status of the first failing item;
+ *         PW85_EFAULT or PW85_EINVAL for the call itself.
+ * @since 2.3.0
+ */
+PW85_API int pw85_principal_axes_quaternion_batch(size_t n, double const *q,
+                                                  size_t q_stride, double *a,
+                                                  double *p, int *status,
+                                                  int threads) PW85_NOEXCEPT;
 /** @} */
 
 #ifdef __cplusplus

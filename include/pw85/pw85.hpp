@@ -21,6 +21,7 @@
 #define PW85_HPP
 
 #include <cstddef>
+#include <limits>
 
 #include "pw85.h"
 
@@ -61,10 +62,18 @@ inline void _cholesky_solve(double const l[sym], double const b[dim],
   pw85__cholesky_solve(l, b, x);
 }
 
-/** The quadratic form of a spheroid (pw85_spheroid()). */
-inline void spheroid(double a, double c, double const n[dim],
-                     double q[sym]) noexcept {
-  pw85_spheroid(a, c, n, q);
+/** The quadratic form of a spheroid, its preconditions checked
+ *  (pw85_spheroid_checked(): a > 0, c > 0, n a unit vector to
+ *  PW85_UNIT_TOL); returns a PW85_* status. The seed's signature returned
+ *  nothing: on error, q (if not nullptr) is filled with NaN, a form that
+ *  every function rejects (PW85_EDOM), never a plausible wrong one.
+ *  @since 2.3.0 (the status and the checks) */
+inline int spheroid(double a, double c, double const n[dim],
+                    double q[sym]) noexcept {
+  int const status = pw85_spheroid_checked(a, c, n, q);
+  if (status != PW85_SUCCESS && q != nullptr)
+    for (std::size_t k = 0; k < sym; ++k) q[k] = std::numeric_limits<double>::quiet_NaN();
+  return status;
 }
 
 /** −f(λ) (pw85_f_neg()), with r12, q1, q2 passed separately. NaN if a
@@ -137,8 +146,8 @@ inline int ellipsoid_rotation(double const a[dim], double const rot[dim * dim],
   return pw85_ellipsoid_rotation(a, rot, q);
 }
 
-/** Q from semi-axes and a unit quaternion (w, x, y, z)
- *  (pw85_ellipsoid_quaternion()); returns a PW85_* status.
+/** Q from semi-axes and a unit quaternion (w, x, y, z), scalar first
+ *  (OVITO and SciPy write (x, y, z, w)) (pw85_ellipsoid_quaternion()); returns a PW85_* status.
  *  @since 2.2.0 */
 inline int ellipsoid_quaternion(double const a[dim], double const p[4],
                                 double q[sym]) noexcept {
@@ -151,6 +160,15 @@ inline int ellipsoid_quaternion(double const a[dim], double const p[4],
 inline int principal_axes(double const q[sym], double a[dim],
                           double rot[dim * dim]) noexcept {
   return pw85_principal_axes(q, a, rot);
+}
+
+/** Semi-axes (decreasing) and the unit quaternion p = (w, x, y, z) of
+ *  the principal directions, w ≥ 0 (pw85_principal_axes_quaternion());
+ *  returns a PW85_* status.
+ *  @since 2.3.0 */
+inline int principal_axes_quaternion(double const q[sym], double a[dim],
+                                     double p[4]) noexcept {
+  return pw85_principal_axes_quaternion(q, a, p);
 }
 
 /** μ², λ, the contact point and the normal, laid out as geom::*

@@ -58,6 +58,19 @@
  * serially otherwise; their output is the same, bit for bit, for any
  * number of threads. No other function starts a thread.
  *
+ * PW85_EINVAL, the status of a finite argument outside its domain, has
+ * these causes, each documented with its function: a box side not > 0
+ * (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
+ * call (insert, insert_many); an id not stored (update, remove, get); in
+ * a periodic box, an ellipsoid not narrower than the box,
+ * 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k, or a centre with |c_k| > 2²⁹·L_k (insert,
+ * insert_many, update; the centre rule also for the queries on a
+ * candidate); t ≤ 0 (within, pairs_within); threads < 1 (the all-pairs
+ * queries) or < 0, or a stride between 1 and its record's size − 1
+ * (overlap_any_batch). The status alone does not say which: a binding
+ * that reports errors to people checks these rules to name the one
+ * broken (pypw85 and the Node.js package do).
+ *
  * Outputs that may not fit take a capacity (a number of results) and
  * return the number of results in *count, as snprintf does: the first
  * min(count, capacity) results are written, in the documented order;

@@ -86,10 +86,19 @@ The only run-time dependency is NumPy. Released under the BSD 3-Clause
 licence.
 """
 
+from __future__ import annotations
+
 import ctypes
 import math
+import sys
+import typing
 
 import numpy as np
+
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Optional, Tuple, Union
+    from numpy.typing import ArrayLike, NDArray
+    _F64 = NDArray[np.float64]
 
 from . import _batch, _constants
 from ._convert import (
@@ -97,6 +106,7 @@ from ._convert import (
     unaliased as _unaliased, vector as _vector,
 )
 from ._batch import batch_threads
+from ._batch import spheroid_rule as _spheroid_rule
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 # Not used here: kept where the tests look for them (the path libpw85 was
@@ -114,9 +124,10 @@ __all__ = [
     "EINVAL",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
     "contact_geometry", "contact_derivatives", "ellipsoid_rotation",
-    "ellipsoid_quaternion", "principal_axes", "pack_sym", "unpack_sym",
-    "batch_threads",
+    "ellipsoid_quaternion", "principal_axes", "principal_axes_quaternion",
+    "pack_sym", "unpack_sym", "batch_threads", "Index",
 ]
+
 
 # The constants of pw85.h: the values are those of _constants (checked
 # against the header by tests/python/test_constants.py), documented here,
@@ -199,12 +210,14 @@ _c_overlap = _lib.pw85_overlap
 _c_ellipsoid_rotation = _lib.pw85_ellipsoid_rotation
 _c_ellipsoid_quaternion = _lib.pw85_ellipsoid_quaternion
 _c_principal_axes = _lib.pw85_principal_axes
+_c_principal_axes_quaternion = _lib.pw85_principal_axes_quaternion
+_c_spheroid_checked = _lib.pw85_spheroid_checked
 _c_contact_geometry = _lib.pw85_contact_geometry
 _c_contact_derivatives = _lib.pw85_contact_derivatives
 
 
 # ---------------------------------------------------------------------------
-# The new API (docs/python-api.rst).
+# The API of pw85 1.0, its contract checked.
 
 def _cholesky_decomp(a, l=None):
     """Compute the Cholesky decomposition A = L·Lᵀ of a 3×3 matrix.
@@ -287,7 +300,8 @@ def _cholesky_solve(l, b, x=None):
     return x
 
 
-def spheroid(a, c, n, q=None, *, threads=1):
+def spheroid(a: ArrayLike, c: ArrayLike, n: ArrayLike,
+             q: Optional[_F64] = None, *, threads: int = 1) -> _F64:
     """Return the quadratic form of a spheroid: Q = a²·I + (c² − a²)·n·nᵀ.
 
     On arrays (a or c of shape (...), n of shape (..., 3), leading axes
@@ -297,13 +311,12 @@ def spheroid(a, c, n, q=None, *, threads=1):
     Parameters
     ----------
     a : float or array_like, shape (...)
-        The equatorial radius (a length).
+        The equatorial radius (a length, > 0).
     c : float or array_like, shape (...)
-        The polar radius (a length, same unit as a).
+        The polar radius (a length, same unit as a, > 0).
     n : array_like, shape (3,) or (..., 3)
-        The direction of the axis of revolution, a unit vector (not
-        normalised here: a non-unit n gives the formula's Q, which is not a
-        spheroid).
+        The direction of the axis of revolution, a unit vector:
+        abs(‖n‖² − 1) ≤ `UNIT_TOL` (not normalised here).
     q : numpy.ndarray, shape (6,) or (..., 6), float64, optional
         Preallocated output, modified in place. A new array if None.
     threads : int, optional
@@ -320,10 +333,11 @@ def spheroid(a, c, n, q=None, *, threads=1):
     ValueError, TypeError
         If an argument has the wrong shape or type.
     Error
-        `EDOM` if a, c or an entry of n is not finite (q untouched);
-        `ERANGE` if an entry of Q overflows (q then holds it). On arrays,
-        for the first failing item (`index`, `statuses`; the other items
-        computed).
+        `EDOM` if a, c or an entry of n is not finite; `EINVAL` if a ≤ 0,
+        c ≤ 0 or n is not a unit vector (the message names the rule);
+        `ERANGE` if a² or c² overflows or underflows (q untouched). On
+        arrays, for the first failing item (`index`, `statuses`; for
+        `EDOM` and `ERANGE` the other items computed, for `EINVAL` none).
     """
     if _batch.is_batch_of((a, 0), (c, 0), (n, 1)):
         return _batch.spheroid(a, c, n, q, threads)
@@ -333,9 +347,11 @@ def spheroid(a, c, n, q=None, *, threads=1):
     q = _output("q", q, SYM)
     (n,) = _unaliased(q, n)
     _check_finite("spheroid", a=a, c=c, n=n)
-    _c_spheroid(a, c, n.ctypes.data, q.ctypes.data)
-    if not np.isfinite(q).all():
-        raise Error(ERANGE, "spheroid", "q = %r" % q)
+    status = _c_spheroid_checked(a, c, n.ctypes.data, q.ctypes.data)
+    if status != SUCCESS:
+        rule = _spheroid_rule(a, c, n) if status == EINVAL else None
+        raise Error(status, "spheroid", "%sa = %r, c = %r, n = %r" % (
+            rule + ": " if rule else "", a, c, n))
     return q
 
 
@@ -356,7 +372,7 @@ def _f_neg(where, lambda_, r12, q1, q2):
     return value
 
 
-def f(lambda_, r12, q1, q2):
+def f(lambda_: float, r12: ArrayLike, q1: ArrayLike, q2: ArrayLike) -> float:
     """Return f(λ) = λ(1−λ)·r12ᵀ·Q⁻¹·r12, with Q = (1−λ)·Q1 + λ·Q2.
 
     μ² is the maximum of f over [0, 1] (see `contact_function`). f is
@@ -394,7 +410,8 @@ def f(lambda_, r12, q1, q2):
     return -_f_neg("f", lambda_, r12, q1, q2)
 
 
-def f_neg(lambda_, r12, q1, q2):
+def f_neg(lambda_: float, r12: ArrayLike, q1: ArrayLike,
+          q2: ArrayLike) -> float:
     """Return −f(λ), the function whose minimum over [0, 1] is −μ².
 
     The same as ``-f(lambda_, r12, q1, q2)``. The C function pw85_f_neg
@@ -422,7 +439,8 @@ def f_neg(lambda_, r12, q1, q2):
 def _residual(lambda_, r12, q1, q2, out=None):
     """Return f(λ), g(λ) = μ2²(λ) − μ1²(λ) and g′(λ).
 
-    Internal (exposed for testing; g is the residual of docs/optimisation.rst,
+    Internal (exposed for testing; g is the residual of the docs page
+    "Optimisation",
     whose sign the Newton steps of `contact_function` follow); may change
     without notice.
 
@@ -466,15 +484,25 @@ def _residual(lambda_, r12, q1, q2, out=None):
     return out
 
 
-def contact_function(r12, q1, q2, out=None, *, threads=1):
+def contact_function(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+                     out: Optional[_F64] = None, *,
+                     threads: int = 1) -> _F64:
     """Return the contact function μ² of two ellipsoids and its maximiser λ.
 
-    μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
-    (docs/theory.rst). μ is the common factor by which both ellipsoids must
-    be scaled, their centres fixed, to be externally tangent: μ² < 1 means
-    they overlap, μ² > 1 that they are disjoint.
+    μ is the common factor by which both ellipsoids must be scaled, their
+    centres fixed, to be externally tangent: μ² < 1 means they overlap,
+    μ² > 1 that they are disjoint. μ² is correctly rounded (the exact
+    value rounded to the nearest double) across the documented domain.
+    For the yes-or-no question, `overlap` is faster::
 
-    The search (docs, chapter "Optimisation"): the inputs are rescaled by
+        mu2, lambda_ = pypw85.contact_function(c2 - c1, q1, q2)
+
+    μ² = max over λ in [0, 1] of λ(1−λ)·r12ᵀ·[(1−λ)·Q1 + λ·Q2]⁻¹·r12
+    (Perram and Wertheim, 1985; the docs page "Theory"); λ, the maximiser,
+    locates the contact point (`contact_geometry`).
+
+    How it is computed (the docs page "Optimisation"): the inputs are
+    rescaled by
     powers of two; λ starts from the sphere model's maximiser and is refined
     by safeguarded Newton steps on ω(λ) = λρ − (1−λ), where ρ = √(P2/P1),
     Pi = sᵀ·Qi·s and s = Q(λ)⁻¹·r12; ω has the sign of g = μ2² − μ1² and
@@ -539,8 +567,13 @@ def contact_function(r12, q1, q2, out=None, *, threads=1):
     return out
 
 
-def overlap(r12, q1, q2, *, threads=1):
+def overlap(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike, *,
+            threads: int = 1) -> Union[int, NDArray[np.intc]]:
     """Do two ellipsoids overlap? A certified answer, faster than μ².
+
+    Returns an int, −1, 0 or +1, not a bool: ``if overlap(...)`` is true
+    for both −1 and +1. Write ``overlap(...) < 0`` for "they overlap"
+    (``<= 0`` to count tangency as contact).
 
     Decides the sign of μ² − 1 (see `contact_function`) from bounds of μ²
     with rounding margins; only nearly tangent pairs fall back to the exact
@@ -591,7 +624,7 @@ def overlap(r12, q1, q2, *, threads=1):
 # Ellipsoids in full (since 2.2.0): constructors, principal axes, contact
 # geometry and derivatives. Layouts as in pw85.h.
 
-def pack_sym(a, rtol=1e-12):
+def pack_sym(a: ArrayLike, rtol: float = 1e-12) -> _F64:
     """Return the 6-entry storage of a symmetric 3×3 matrix.
 
     Parameters
@@ -625,7 +658,7 @@ def pack_sym(a, rtol=1e-12):
     return m[np.triu_indices(DIM)].copy()
 
 
-def unpack_sym(q):
+def unpack_sym(q: ArrayLike) -> _F64:
     """Return the symmetric 3×3 matrix of a 6-entry storage (`pack_sym`).
 
     Parameters
@@ -656,7 +689,9 @@ def _rotation(name, rot):
     return _vector(name, m, DIM * DIM)
 
 
-def ellipsoid_rotation(a, rot, q=None, *, threads=1):
+def ellipsoid_rotation(a: ArrayLike, rot: ArrayLike,
+                       q: Optional[_F64] = None, *,
+                       threads: int = 1) -> _F64:
     """Return Q = R·diag(a²)·Rᵀ, the ellipsoid of semi-axes a along the
     columns of R.
 
@@ -670,10 +705,11 @@ def ellipsoid_rotation(a, rot, q=None, *, threads=1):
     ----------
     a : array_like, shape (3,) or (..., 3)
         The semi-axes (lengths, each > 0).
-    rot : array_like, shape (3, 3), (9,) or (..., 3, 3)
+    rot : array_like, shape (3, 3), (9,) or (..., 3, 3), or a SciPy Rotation
         The rotation R, column j the direction of a[j] (row by row when
         flat: ``rot[3*i + j] = R[i, j]``), orthonormal to `UNIT_TOL`; a
-        reflection is accepted.
+        reflection is accepted. A ``scipy.spatial.transform.Rotation``
+        (one or many) stands for its ``as_matrix()``.
     q : numpy.ndarray, shape (6,) or (..., 6), float64, optional
         Preallocated output, modified in place. A new array if None.
     threads : int, optional
@@ -693,6 +729,9 @@ def ellipsoid_rotation(a, rot, q=None, *, threads=1):
         untouched (on arrays: that item's q; the error names the first
         failing item).
     """
+    scipy_rot = _scipy_rotation(rot)
+    if scipy_rot is not None:
+        rot = scipy_rot.as_matrix()
     if _batch.is_batch_of((a, 1), (rot, 2)):
         return _batch.ellipsoid_rotation(a, rot, q, threads)
     a = _vector("a", a, DIM)
@@ -707,7 +746,10 @@ def ellipsoid_rotation(a, rot, q=None, *, threads=1):
     return q
 
 
-def ellipsoid_quaternion(a, p, q=None, *, threads=1):
+def ellipsoid_quaternion(a: ArrayLike, p: ArrayLike,
+                         q: Optional[_F64] = None, *,
+                         scalar_first: bool = True,
+                         threads: int = 1) -> _F64:
     """Return the ellipsoid of semi-axes a turned by the unit quaternion p.
 
     Q = R(p)·diag(a²)·R(p)ᵀ, where R(p) maps the coordinate axes onto the
@@ -717,15 +759,25 @@ def ellipsoid_quaternion(a, p, q=None, *, threads=1):
     broadcast together), one form per item, in one call of
     ``pw85_ellipsoid_quaternion_batch``.
 
+    The order of the components: (w, x, y, z), scalar first, by default
+    (HOOMD-blue, LAMMPS, pw85's C API). OVITO and SciPy
+    (``Rotation.as_quat()``) write (x, y, z, w): pass
+    ``scalar_first=False``, or the SciPy ``Rotation`` itself. A quaternion
+    in the wrong order gives a wrong ellipsoid without any error.
+
     Parameters
     ----------
     a : array_like, shape (3,) or (..., 3)
         The semi-axes (lengths, each > 0).
-    p : array_like, shape (4,) or (..., 4)
-        The quaternion (w, x, y, z), of norm 1 to `UNIT_TOL` (on its
-        square).
+    p : array_like, shape (4,) or (..., 4), or a SciPy Rotation
+        The quaternion, (w, x, y, z) (``scalar_first=False``:
+        (x, y, z, w)), of norm 1 to `UNIT_TOL` (on its square). A
+        ``scipy.spatial.transform.Rotation`` (one or many) is taken as
+        the rotation it is, whatever ``scalar_first`` says.
     q : numpy.ndarray, shape (6,) or (..., 6), float64, optional
         Preallocated output, modified in place. A new array if None.
+    scalar_first : bool, optional, keyword only
+        True (the default): p is (w, x, y, z); False: (x, y, z, w).
     threads : int, optional
         Arrays only: as in `contact_function`.
 
@@ -742,6 +794,7 @@ def ellipsoid_quaternion(a, p, q=None, *, threads=1):
         `ERANGE`. q is untouched (on arrays: that item's q; the error
         names the first failing item).
     """
+    p = _scalar_first("p", p, scalar_first)
     if _batch.is_batch_of((a, 1), (p, 1)):
         return _batch.ellipsoid_quaternion(a, p, q, threads)
     a = _vector("a", a, DIM)
@@ -755,7 +808,8 @@ def ellipsoid_quaternion(a, p, q=None, *, threads=1):
     return q
 
 
-def principal_axes(q, *, threads=1):
+def principal_axes(q: ArrayLike, *,
+                   threads: int = 1) -> Tuple[_F64, _F64]:
     """Return the semi-axes and principal directions of an ellipsoid.
 
     The inverse of `ellipsoid_rotation`: eigenvectors from GSL's symmetric
@@ -800,12 +854,97 @@ def principal_axes(q, *, threads=1):
     return a, rot
 
 
-def contact_geometry(r12, q1, q2, out=None, *, threads=1):
+def principal_axes_quaternion(q: ArrayLike, *, scalar_first: bool = True,
+                              threads: int = 1) -> Tuple[_F64, _F64]:
+    """Return the semi-axes of an ellipsoid and its orientation as a unit
+    quaternion: the inverse of `ellipsoid_quaternion`.
+
+    `principal_axes`, then the quaternion of its rotation (Shepperd's
+    method, in C: ``pw85_principal_axes_quaternion``), normalised; of the
+    pair ±p, the one with w > 0. ``ellipsoid_quaternion(a, p)`` gives Q
+    back, to the accuracy of the semi-axes and directions. On an array of
+    forms (shape (..., 6)), one call of
+    ``pw85_principal_axes_quaternion_batch``.
+
+    Parameters
+    ----------
+    q : array_like, shape (6,) or (..., 6)
+        The quadratic form Q.
+    scalar_first : bool, optional, keyword only
+        True (the default): p is returned as (w, x, y, z), the order of
+        `ellipsoid_quaternion`, HOOMD-blue and LAMMPS; False: as
+        (x, y, z, w), the order of OVITO and SciPy
+        (``scipy.spatial.transform.Rotation.from_quat(p)``).
+    threads : int, optional
+        Arrays only: as in `contact_function`.
+
+    Returns
+    -------
+    a : numpy.ndarray, shape (3,) or (..., 3)
+        The semi-axes, in decreasing order.
+    p : numpy.ndarray, shape (4,) or (..., 4)
+        The unit quaternion: a[j] lies along R(p)·e_j.
+
+    Raises
+    ------
+    ValueError, TypeError
+        If q has the wrong shape or type.
+    Error
+        As `principal_axes`.
+    """
+    if _batch.is_batch_of((q, 1)):
+        a, p = _batch.principal_axes_quaternion(q, threads)
+    else:
+        q = _vector("q", q, SYM)
+        a = np.empty(DIM)
+        p = np.empty(4)
+        status = _c_principal_axes_quaternion(q.ctypes.data, a.ctypes.data,
+                                              p.ctypes.data)
+        if status != SUCCESS:
+            raise Error(status, "principal_axes_quaternion", "q = %r" % q)
+    if not scalar_first:
+        p = np.ascontiguousarray(np.roll(p, -1, axis=-1))
+    return a, p
+
+
+def _scipy_rotation(x):
+    """x if it is a scipy.spatial.transform.Rotation, else None (SciPy is
+    never imported here: a Rotation exists only if the caller imported
+    it)."""
+    module = sys.modules.get("scipy.spatial.transform")
+    rotation = getattr(module, "Rotation", None)
+    if rotation is not None and isinstance(x, rotation):
+        return x
+    return None
+
+
+def _scalar_first(name, p, scalar_first):
+    """The quaternion(s) p as (w, x, y, z): from a SciPy Rotation, or
+    reordered from (x, y, z, w) when not scalar_first."""
+    rot = _scipy_rotation(p)
+    if rot is not None:
+        return np.roll(rot.as_quat(), 1, axis=-1)  # (x, y, z, w) -> (w, ...)
+    if not isinstance(scalar_first, (bool, np.bool_)):
+        raise TypeError("scalar_first: expected a bool, got %s"
+                        % type(scalar_first).__name__)
+    if scalar_first:
+        return p
+    a = np.asarray(p)
+    if a.ndim < 1 or a.shape[-1] != 4:
+        raise ValueError("%s: expected shape (4,) or (..., 4), got %s"
+                         % (name, a.shape))
+    return np.roll(a, 1, axis=-1)
+
+
+def contact_geometry(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+                     out: Optional[_F64] = None, *,
+                     threads: int = 1) -> _F64:
     """Return μ², λ, the contact point and the common normal.
 
     One search (that of `contact_function`: the same μ², bit for bit), λ
     polished, then ``x − c1 = (1 − λ)·Q1·s`` and ``n = s/‖s‖`` with
-    s = Q(λ)⁻¹·r12 (docs/theory.rst, eqs. (3.8), (3.9a)). See the docs page
+    s = Q(λ)⁻¹·r12 (the docs page "Theory", eqs. (3.8), (3.9a)). See the docs
+    page
     "Contact geometry, forces and torques".
 
     Parameters
@@ -849,7 +988,10 @@ def contact_geometry(r12, q1, q2, out=None, *, threads=1):
     return out
 
 
-def contact_derivatives(r12, q1, q2, geometry=None, d=None, *, threads=1):
+def contact_derivatives(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+                        geometry: Optional[_F64] = None,
+                        d: Optional[_F64] = None, *,
+                        threads: int = 1) -> Tuple[_F64, _F64]:
     """Return the contact geometry and the first derivatives of μ².
 
     By the envelope theorem, with s = Q(λ)⁻¹·r12: ∂μ²/∂r12 = 2λ(1−λ)·s;

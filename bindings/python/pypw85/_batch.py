@@ -8,18 +8,26 @@ input has more axes than one item's (a, c: 0; n, a: 1; rot: 2). The leading
 axes of r12 (..., 3), q1 (..., 6) and q2 (..., 6) (or of each input before
 its item's axes) broadcast as NumPy's do; the outputs have the broadcast
 shape followed by the shape of one result. An input whose leading axes
-hold one item is passed once, with a stride of
-0 (no copy); one of the broadcast shape is passed as is when C-contiguous
+hold one item, or that is a broadcast view (stride 0 on every leading
+axis, as ``np.broadcast_to`` makes), is passed once, with a stride of 0
+(no copy); one of the broadcast shape is passed as is when C-contiguous
 float64; any other is copied to the broadcast shape. Then one C call does
 every pair, with the GIL released (ctypes releases it around a call); the
 statuses are asked for only when that call reports a failure.
 """
 
+from __future__ import annotations
+
 import ctypes
+import typing
 
 import numpy as np
 
-from ._constants import DERIV_SIZE, DIM, GEOM_SIZE, SUCCESS, SYM
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Optional
+
+from ._constants import (DERIV_SIZE, DIM, EINVAL, GEOM_SIZE, SUCCESS, SYM,
+                         UNIT_TOL)
 from ._errors import Error
 from ._libpw85 import lib
 
@@ -67,7 +75,8 @@ def _real_array(name, x, item):
     if a.ndim < len(item) or a.shape[a.ndim - len(item):] != item:
         raise ValueError("%s: expected shape %s or (...%s), got %s"
                          % (name, item, _dims(item), a.shape))
-    return a.astype(np.float64, copy=False)
+    return a  # converted to float64 by Items, after a broadcast view's
+    # record is taken (converting first would copy every item)
 
 
 def _dims(item):
@@ -101,13 +110,20 @@ class Items:
         self.inputs = []  # (array, stride)
         for a, (_, _, item) in zip(arrays, inputs):
             size = int(np.prod(item, dtype=np.int64))
+            lead = a.ndim - len(item)
+            if a.size > size and all(st == 0 or k == 1 for st, k in
+                                     zip(a.strides[:lead], a.shape[:lead])):
+                # A broadcast view (np.broadcast_to, stride 0 on every
+                # leading axis): its one record, passed with stride 0.
+                a = a[(0,) * lead]
             if a.size == size:  # one record for every item
-                a = np.ascontiguousarray(a).reshape(size)
+                a = np.ascontiguousarray(a, dtype=np.float64).reshape(size)
                 stride = 0
             else:
                 if a.shape[:a.ndim - len(item)] != self.shape:
                     a = np.broadcast_to(a, self.shape + item)
-                a = np.ascontiguousarray(a).reshape(self.n, size)
+                a = np.ascontiguousarray(a, dtype=np.float64).reshape(
+                    self.n, size)
                 stride = size
             self.inputs.append((a, stride))
 
@@ -123,17 +139,19 @@ class Items:
         """The inputs of item i (flat index), for messages."""
         return [a if stride == 0 else a[i] for a, stride in self.inputs]
 
-    def raise_first(self, code, status):
-        """Raise Error for the first failing item (status: n ints)."""
+    def raise_first(self, code, status, cause=None):
+        """Raise Error for the first failing item (status: n ints); cause:
+        what is wrong with it, if known."""
         i = int(np.flatnonzero(status)[0])
         index = np.unravel_index(i, self.shape)
         index = tuple(int(k) for k in index)
         values = ", ".join("%s = %r" % (name, value) for name, value
                            in zip(self.names, self.item(i)))
         error = Error(code, self.where,
-                      "%s %s of %s (%d of %d failed): %s"
+                      "%s %s of %s (%d of %d failed): %s%s"
                       % (self.noun, index, self.shape,
-                         np.count_nonzero(status), self.n, values))
+                         np.count_nonzero(status), self.n,
+                         cause + ": " if cause else "", values))
         error.index = index
         error.statuses = status.reshape(self.shape)
         raise error
@@ -243,9 +261,46 @@ def spheroid(a, c, n, q, threads):
     items = Items("spheroid", [("a", a, ()), ("c", c, ()), ("n", n, (DIM,))],
                   "item")
     q = output("q", q, items.shape + (SYM,))
+    _spheroid_preconditions(items)
     _unaliased(items, q)
     _call(items, lib.pw85_spheroid_batch, [q], threads)
     return q
+
+
+def _spheroid_preconditions(items):
+    """Raise Error(EINVAL) for the first item with a ≤ 0, c ≤ 0 or
+    |‖n‖² − 1| > UNIT_TOL (what pw85_spheroid_checked() refuses and
+    pw85_spheroid_batch() does not check), unless an earlier item has a
+    non-finite input (then the batch reports EDOM for it)."""
+    (a, sa), (c, sc), (n, sn) = items.inputs
+    count = items.n
+    a = np.broadcast_to(a if sa == 0 else a.reshape(count), (count,))
+    c = np.broadcast_to(c if sc == 0 else c.reshape(count), (count,))
+    n = np.broadcast_to(n, (count, DIM))
+    with np.errstate(invalid="ignore", over="ignore"):
+        nn = np.einsum("ij,ij->i", n, n)
+        finite = np.isfinite(a) & np.isfinite(c) & np.isfinite(n).all(axis=1)
+        bad = finite & ~((a > 0) & (c > 0) & (np.abs(nn - 1.0) <= UNIT_TOL))
+    if not bad.any():
+        return
+    i = int(np.flatnonzero(bad | ~finite)[0])
+    if not finite[i]:
+        return  # the batch names the non-finite item
+    status = np.where(bad, EINVAL, 0).astype(np.intc)
+    items.raise_first(EINVAL, status, spheroid_rule(a[i], c[i], n[i]))
+
+
+def spheroid_rule(a, c, n):
+    """The precondition of pw85_spheroid that (a, c, n) breaks, or None."""
+    nn = float(np.dot(n, n))
+    if not a > 0:
+        return "a = %r is not > 0" % float(a)
+    if not c > 0:
+        return "c = %r is not > 0" % float(c)
+    if not abs(nn - 1.0) <= UNIT_TOL:
+        return ("n is not a unit vector: ‖n‖² = %r, |‖n‖² − 1| > "
+                "UNIT_TOL = %g" % (nn, UNIT_TOL))
+    return None
 
 
 def ellipsoid_rotation(a, rot, q, threads):
@@ -276,7 +331,20 @@ def principal_axes(q, threads):
     return a, rot
 
 
-def batch_threads(threads=0, n=2**62):
+def principal_axes_quaternion(q, threads):
+    items = Items("principal_axes_quaternion", [("q", q, (SYM,))], "item")
+    a = np.empty(items.shape + (DIM,))
+    p = np.empty(items.shape + (4,))
+    _call(items, lib.pw85_principal_axes_quaternion_batch, [a, p], threads)
+    return a, p
+
+
+#: The default n of batch_threads: 256 pairs for each of 2³¹ − 1 threads,
+#: below the 2⁵⁶ pairs beyond which a batch runs on one thread.
+LARGE_BATCH = 256 * (2**31 - 1)
+
+
+def batch_threads(threads: int = 0, n: Optional[int] = None) -> int:
     """The number of threads a batch of n pairs runs on (pw85_batch_threads).
 
     Parameters
@@ -285,13 +353,15 @@ def batch_threads(threads=0, n=2**62):
         The count asked for: 0 (the default) for OpenMP's default
         (``OMP_NUM_THREADS`` if set, else one per processor), or k ≥ 1.
     n : int, optional
-        The number of pairs (default: a large batch).
+        The number of pairs; None (the default) for a batch large enough
+        to use every thread asked for.
 
     Returns
     -------
     int
         min(k, n // 256), at least 1; 1 when libpw85 was built without
-        OpenMP.
+        OpenMP, and for n ≥ 2⁵⁶ (pw85.h). ``batch_threads()`` is the
+        count a large batch with the default ``threads=0`` would use.
 
     Raises
     ------
@@ -299,6 +369,9 @@ def batch_threads(threads=0, n=2**62):
         If threads or n is not a count.
     """
     threads = threads_count(threads)
-    if not isinstance(n, (int, np.integer)) or n < 0:
+    if n is None:
+        n = LARGE_BATCH
+    if isinstance(n, (bool, np.bool_)) or \
+            not isinstance(n, (int, np.integer)) or not 0 <= n < 2**64:
         raise ValueError("n: expected a count ≥ 0, got %r" % (n,))
     return lib.pw85_batch_threads(threads, ctypes.c_size_t(int(n)))

@@ -54,6 +54,12 @@ LIBPW85 = {
                                         + [_DOUBLE_P] * 2 + [_INT]),
     "pw85_principal_axes_batch": (_INT, [_SIZE, _DOUBLE_P, _SIZE]
                                   + [_DOUBLE_P] * 3 + [_INT]),
+    # Since 2.3.0.
+    "pw85_spheroid_checked": (_INT, [_DOUBLE, _DOUBLE, _DOUBLE_P,
+                                     _DOUBLE_P]),
+    "pw85_principal_axes_quaternion": (_INT, [_DOUBLE_P] * 3),
+    "pw85_principal_axes_quaternion_batch": (_INT, [_SIZE, _DOUBLE_P, _SIZE]
+                                             + [_DOUBLE_P] * 3 + [_INT]),
 }
 
 #: libpw85_legacy (include/pw85/pw85_legacy.h).

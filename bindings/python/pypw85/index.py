@@ -9,23 +9,42 @@ and every periodic image (the C header documents the contract: the image
 rule, the side rule of a periodic box, the order of the results).
 
 Arrays in, arrays out: `Index.insert` takes ``(n,)`` ids, ``(n, 3)``
-centres and ``(n, 6)`` forms in one call into the library; the queries
-return NumPy arrays. The all-pairs queries and `Index.overlap_any_many`
+centres (or one ``(3,)`` centre for all) and ``(n, 6)`` forms (or one
+``(6,)`` form for all) in one call into the library; the queries return
+NumPy arrays. Ids are integers (Python ``int`` or a NumPy integer type):
+a float or a bool raises `TypeError`. An `Index` is a container of its
+ids: ``len(index)``, ``id in index``, ``for id in index`` (ascending).
+
+Errors name their cause: an input the library rejects raises `Error`
+whose message says which rule failed, for which id (and which item of a
+batch), with the numbers (``insert: ... ellipsoid 12 (item 3 of 5):
+2·√Q_00·(1 + 2⁻²⁰) = 3.1 ≥ L_0 = 3``); its attributes ``status``, ``id``
+and ``item`` give them to programs. The all-pairs queries and `Index.overlap_any_many`
 run on ``threads`` OpenMP threads (`OPENMP` says whether this libpw85 has
 them), with the GIL released, and give the same arrays for any number of
 threads.
 """
 
+from __future__ import annotations
+
 import ctypes
+import math
+import typing
 
 import numpy as np
 
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Iterator, Optional, Tuple, Union
+    from numpy.typing import ArrayLike, NDArray
+    IdLike = Union[int, np.integer]  # an id: int or a NumPy integer
+
 from ._batch import threads_count as _threads_count
+from ._constants import EDOM, EINVAL, ENOTPOSDEF
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
 
-__all__ = ["Index", "OPENMP", "NO_ID"]
+__all__ = ["Index", "OPENMP", "NO_ID", "MAX_ID"]
 
 _P = ctypes.c_void_p
 _SIZE = ctypes.c_size_t
@@ -63,6 +82,14 @@ OPENMP = bool(_lib.pw85_index_openmp())
 #: "No id": ``exclude=None`` in the queries, and the id `Index.overlap_any`
 #: returns when nothing overlaps.
 NO_ID = ctypes.c_size_t(-1).value
+#: The largest id (PW85_INDEX_MAX_ID, 2³² − 2).
+MAX_ID = 0xFFFFFFFE
+
+# The rules of pw85_index.h, for the messages: an ellipsoid narrower than
+# the box, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, and a centre within 2²⁹·L_k.
+_SIDE_MARGIN = 1.0 + 2.0**-20
+_CENTRE_REACH = 2.0**29
+
 
 
 def _array(name, x, dtype, shape):
@@ -76,8 +103,54 @@ def _array(name, x, dtype, shape):
     return a
 
 
+def _records(name, x, n, size):
+    """x as a C-contiguous (n, size) float64 array: one record of shape
+    (size,) is repeated over the n items (broadcast), else (n, size)."""
+    a = np.asarray(x)
+    if a.dtype.kind not in "iuf":
+        raise TypeError("%s: expected real numbers, got an array of dtype %s"
+                        % (name, a.dtype))
+    if a.shape == (size,):
+        a = np.broadcast_to(a, (n, size))
+    elif a.shape != (n, size):
+        raise ValueError("%s: expected shape (%d,) or (%d, %d), got %s"
+                         % (name, size, n, size, a.shape))
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
 def _ptr(a):
     return a.ctypes.data if a.size else None
+
+
+def _id(name, value):
+    """value as an id (int), or raise: TypeError for anything but an
+    integer (a float or a bool included), ValueError out of [0, MAX_ID]."""
+    if isinstance(value, (bool, np.bool_)) or \
+            not isinstance(value, (int, np.integer)):
+        raise TypeError("%s: an id is an integer, got %s %r"
+                        % (name, type(value).__name__, value))
+    v = int(value)
+    if not 0 <= v <= MAX_ID:
+        raise ValueError("%s: an id is an integer from 0 to MAX_ID = %d, "
+                         "got %d" % (name, MAX_ID, v))
+    return v
+
+
+def _ids(name, values):
+    """values (an integer or an array of integers) as (n,) uintp ids."""
+    if np.ndim(values) == 0:
+        return np.array([_id(name, values)], dtype=np.uintp)
+    a = np.asarray(values)
+    if a.dtype.kind not in "iu":
+        raise TypeError("%s: ids are integers, got an array of dtype %s"
+                        % (name, a.dtype))
+    if a.ndim != 1:
+        raise ValueError("%s: expected shape (n,), got %s" % (name, a.shape))
+    if a.size and (a.min() < 0 or a.max() > MAX_ID):
+        k = int(np.flatnonzero((a < 0) | (a > MAX_ID))[0])
+        raise ValueError("%s: an id is an integer from 0 to MAX_ID = %d, "
+                         "got %d (item %d)" % (name, MAX_ID, int(a[k]), k))
+    return a.astype(np.uintp)
 
 
 def _check(status, where):
@@ -85,12 +158,8 @@ def _check(status, where):
         raise Error(status, where)
 
 
-def _id(name, value):
-    v = int(value)
-    if v < 0:
-        raise ValueError("%s: an id is a non-negative integer, got %d"
-                         % (name, v))
-    return v
+def _fmt(x):
+    return "%.17g" % x
 
 
 class Index:
@@ -99,25 +168,48 @@ class Index:
     Parameters
     ----------
     box : array_like of 3 floats, optional
-        The sides of a periodic orthorhombic box; None (default) for an
-        open domain.
+        The sides of a periodic orthorhombic box (each > 0 and finite);
+        None (default) for an open domain.
 
     An `Index` holds library memory: it is freed by `close` (or by the
     ``with`` statement, or when the object is collected). Modifying calls
     must not run concurrently with other calls on the same index; queries
     may.
+
+    It is a container of the ids it stores: ``len(index)``,
+    ``id in index``, ``iter(index)`` (the ids, ascending); ``repr`` shows
+    the box and the count.
+
+    Returns
+    -------
+    Index
+        An empty index.
+
+    Raises
+    ------
+    Error
+        `EDOM` if a side is not finite, `EINVAL` if one is not > 0 (the
+        message names the side).
     """
 
-    def __init__(self, box=None):
+    def __init__(self, box: Optional[ArrayLike] = None) -> None:
         self._handle = None
+        self._stored = set()
         b = None if box is None else _array("box", box, np.float64, (3,))
         handle = _P()
-        _check(_lib.pw85_index_create(None if b is None else _ptr(b),
-                                      ctypes.byref(handle)), "Index")
+        code = _lib.pw85_index_create(None if b is None else _ptr(b),
+                                      ctypes.byref(handle))
+        if code != 0:
+            k = int(np.flatnonzero(~(np.isfinite(b) & (b > 0)))[0])
+            rule = ("is not finite" if not math.isfinite(b[k])
+                    else "is not > 0")
+            raise Error(code, "Index", "box side L_%d = %s %s"
+                        % (k, _fmt(b[k]), rule))
         self._handle = handle
+        #: The sides of the periodic box (a copy), or None.
         self.box = None if b is None else b.copy()
 
-    def close(self):
+    def close(self) -> None:
         """Free the library's memory; the index is unusable afterwards."""
         if self._handle is not None:
             _lib.pw85_index_destroy(self._handle)
@@ -126,10 +218,10 @@ class Index:
     def __del__(self):
         self.close()
 
-    def __enter__(self):
+    def __enter__(self) -> "Index":
         return self
 
-    def __exit__(self, *exc):
+    def __exit__(self, *exc) -> None:
         self.close()
 
     def _h(self):
@@ -137,73 +229,211 @@ class Index:
             raise ValueError("the index is closed")
         return self._handle
 
-    def __len__(self):
+    def __len__(self) -> int:
         n = _SIZE()
         _check(_lib.pw85_index_count(self._h(), ctypes.byref(n)), "len")
         return n.value
 
-    def insert(self, ids, centres, q):
+    def __contains__(self, id: object) -> bool:
+        """True if ``id`` (an integer) is stored; False for anything else."""
+        self._h()
+        if isinstance(id, (bool, np.bool_)) or \
+                not isinstance(id, (int, np.integer)):
+            return False
+        return int(id) in self._stored
+
+    def __iter__(self) -> Iterator[int]:
+        """The stored ids, ascending (a snapshot: the index may change
+        while the iterator runs)."""
+        self._h()
+        return iter(sorted(self._stored))
+
+    def __repr__(self) -> str:
+        if self._handle is None:
+            return "<pypw85.Index (closed)>"
+        domain = ("open domain" if self.box is None else
+                  "periodic box %s" % ", ".join(_fmt(x) for x in self.box)
+                  .join("()"))
+        n = len(self)
+        return "<pypw85.Index: %s, %d ellipsoid%s>" % (
+            domain, n, "" if n == 1 else "s")
+
+    # -- the causes of EINVAL and friends (pw85_index.h), for messages --
+
+    def _placement(self, c, f):
+        """The rule of the box that (c, f) breaks, or None."""
+        if self.box is None:
+            return None
+        for k, (d, side) in enumerate(zip(f[[0, 3, 5]], self.box)):
+            width = 2.0 * math.sqrt(d) * _SIDE_MARGIN if d > 0 else 0.0
+            if not width < side:
+                return ("2·√Q_%d%d·(1 + 2⁻²⁰) = %s ≥ L_%d = %s (an ellipsoid "
+                        "must be narrower than the box)"
+                        % (k, k, _fmt(width), k, _fmt(side)))
+        for k, (x, side) in enumerate(zip(c, self.box)):
+            if not abs(x) <= _CENTRE_REACH * side:
+                return ("|c_%d| = %s > 2²⁹·L_%d = %s (a centre must lie "
+                        "within 2²⁹ box sides of the origin)"
+                        % (k, _fmt(abs(x)), k, _fmt(_CENTRE_REACH * side)))
+        return None
+
+    def _cause(self, c, f, id=None, new=False, seen=(), code=None):
+        """What makes (id, c, f) fail (the checks of pw85_index_insert()),
+        or None; of several, one with status code if given."""
+        causes = []
+        for name, x in (("centre", c), ("q", f)):
+            if not np.isfinite(x).all():
+                causes.append((EDOM, "%s = %r is not finite"
+                               % (name, x.tolist())))
+        if id is not None:
+            if new and (id in self._stored or id in seen):
+                causes.append((EINVAL, "id %d is already %s" % (
+                    id, "stored" if id in self._stored else
+                    "used by an earlier item of this call")))
+            if not new and id not in self._stored:
+                causes.append((EINVAL, "id %d is not stored" % id))
+        if not causes:
+            probe = np.empty(6)
+            _lib.pw85__cholesky_decomp(f.ctypes.data, probe.ctypes.data)
+            if math.isnan(probe[0]):  # the rule of pw85.h
+                causes.append((ENOTPOSDEF, "q = %r is not positive definite"
+                               % f.tolist()))
+            rule = self._placement(c, f)
+            if rule is not None:
+                causes.append((EINVAL, rule))
+        for status, text in causes:
+            if status == code:
+                return text
+        return causes[0][1] if causes else None
+
+    def _raise(self, code, where, c, f, id=None, new=False, seen=(),
+               item=None, n=None):
+        """Raise Error(code) naming the cause, the id and the item."""
+        detail = self._cause(c, f, id, new, seen, code) or \
+            "centre = %r, q = %r" % (c.tolist(), f.tolist())
+        if id is not None:
+            who = "ellipsoid %d" % id
+            if item is not None:
+                who += " (item %d of %d)" % (item, n)
+            detail = who + ": " + detail
+        error = Error(code, where, detail)
+        error.id = id
+        error.item = item
+        raise error
+
+    def insert(self, ids: Union[IdLike, ArrayLike], centres: ArrayLike,
+               q: ArrayLike) -> None:
         """Insert ellipsoids, all or none.
 
         ``ids`` of shape ``(n,)`` (or one int), ``centres`` ``(n, 3)`` (or
-        ``(3,)``), ``q`` ``(n, 6)`` (or ``(6,)``). Raises `Error` (status
-        `EINVAL` for an id in use, `ENOTPOSDEF`, `EDOM`, ...), the index
-        then unchanged.
+        one ``(3,)`` centre for all), ``q`` ``(n, 6)`` (or one ``(6,)``
+        form for all). Raises `TypeError` for ids that are not integers,
+        `ValueError` for a negative one or a bad shape, `Error` for an
+        input the library rejects (`EINVAL`: an id in use, or repeated, or
+        in a periodic box an ellipsoid not narrower than the box or a
+        centre beyond 2²⁹ sides; `ENOTPOSDEF`; `EDOM`), naming the first
+        failing item, its id and the rule; the index is then unchanged.
         """
         one = np.ndim(ids) == 0
-        if (np.asarray(ids) < 0).any():
-            raise ValueError("ids: non-negative integers expected")
-        i = _array("ids", [ids] if one else ids, np.uintp, (-1,))
-        c = _array("centres", [centres] if one else centres, np.float64,
-                   (i.size, 3))
-        f = _array("q", [q] if one else q, np.float64, (i.size, 6))
-        _check(_lib.pw85_index_insert_many(self._h(), i.size, _ptr(i),
-                                           _ptr(c), _ptr(f)), "insert")
+        i = _ids("ids", ids)
+        c = _records("centres", centres, i.size, 3)
+        f = _records("q", q, i.size, 6)
+        code = _lib.pw85_index_insert_many(self._h(), i.size, _ptr(i),
+                                           _ptr(c), _ptr(f))
+        if code != 0:
+            # The index is unchanged: find the first item that fails
+            # (pw85_index_insert_many reports the first error met, in
+            # order), and say why.
+            seen = set()
+            for k in range(i.size):
+                ident = int(i[k])
+                if self._cause(c[k], f[k], ident, True, seen):
+                    self._raise(code, "insert", c[k], f[k], ident, True,
+                                seen, None if one else k, i.size)
+                seen.add(ident)
+            raise Error(code, "insert")
+        self._stored.update(i.tolist())
 
-    def update(self, id, centre, q):
-        """Move or reshape the stored ellipsoid ``id``."""
+    def update(self, id: IdLike, centre: ArrayLike, q: ArrayLike) -> None:
+        """Move or reshape the stored ellipsoid ``id``.
+
+        Raises `Error` as `insert` (`EINVAL` also for an id not stored),
+        naming the rule; the index is then unchanged.
+        """
+        ident = _id("id", id)
         c = _array("centre", centre, np.float64, (3,))
         f = _array("q", q, np.float64, (6,))
-        _check(_lib.pw85_index_update(self._h(), _id("id", id), _ptr(c),
-                                      _ptr(f)), "update")
+        code = _lib.pw85_index_update(self._h(), ident, _ptr(c), _ptr(f))
+        if code != 0:
+            self._raise(code, "update", c, f, ident)
 
-    def remove(self, id):
-        """Remove the stored ellipsoid ``id``."""
-        _check(_lib.pw85_index_remove(self._h(), _id("id", id)), "remove")
+    def remove(self, id: IdLike) -> None:
+        """Remove the stored ellipsoid ``id`` (`Error` `EINVAL` if it is
+        not stored)."""
+        ident = _id("id", id)
+        code = _lib.pw85_index_remove(self._h(), ident)
+        if code != 0:
+            raise Error(code, "remove", "id %d is not stored" % ident)
+        self._stored.discard(ident)
 
-    def get(self, id):
-        """(centre, q) of the stored ellipsoid ``id``, as inserted."""
+    def get(self, id: IdLike) -> Tuple[NDArray[np.float64],
+                                      NDArray[np.float64]]:
+        """(centre, q) of the stored ellipsoid ``id``, as inserted (`Error`
+        `EINVAL` if it is not stored)."""
+        ident = _id("id", id)
         c = np.empty(3)
         f = np.empty(6)
-        _check(_lib.pw85_index_get(self._h(), _id("id", id), _ptr(c),
-                                   _ptr(f)), "get")
+        code = _lib.pw85_index_get(self._h(), ident, _ptr(c), _ptr(f))
+        if code != 0:
+            raise Error(code, "get", "id %d is not stored" % ident)
         return c, f
 
-    def overlap_any(self, centre, q, exclude=None):
+    def _candidate_error(self, code, where, c, f, item=None, n=None):
+        if code == EDOM or code == ENOTPOSDEF:
+            detail = self._cause(c, f, code=code)
+        else:
+            rule = self._placement(c, np.ones(6))  # the centre rule only
+            detail = rule if code == EINVAL and rule else (
+                "centre = %r, q = %r" % (c.tolist(), f.tolist()))
+        if item is not None:
+            detail = "candidate %d of %d: %s" % (item, n, detail)
+        error = Error(code, where, detail)
+        error.item = item
+        return error
+
+    def overlap_any(self, centre: ArrayLike, q: ArrayLike,
+                    exclude: Optional[IdLike] = None
+                    ) -> Tuple[int, Optional[int]]:
         """Does a candidate overlap a stored ellipsoid (skipping ``exclude``)?
 
         Returns ``(result, id)``: result -1 (some overlap; stops at the
         first), 0 (none overlaps, some is tangent to 4 ulps) or +1, and the
-        id of an ellipsoid with that result (None for +1).
+        id of an ellipsoid with that result (None for +1). The result is
+        an int, not a bool: test ``result < 0`` for "overlaps".
         """
         c = _array("centre", centre, np.float64, (3,))
         f = _array("q", q, np.float64, (6,))
         result = _INT()
         found = _SIZE()
-        _check(_lib.pw85_index_overlap_any(
+        code = _lib.pw85_index_overlap_any(
             self._h(), _ptr(c), _ptr(f),
             NO_ID if exclude is None else _id("exclude", exclude),
-            ctypes.byref(result), ctypes.byref(found)), "overlap_any")
+            ctypes.byref(result), ctypes.byref(found))
+        if code != 0:
+            raise self._candidate_error(code, "overlap_any", c, f)
         return result.value, (None if found.value == NO_ID else found.value)
 
-    def overlap_any_many(self, centres, q, exclude=None, threads=1):
+    def overlap_any_many(self, centres: ArrayLike, q: ArrayLike,
+                         exclude: Optional[ArrayLike] = None,
+                         threads: int = 1
+                         ) -> Tuple[NDArray[np.intc], NDArray[np.int64]]:
         """`overlap_any` for n candidates in one call, each decided against
         the stored ellipsoids only (not against each other).
 
-        ``centres`` ``(n, 3)``, ``q`` ``(n, 6)``; ``exclude`` None, or
-        ``(n,)`` ids, -1 for none. ``threads``: 1, 0 (OpenMP's default) or
-        up to that many (none started below 512 candidates); the results
-        do not depend on it.
+        ``centres`` ``(n, 3)``, ``q`` ``(n, 6)`` (or one ``(6,)`` form for
+        all); ``exclude`` None, or ``(n,)`` ids, -1 for none. ``threads``:
+        1, 0 (OpenMP's default) or up to that many (none started below 512
+        candidates); the results do not depend on it.
 
         Returns ``(results, ids)``: ``(n,)`` ints (-1, 0, +1, as
         `overlap_any`) and ``(n,)`` int64 ids (-1 where the result is +1).
@@ -218,7 +448,7 @@ class Index:
         threads = _threads_count(threads)
         c = _array("centres", centres, np.float64, (-1, 3))
         n = c.shape[0]
-        f = _array("q", q, np.float64, (n, 6))
+        f = _records("q", q, n, 6)
         ex = None
         if exclude is not None:
             e = np.asarray(exclude)
@@ -243,17 +473,20 @@ class Index:
             code = _lib.pw85_index_overlap_any_batch(*args, _ptr(status),
                                                      threads)
             i = int(np.flatnonzero(status)[0])
-            error = Error(code, "overlap_any_many",
-                          "candidate %d of %d (%d failed): centre = %r, "
-                          "q = %r" % (i, n, np.count_nonzero(status),
-                                      c[i].tolist(), f[i].tolist()))
+            error = self._candidate_error(code, "overlap_any_many", c[i],
+                                          f[i], i, n)
+            error.detail += " (%d of %d failed)" % (
+                np.count_nonzero(status), n)
             error.index = i
             error.statuses = status
             raise error
         # NO_ID (2⁶⁴ − 1) becomes -1.
         return results, found.astype(np.int64)
 
-    def within(self, centre, q, t=1.0, exclude=None):
+    def within(self, centre: ArrayLike, q: ArrayLike, t: float = 1.0,
+               exclude: Optional[IdLike] = None
+               ) -> Tuple[NDArray[np.int64], NDArray[np.intc],
+                          NDArray[np.float64]]:
         """Every stored ellipsoid and image with μ² < t from a candidate.
 
         Returns ``(ids, shifts, mu2_lambda)`` of shapes ``(m,)``,
@@ -263,41 +496,59 @@ class Index:
         c = _array("centre", centre, np.float64, (3,))
         f = _array("q", q, np.float64, (6,))
         ex = NO_ID if exclude is None else _id("exclude", exclude)
+        t = float(t)
+        if not t > 0:
+            raise Error(EDOM if math.isnan(t) else EINVAL, "within",
+                        "t = %s is not > 0" % _fmt(t))
 
         def call(cap, ids, shifts, ml, count):
             return _lib.pw85_index_within(self._h(), _ptr(c), _ptr(f),
-                                          float(t), ex, cap, ids, shifts, ml,
+                                          t, ex, cap, ids, shifts, ml,
                                           count)
-        return self._collect(call, 1, np.float64, "within", 16)
+        return self._collect(call, 1, np.float64, "within", 16,
+                             lambda code: self._candidate_error(
+                                 code, "within", c, f))
 
-    def overlapping_pairs(self, threads=1):
+    def overlapping_pairs(self, threads: int = 1
+                          ) -> Tuple[NDArray[np.int64], NDArray[np.intc],
+                                     NDArray[np.intc]]:
         """Every overlapping (or tangent) pair, each once.
 
-        Returns ``(ids, shifts, results)`` of shapes ``(m, 2)``,
-        ``(m, 3)``, ``(m,)``: pairs (i, j), i < j, the image shift of j,
-        and -1 (overlap) or 0 (tangent to 4 ulps); sorted by i, j, shift.
+        ``threads`` ≥ 1. Returns ``(ids, shifts, results)`` of shapes
+        ``(m, 2)``, ``(m, 3)``, ``(m,)``: pairs (i, j), i < j, the image
+        shift of j, and -1 (overlap) or 0 (tangent to 4 ulps); sorted by
+        i, j, shift.
         """
+        threads = _pair_threads("overlapping_pairs", threads)
+
         def call(cap, ids, shifts, res, count):
             return _lib.pw85_index_overlapping_pairs(
-                self._h(), int(threads), cap, ids, shifts, res, count)
+                self._h(), threads, cap, ids, shifts, res, count)
         return self._collect(call, 2, np.intc, "overlapping_pairs",
                              4 * len(self) + 16)
 
-    def pairs_within(self, t, threads=1):
+    def pairs_within(self, t: float, threads: int = 1
+                     ) -> Tuple[NDArray[np.int64], NDArray[np.intc],
+                                NDArray[np.float64]]:
         """Every pair (and image) with μ² < t, each once.
 
-        Returns ``(ids, shifts, mu2_lambda)`` of shapes ``(m, 2)``,
-        ``(m, 3)``, ``(m, 2)``, sorted by i, j, shift.
+        ``threads`` ≥ 1. Returns ``(ids, shifts, mu2_lambda)`` of shapes
+        ``(m, 2)``, ``(m, 3)``, ``(m, 2)``, sorted by i, j, shift.
         """
+        threads = _pair_threads("pairs_within", threads)
+        t = float(t)
+        if not t > 0:
+            raise Error(EDOM if math.isnan(t) else EINVAL, "pairs_within",
+                        "t = %s is not > 0" % _fmt(t))
+
         def call(cap, ids, shifts, ml, count):
             return _lib.pw85_index_pairs_within(
-                self._h(), float(t), int(threads), cap, ids, shifts, ml,
-                count)
+                self._h(), t, threads, cap, ids, shifts, ml, count)
         return self._collect(call, 2, np.float64, "pairs_within",
                              8 * len(self) + 16)
 
     @staticmethod
-    def _collect(call, ids_per_row, value_dtype, where, guess):
+    def _collect(call, ids_per_row, value_dtype, where, guess, error=None):
         """Call with room for `guess` results, then again if too few."""
         count = _SIZE()
         cap = guess
@@ -306,11 +557,24 @@ class Index:
             shifts = np.empty((cap, 3), dtype=np.intc)
             values = (np.empty(cap, dtype=np.intc) if value_dtype is np.intc
                       else np.empty((cap, 2), dtype=np.float64))
-            _check(call(cap, _ptr(ids), _ptr(shifts), _ptr(values),
-                        ctypes.byref(count)), where)
+            code = call(cap, _ptr(ids), _ptr(shifts), _ptr(values),
+                        ctypes.byref(count))
+            if code != 0:
+                raise error(code) if error else Error(code, where)
             if count.value <= cap:
                 break
             cap = count.value
         m = count.value
         ids = ids[:m, 0] if ids_per_row == 1 else ids[:m]
         return ids.astype(np.int64), shifts[:m].copy(), values[:m].copy()
+
+
+def _pair_threads(where, threads):
+    """threads of the all-pairs queries: an int ≥ 1 (EINVAL otherwise)."""
+    if isinstance(threads, (bool, np.bool_)) or \
+            not isinstance(threads, (int, np.integer)):
+        raise TypeError("threads: expected an int, got %s"
+                        % type(threads).__name__)
+    if threads < 1 or threads > 2**31 - 1:
+        raise Error(EINVAL, where, "threads = %d is not ≥ 1" % threads)
+    return int(threads)

@@ -16,17 +16,27 @@ Importing this module raises `ImportError`, listing the places tried, when
 none works (for example when pw85 was configured with ``-Dlegacy=false``).
 """
 
-import math
+from __future__ import annotations
 
-from ._constants import DIM, ENOTPOSDEF, SUCCESS, SYM
+import math as _math
+import typing
+
+import numpy as _np
+
+if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
+    from typing import Optional
+    from numpy.typing import ArrayLike, NDArray
+
+from ._constants import (DIM as _DIM, ENOTPOSDEF as _ENOTPOSDEF,
+                         SUCCESS as _SUCCESS, SYM as _SYM)
 from ._constants import ENOCONV as _ENOCONV
 from ._convert import (
     check_finite as _check_finite, output as _output, real as _real,
     unaliased as _unaliased, vector as _vector,
 )
-from ._errors import Error
-from ._loader import load_library
-from ._symbols import LIBPW85_LEGACY, declare
+from ._errors import Error as _Error
+from ._loader import load_library as _load_library
+from ._symbols import LIBPW85_LEGACY as _LIBPW85_LEGACY, declare as _declare
 
 __all__ = [
     "ENOCONV", "contact_function1", "contact_function2", "f1", "f2",
@@ -36,9 +46,9 @@ __all__ = [
 #: (PW85_ENOCONV of pw85.h; the same value as `pypw85.ENOCONV`).
 ENOCONV = _ENOCONV
 
-_lib, _library_path = load_library(
-    "pw85_legacy", "PW85_LEGACY_LIBRARY", "LIBPW85_LEGACY", LIBPW85_LEGACY)
-declare(_lib, LIBPW85_LEGACY)
+_lib, _library_path = _load_library(
+    "pw85_legacy", "PW85_LEGACY_LIBRARY", "LIBPW85_LEGACY", _LIBPW85_LEGACY)
+_declare(_lib, _LIBPW85_LEGACY)
 
 _c_det_sym = _lib.pw85_legacy__det_sym
 _c_xT_adjA_x = _lib.pw85_legacy__xT_adjA_x
@@ -72,7 +82,7 @@ def _det_sym(a):
     Error
         `pypw85.EDOM` if an entry of a is not finite.
     """
-    a = _vector("a", a, SYM)
+    a = _vector("a", a, _SYM)
     _check_finite("_det_sym", a=a)
     return _c_det_sym(a.ctypes.data)
 
@@ -103,8 +113,8 @@ def _xT_adjA_x(x, a):
     Error
         `pypw85.EDOM` if an input is not finite.
     """
-    x = _vector("x", x, DIM)
-    a = _vector("a", a, SYM)
+    x = _vector("x", x, _DIM)
+    a = _vector("a", a, _SYM)
     _check_finite("_xT_adjA_x", x=x, a=a)
     return _c_xT_adjA_x(x.ctypes.data, a.ctypes.data)
 
@@ -141,11 +151,11 @@ def _detQ_as_poly(q1, q2, q3=None, q4=None, b=None):
     Error
         `pypw85.EDOM` if an input is not finite (b untouched).
     """
-    q1 = _vector("q1", q1, SYM)
-    q2 = _vector("q2", q2, SYM)
-    q3 = 2.0 * q1 - q2 if q3 is None else _vector("q3", q3, SYM)
-    q4 = 0.5 * (q1 + q2) if q4 is None else _vector("q4", q4, SYM)
-    b = _output("b", b, DIM + 1)
+    q1 = _vector("q1", q1, _SYM)
+    q2 = _vector("q2", q2, _SYM)
+    q3 = 2.0 * q1 - q2 if q3 is None else _vector("q3", q3, _SYM)
+    q4 = 0.5 * (q1 + q2) if q4 is None else _vector("q4", q4, _SYM)
+    b = _output("b", b, _DIM + 1)
     q1, q2, q3, q4 = _unaliased(b, q1, q2, q3, q4)
     _check_finite("_detQ_as_poly", q1=q1, q2=q2, q3=q3, q4=q4)
     _c_detQ_as_poly(q1.ctypes.data, q2.ctypes.data, q3.ctypes.data,
@@ -184,11 +194,11 @@ def _rT_adjQ_r_as_poly(r, q1, q2, q3=None, a=None):
     Error
         `pypw85.EDOM` if an input is not finite (a untouched).
     """
-    r = _vector("r", r, DIM)
-    q1 = _vector("q1", q1, SYM)
-    q2 = _vector("q2", q2, SYM)
-    q3 = 2.0 * q1 - q2 if q3 is None else _vector("q3", q3, SYM)
-    a = _output("a", a, DIM)
+    r = _vector("r", r, _DIM)
+    q1 = _vector("q1", q1, _SYM)
+    q2 = _vector("q2", q2, _SYM)
+    q3 = 2.0 * q1 - q2 if q3 is None else _vector("q3", q3, _SYM)
+    a = _output("a", a, _DIM)
     r, q1, q2, q3 = _unaliased(a, r, q1, q2, q3)
     _check_finite("_rT_adjQ_r_as_poly", r=r, q1=q1, q2=q2, q3=q3)
     _c_rT_adjQ_r_as_poly(r.ctypes.data, q1.ctypes.data, q2.ctypes.data,
@@ -199,9 +209,9 @@ def _rT_adjQ_r_as_poly(r, q1, q2, q3=None, a=None):
 def _f(where, c_function, size, lambda_, r12, q1, q2, out):
     """Call pw85_legacy_f1 or _f2 (out: None or `size` doubles)."""
     lambda_ = _real("lambda_", lambda_)
-    r12 = _vector("r12", r12, DIM)
-    q1 = _vector("q1", q1, SYM)
-    q2 = _vector("q2", q2, SYM)
+    r12 = _vector("r12", r12, _DIM)
+    q1 = _vector("q1", q1, _SYM)
+    q2 = _vector("q2", q2, _SYM)
     if out is None:
         out_p = None
     else:
@@ -210,14 +220,15 @@ def _f(where, c_function, size, lambda_, r12, q1, q2, out):
         out_p = out.ctypes.data
     value = c_function(lambda_, r12.ctypes.data, q1.ctypes.data,
                        q2.ctypes.data, out_p)
-    if math.isnan(value):
+    if _math.isnan(value):
         _check_finite(where, lambda_=lambda_, r12=r12, q1=q1, q2=q2)
-        raise Error(ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
+        raise _Error(_ENOTPOSDEF, where, "Q(λ) = (1−λ)·Q1 + λ·Q2 with "
                     "λ = %r: q1 = %r, q2 = %r" % (lambda_, q1, q2))
     return value
 
 
-def f1(lambda_, r12, q1, q2, out=None):
+def f1(lambda_: float, r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+       out: Optional[NDArray[_np.float64]] = None) -> float:
     """Return f(λ) = λ(1−λ)·r12ᵀ·Q⁻¹·r12, Q = (1−λ)·Q1 + λ·Q2, and f′, f″.
 
     Implementation #1 (docs/implementation.rst, "Implementation 1"): a Cholesky factorisation of Q,
@@ -253,7 +264,8 @@ def f1(lambda_, r12, q1, q2, out=None):
     return _f("f1", _c_f1, 3, lambda_, r12, q1, q2, out)
 
 
-def f2(lambda_, r12, q1, q2, out=None):
+def f2(lambda_: float, r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+       out: Optional[NDArray[_np.float64]] = None) -> float:
     """Alternative implementation of `f1`: f(λ) as a rational fraction.
 
     Implementation #2 (docs/implementation.rst, "Implementation 2"): f(λ) = λ(1−λ)·a(λ)/b(λ), with
@@ -274,20 +286,22 @@ def f2(lambda_, r12, q1, q2, out=None):
 
 
 def _contact(where, c_function, r12, q1, q2, out):
-    r12 = _vector("r12", r12, DIM)
-    q1 = _vector("q1", q1, SYM)
-    q2 = _vector("q2", q2, SYM)
+    r12 = _vector("r12", r12, _DIM)
+    q1 = _vector("q1", q1, _SYM)
+    q2 = _vector("q2", q2, _SYM)
     out = _output("out", out, 2)
     r12, q1, q2 = _unaliased(out, r12, q1, q2)
     status = c_function(r12.ctypes.data, q1.ctypes.data, q2.ctypes.data,
                         out.ctypes.data)
-    if status != SUCCESS:
-        raise Error(status, where,
+    if status != _SUCCESS:
+        raise _Error(status, where,
                     "r12 = %r, q1 = %r, q2 = %r" % (r12, q1, q2))
     return out
 
 
-def contact_function1(r12, q1, q2, out=None):
+def contact_function1(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+                       out: Optional[NDArray[_np.float64]] = None
+                       ) -> NDArray[_np.float64]:
     """Return μ² and λ by Newton-Raphson iterations on f′(λ) = 0.
 
     Starts from λ = ½ with the f′ and f″ of `f1`. Not robust: prefer
@@ -306,7 +320,9 @@ def contact_function1(r12, q1, q2, out=None):
                     out)
 
 
-def contact_function2(r12, q1, q2, out=None):
+def contact_function2(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
+                       out: Optional[NDArray[_np.float64]] = None
+                       ) -> NDArray[_np.float64]:
     """Return μ² and λ by bisection on the numerator of f′ (a polynomial).
 
     f′(λ) = c(λ)/b(λ)², c of degree 6 (docs/implementation.rst, "Implementation 2", eqs. (4.13)-(4.15));

@@ -1,0 +1,359 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""Issue 30, the faces users touch: quaternions in either order and back,
+errors that name their cause, the spheroid's preconditions, a Pythonic
+Index, batch_threads(), broadcast views without copies, type hints.
+
+References are computed here with mpmath at 40 digits from the formulas
+(the rotation of a quaternion, Q = R·diag(a²)·Rᵀ), never by pypw85."""
+
+import __future__
+import inspect
+import math
+import os
+import pathlib
+import pydoc
+import subprocess
+import sys
+import tracemalloc
+import types
+
+import mpmath
+import numpy as np
+import pytest
+
+import pypw85
+import pypw85.index
+
+mpmath.mp.dps = 40
+U = 2.0**-53
+
+
+# ---------------------------------------------------------------------------
+# Item 1: quaternions, (w, x, y, z) or (x, y, z, w), SciPy, and back.
+
+def mp_rotation(w, x, y, z):
+    """R(p) for p = (w, x, y, z) normalised, in mpmath: v ↦ p·v·p*."""
+    w, x, y, z = (mpmath.mpf(float(t)) for t in (w, x, y, z))
+    n = w * w + x * x + y * y + z * z
+    w, x, y, z = (t / mpmath.sqrt(n) for t in (w, x, y, z))
+    return mpmath.matrix([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def mp_form(a, r):
+    """Q = R·diag(a²)·Rᵀ in mpmath, as 6 stored entries rounded to double."""
+    d = mpmath.diag([mpmath.mpf(float(t)) ** 2 for t in a])
+    m = r * d * r.T
+    return np.array([float(m[i, j]) for i in range(3) for j in range(i, 3)])
+
+
+def random_quaternions(n, seed):
+    rng = np.random.default_rng(seed)
+    p = rng.normal(size=(n, 4))
+    return p / np.linalg.norm(p, axis=1)[:, None]
+
+
+A = np.array([3.0, 1.5, 0.5])
+
+
+def close_forms(q, ref):
+    # pw85.h: each entry within u·|Q_k| + 2⁻¹⁰⁰·max a²; the reference is
+    # itself rounded once (u·|Q_k|): 2u·max a² bounds both.
+    return np.abs(q - ref).max() <= 2 * U * A.max() ** 2
+
+
+def test_quaternion_scalar_first_and_last():
+    """The same ellipsoid from (w, x, y, z) by default and from
+    (x, y, z, w) with scalar_first=False; the wrong order is another
+    ellipsoid (the silent mistake of the issue)."""
+    for p in random_quaternions(20, 1):
+        ref = mp_form(A, mp_rotation(*p))
+        assert close_forms(pypw85.ellipsoid_quaternion(A, p), ref)
+        xyzw = np.roll(p, -1)
+        assert close_forms(
+            pypw85.ellipsoid_quaternion(A, xyzw, scalar_first=False), ref)
+    p = random_quaternions(20, 2)
+    refs = np.array([mp_form(A, mp_rotation(*pk)) for pk in p])
+    q = pypw85.ellipsoid_quaternion(A, np.roll(p, -1, axis=1),
+                                    scalar_first=False)
+    assert all(close_forms(qk, rk) for qk, rk in zip(q, refs))
+    wrong = pypw85.ellipsoid_quaternion(A, np.roll(p, -1, axis=1))
+    assert np.abs(wrong - refs).max() > 1.0
+    with pytest.raises(TypeError):
+        pypw85.ellipsoid_quaternion(A, p[0], scalar_first="no")
+    for f in (pypw85.ellipsoid_quaternion, pypw85.principal_axes_quaternion):
+        assert "OVITO" in f.__doc__ and "SciPy" in f.__doc__
+        assert "(x, y, z, w)" in f.__doc__
+
+
+def test_scipy_rotation_accepted():
+    transform = pytest.importorskip("scipy.spatial.transform")
+    p = random_quaternions(10, 3)
+    rot = transform.Rotation.from_quat(np.roll(p, -1, axis=1))  # x, y, z, w
+    refs = np.array([mp_form(A, mp_rotation(*pk)) for pk in p])
+    for q in (pypw85.ellipsoid_quaternion(A, rot),
+              pypw85.ellipsoid_quaternion(A, rot, scalar_first=False),
+              pypw85.ellipsoid_rotation(A, rot)):
+        assert q.shape == (10, 6)
+        # ellipsoid_rotation takes SciPy's matrix as given, orthonormal to
+        # a few u only: Q moves by a few u·max a² (measured 7.1 at worst
+        # on 300 rotations of this generator).
+        assert np.abs(q - refs).max() <= 16 * U * A.max() ** 2
+    one = pypw85.ellipsoid_quaternion(A, rot[0])
+    assert close_forms(one, refs[0])
+
+
+def column_error(r_out, r_ref):
+    """max over j of the distance from column j of r_out to ± column j of
+    r_ref (both mpmath)."""
+    worst = 0.0
+    for j in range(3):
+        worst = max(worst, min(
+            max(float(abs(r_out[i, j] - sign * r_ref[i, j]))
+                for i in range(3)) for sign in (1, -1)))
+    return worst
+
+
+def test_principal_axes_quaternion_against_mpmath():
+    """Forms built at 40 digits from known semi-axes (distinct: 3, 1.5,
+    0.5) and quaternions, rounded: the semi-axes come back within 8u·a0
+    (measured 1.7u on 300 forms of this generator) and each direction,
+    up to its sign, within 16u (measured 7.2u: the rounding of Q turns
+    the directions by a few u·‖Q‖/gap, the gaps of the a² being 6.75 and
+    2 of 9); Q is rebuilt within 16u·‖Q‖ (measured 4.4u)."""
+    p = random_quaternions(30, 4)
+    for pk in p:
+        r_ref = mp_rotation(*pk)
+        q = mp_form(A, r_ref)
+        a, pout = pypw85.principal_axes_quaternion(q)
+        assert np.abs(a - A).max() <= 8 * U * A.max()
+        assert pout[0] >= 0 and abs(np.dot(pout, pout) - 1) <= 8 * U
+        assert column_error(mp_rotation(*pout), r_ref) <= 16 * U
+        a2, last = pypw85.principal_axes_quaternion(q, scalar_first=False)
+        assert np.array_equal(a2, a)
+        assert np.array_equal(last, np.roll(pout, -1))
+        back = pypw85.ellipsoid_quaternion(a, last, scalar_first=False)
+        assert np.abs(back - q).max() <= 16 * U * A.max() ** 2
+    qs = np.array([mp_form(A, mp_rotation(*pk)) for pk in p])
+    a_many, p_many = pypw85.principal_axes_quaternion(qs.reshape(5, 6, 6))
+    assert a_many.shape == (5, 6, 3) and p_many.shape == (5, 6, 4)
+    for k in range(30):
+        a1, p1 = pypw85.principal_axes_quaternion(qs[k])
+        assert np.array_equal(a_many.reshape(30, 3)[k], a1)
+        assert np.array_equal(p_many.reshape(30, 4)[k], p1)
+
+
+# ---------------------------------------------------------------------------
+# Items 2 and 4: the Index, its errors and its container protocol.
+
+Q = np.array([1.0, 0.0, 0.0, 1.0, 0.0, 1.0])
+
+
+def raised(f):
+    with pytest.raises(pypw85.Error) as e:
+        f()
+    return e.value
+
+
+def test_index_errors_name_the_cause():
+    with pypw85.Index([3.0, 3.0, 3.0]) as index:
+        index.insert([0, 1], [[0, 0, 0], [1, 1, 1]], Q)
+        wide = [2.4, 0, 0, 1, 0, 1]
+        e = raised(lambda: index.insert([5, 12], [[0, 0, 0], [0, 0, 0]],
+                                        [Q, wide]))
+        width = 2 * math.sqrt(2.4) * (1 + 2.0**-20)
+        assert e.status == pypw85.EINVAL and e.id == 12 and e.item == 1
+        assert "ellipsoid 12 (item 1 of 2)" in str(e)
+        assert "2·√Q_00·(1 + 2⁻²⁰) = %.17g ≥ L_0 = 3" % width in str(e)
+        e = raised(lambda: index.insert(1, [0, 0, 0], Q))
+        assert e.id == 1 and "id 1 is already stored" in str(e)
+        e = raised(lambda: index.insert([7, 7], [0, 0, 0], Q))
+        assert e.item == 1 and "id 7 is already used by an earlier item" \
+            in str(e)
+        for call in (lambda: index.remove(9), lambda: index.get(9),
+                     lambda: index.update(9, [0, 0, 0], Q)):
+            e = raised(call)
+            assert e.status == pypw85.EINVAL and "id 9 is not stored" \
+                in str(e)
+        e = raised(lambda: index.insert([3, 4], [[0, 0, 0], [np.nan, 0, 0]],
+                                        Q))
+        assert e.status == pypw85.EDOM and e.id == 4 and e.item == 1
+        assert "centre = [nan, 0.0, 0.0] is not finite" in str(e)
+        e = raised(lambda: index.insert(3, [0, 0, 0], [1, 2, 0, 1, 0, 1]))
+        assert e.status == pypw85.ENOTPOSDEF and "not positive definite" \
+            in str(e)
+        e = raised(lambda: index.update(0, [1e10, 0, 0], Q))
+        assert "|c_0| = 10000000000 > 2²⁹·L_0 = %.17g" % (2.0**29 * 3) \
+            in str(e)
+        e = raised(lambda: index.overlap_any([0, -1e10, 0], Q))
+        assert e.status == pypw85.EINVAL and "|c_1| = 10000000000" in str(e)
+        e = raised(lambda: index.within([0, 0, 0], Q, t=0.0))
+        assert e.status == pypw85.EINVAL and "t = 0 is not > 0" in str(e)
+        e = raised(lambda: index.overlapping_pairs(threads=0))
+        assert "threads = 0 is not ≥ 1" in str(e)
+        assert len(index) == 2  # every failed call left it unchanged
+    e = raised(lambda: pypw85.Index([1.0, -2.0, 1.0]))
+    assert e.status == pypw85.EINVAL and "box side L_1 = -2 is not > 0" \
+        in str(e)
+    e = raised(lambda: pypw85.Index([1.0, 2.0, np.inf]))
+    assert e.status == pypw85.EDOM and "L_2 = inf is not finite" in str(e)
+
+
+def test_index_is_pythonic():
+    assert "Index" in pypw85.__all__
+    assert "class Index" in pydoc.render_doc(pypw85, renderer=pydoc.plaintext)
+    with pypw85.Index([6.0, 6.0, 6.0]) as index:
+        for bad in (7.9, True, 2.5, np.float64(3.0), np.array([1.0, 2.0]),
+                    np.array([True, False]), "3", None):
+            with pytest.raises(TypeError):
+                index.insert(bad, [0, 0, 0], Q)
+        with pytest.raises(TypeError):
+            index.remove(1.0)
+        with pytest.raises(ValueError):
+            index.insert(-1, [0, 0, 0], Q)
+        # one form (and one centre) over many ids
+        ids = np.array([4, 2, 9], dtype=np.int32)
+        centres = [[0, 0, 0], [2, 0, 0], [4, 0, 0]]
+        index.insert(ids, centres, Q)
+        for k, i in enumerate(ids):
+            c, q = index.get(int(i))
+            assert c.tolist() == centres[k] and q.tolist() == Q.tolist()
+        index.insert(np.arange(10, 13), [1.0, 3.0, 3.0], Q)
+        assert len(index) == 6
+        assert list(index) == [2, 4, 9, 10, 11, 12]
+        assert 9 in index and np.int64(9) in index and 3 not in index
+        assert 9.0 not in index and True not in index and "9" not in index
+        index.remove(9)
+        assert 9 not in index and list(index) == [2, 4, 10, 11, 12]
+        assert repr(index) == \
+            "<pypw85.Index: periodic box (6, 6, 6), 5 ellipsoids>"
+    assert repr(index) == "<pypw85.Index (closed)>"
+    with pypw85.Index() as open_index:
+        open_index.insert(0, [0, 0, 0], Q)
+        assert repr(open_index) == "<pypw85.Index: open domain, 1 ellipsoid>"
+
+
+# ---------------------------------------------------------------------------
+# Item 3: the spheroid's preconditions.
+
+def test_spheroid_preconditions():
+    n = [0.0, 0.6, 0.8]
+    for a, c, axis, rule in [(0.0, 2.0, n, "a = 0.0 is not > 0"),
+                             (-1.0, 2.0, n, "a = -1.0 is not > 0"),
+                             (1.0, 0.0, n, "c = 0.0 is not > 0"),
+                             (1.0, 2.0, [0.0, 0.0, 0.0], "‖n‖² = 0.0"),
+                             (1.0, 2.0, [0.0, 1.0, 1.0], "‖n‖² = 2.0")]:
+        e = raised(lambda: pypw85.spheroid(a, c, axis))
+        assert e.status == pypw85.EINVAL and rule in str(e)
+    assert raised(lambda: pypw85.spheroid(1e200, 1.0, n)).status == \
+        pypw85.ERANGE
+    # within UNIT_TOL passes, as the constructors' quaternions
+    f = math.sqrt(1 + 0.8 * pypw85.UNIT_TOL)
+    pypw85.spheroid(1.0, 2.0, [0.0, 0.6 * f, 0.8 * f])
+    a = np.array([1.0, 2.0, -3.0, 4.0])
+    e = raised(lambda: pypw85.spheroid(a, 1.0, n))
+    assert e.index == (2,) and "item (2,) of (4,)" in str(e)
+    assert "a = -3.0 is not > 0" in str(e)
+    assert e.statuses.tolist() == [0, 0, pypw85.EINVAL, 0]
+    axes = np.array([n, n, [1.0, 1.0, 0.0]])
+    e = raised(lambda: pypw85.spheroid(1.0, 2.0, axes))
+    assert e.index == (2,) and "not a unit vector" in str(e)
+
+
+# ---------------------------------------------------------------------------
+# Item 5: batch_threads() answers the count of a large batch.
+
+def test_batch_threads_of_a_large_batch():
+    openmp = pypw85.batch_threads(2, 512) == 2
+    assert pypw85.batch_threads(3) == (3 if openmp else 1)
+    assert pypw85.batch_threads(1) == 1
+    assert pypw85.batch_threads(0, 2**56) == 1  # the cap of pw85.h
+    code = "import pypw85; print(pypw85.batch_threads())"
+    env = dict(os.environ, OMP_NUM_THREADS="2")
+    out = subprocess.run([sys.executable, "-c", code], env=env, check=True,
+                         capture_output=True, text=True).stdout
+    assert int(out) == (2 if openmp else 1)
+    with pytest.raises(ValueError):
+        pypw85.batch_threads(0, 2**64)
+
+
+# ---------------------------------------------------------------------------
+# Item 6: a broadcast view is passed with stride 0, not copied.
+
+def test_broadcast_view_is_not_copied():
+    n = 100_000
+    rng = np.random.default_rng(6)
+    r12 = rng.uniform(-3, 3, (n, 3))
+    q = np.array([1.0, 0.1, 0.0, 0.5, 0.0, 0.25])
+    view = np.broadcast_to(q, (n, 6))
+    assert view.strides == (0, 8)
+    out = np.empty((n, 2))
+    tracemalloc.start()
+    pypw85.contact_function(r12, view, view, out)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    # A copy of one view is 4.8 MB; what remains is bookkeeping.
+    assert peak < 200_000, peak
+    ref = pypw85.contact_function(r12, np.ascontiguousarray(view), q)
+    assert np.array_equal(out, ref)
+    tracemalloc.start()
+    result = pypw85.overlap(r12, view, view[:, None, :][:, 0])
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert peak < n * 4 + 200_000, peak  # the (n,) int result only
+    assert np.array_equal(result, pypw85.overlap(r12, q, q))
+
+
+# ---------------------------------------------------------------------------
+# Item 9: type hints, py.typed, the public names.
+
+def public_functions():
+    for name in pypw85.__all__:
+        obj = getattr(pypw85, name)
+        if isinstance(obj, types.FunctionType):
+            yield name, obj
+    for name, obj in vars(pypw85.Index).items():
+        if isinstance(obj, types.FunctionType) and (
+                not name.startswith("_") or name in (
+                    "__init__", "__len__", "__contains__", "__iter__",
+                    "__repr__")):
+            yield "Index." + name, obj
+    import pypw85.legacy as legacy
+    for name in legacy.__all__:
+        obj = getattr(legacy, name)
+        if isinstance(obj, types.FunctionType):
+            yield "legacy." + name, obj
+
+
+def test_type_hints_and_py_typed():
+    names = []
+    for name, f in public_functions():
+        names.append(name)
+        sig = inspect.signature(f)
+        assert sig.return_annotation is not inspect.Signature.empty, name
+        for p in sig.parameters.values():
+            if p.name != "self" and p.kind not in (p.VAR_POSITIONAL,
+                                                   p.VAR_KEYWORD):
+                assert p.annotation is not inspect.Parameter.empty, \
+                    (name, p.name)
+    assert "contact_function" in names and "Index.insert" in names
+    package = pathlib.Path(pypw85.__file__).parent
+    assert (package / "py.typed").is_file()
+    root = pathlib.Path(os.environ.get("PW85_SOURCE_ROOT",
+                                       package.parents[2]))
+    assert "'pypw85/py.typed'" in \
+        (root / "bindings" / "python" / "meson.build").read_text()
+
+
+def test_public_names_are_the_api():
+    import pypw85.legacy as legacy
+    for module, allowed in ((pypw85, {"index", "legacy"}), (legacy, set())):
+        public = {name for name, obj in vars(module).items()
+                  if not name.startswith("_")
+                  and not isinstance(obj, types.ModuleType)
+                  and not isinstance(obj, __future__._Feature)}
+        assert public - set(module.__all__) - allowed == set(), module
+    assert "not a bool" in pypw85.overlap.__doc__
+    assert "result < 0" in pypw85.Index.overlap_any.__doc__
