@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Batches: N independent calls, in the calling thread or on OpenMP threads
-// (private; pw85.h, "Batches"). The only file of the library compiled with
-// OpenMP is batch.cpp: the per-pair work is the caller's, through a
-// function pointer called once per chunk of consecutive indices.
+// (private; pw85.h, "Batches"). batch.cpp is compiled with OpenMP (as are
+// the index's threaded queries, src/index/); the per-pair work is the
+// caller's, through a function pointer called once per chunk of
+// consecutive indices.
 #ifndef PW85_SRC_BATCH_HPP
 #define PW85_SRC_BATCH_HPP
 

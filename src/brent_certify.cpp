@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Certification of the maximum of f by GSL's Brent minimiser
-// (brent_certify.hpp). The only file of the core that knows GSL: its first
+// (brent_certify.hpp). The one file of the core that knows GSL's
+// minimiser (principal_axes.cpp uses its eigensolver): its first
 // evaluation point and the size of its state.
 #include "brent_certify.hpp"
 

@@ -130,7 +130,8 @@ const char *pw85_strerror(int status) noexcept {
       return "the result, or the dynamic range of the input, exceeds the "
              "range of a double";
     case PW85_ENOMEM:
-      return "the minimiser needs more working memory than reserved";
+      return "out of memory (the index could not allocate, or the "
+             "minimiser needs more working memory than reserved)";
     case PW85_ENOCONV:
       return "the method did not converge";
     case PW85_EINVAL:

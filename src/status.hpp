@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The core's own status (private). The facades (pw85.cpp, legacy/
-// pw85_legacy.cpp) map it to the PW85_* codes of the public headers, so
-// that no core file includes a public header.
+// The core's own status (private). The facades (pw85.cpp,
+// pw85_index.cpp, legacy/pw85_legacy.cpp, through facade.hpp's to_code())
+// map it to the PW85_* codes of the public headers, so that no core file
+// includes a public header.
 #ifndef PW85_SRC_STATUS_HPP
 #define PW85_SRC_STATUS_HPP
 

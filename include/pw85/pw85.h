@@ -115,9 +115,10 @@ extern "C" {
 #define PW85_ERANGE 4      /**< μ², or the dynamic range of the input,
                                 exceeds the range of a double.
                                 @since 2.1.0 */
-#define PW85_ENOMEM 5      /**< the minimiser needs more working memory than
-                                pw85 reserves (not expected with any GSL).
-                                @since 2.1.0 */
+#define PW85_ENOMEM 5      /**< out of memory: the index could not
+                                allocate, or the minimiser needs more
+                                working memory than pw85 reserves (not
+                                expected with any GSL). @since 2.1.0 */
 #define PW85_ENOCONV 6     /**< the method did not converge (legacy contact
                                 functions; out holds a lower bound of μ²).
                                 @since 2.1.0 */

@@ -187,8 +187,8 @@ ENOTPOSDEF = _constants.ENOTPOSDEF
 #: A result (or the dynamic range of the input) exceeds the range of a
 #: double.
 ERANGE = _constants.ERANGE
-#: The minimiser needs more working memory than pw85 reserves (not
-#: expected).
+#: Out of memory: the index could not allocate, or the minimiser needs
+#: more working memory than pw85 reserves (not expected).
 ENOMEM = _constants.ENOMEM
 #: An iterative method did not converge (the legacy contact functions).
 ENOCONV = _constants.ENOCONV
