@@ -5,6 +5,7 @@
 // 1e16, bounded from above by fuzz::cond_bound). Shared by
 // fuzz-contact-raw and fuzz-contact-structured.
 #include "fuzz_common.h"
+#include "quad_ref.h"
 
 #include <gmp.h>
 
@@ -174,6 +175,37 @@ void check_contact(const double r12[3], const double q1[6],
              "swapped: mu2 %a, not %a", sw[0], mu2);
     CHECK_IN(std::fabs(sw[1] - (1 - lam)) <= 1e-12,
              "swapped: lambda %a, not 1 - %a", sw[1], lam);
+  }
+
+  // Against the binary128 reference (quad_ref.h), where μ² is a normal
+  // double: μ² correctly rounded (within half an ulp of the reference,
+  // plus the reference's own error, cond·2^−100 relative, generously),
+  // and λ inside the window where f is within 4 ulps of μ².
+  if (mu2 >= DBL_MIN && mu2 < DBL_MAX) {
+    QuadRef const ref = quad_contact(r12, q1, q2);
+    if (ref.ok) {
+      long double const cond =
+          std::fmax(cond_bound(q1), cond_bound(q2));
+      quad const ulp_hi = (quad)std::nextafter(mu2, INFINITY) - (quad)mu2;
+      quad const ulp_lo = (quad)mu2 - (quad)std::nextafter(mu2, 0.0);
+      quad const half_ulp = (ulp_hi > ulp_lo ? ulp_hi : ulp_lo) / 2;
+      quad const ref_err = ref.mu2 * (quad)(cond * 0x1p-100L);
+      quad const diff = (quad)mu2 - ref.mu2;
+      CHECK_IN((diff < 0 ? -diff : diff) <= half_ulp + ref_err,
+               "mu2 = %a, reference %a (lambda* %La, cond %Lg)", mu2,
+               (double)ref.mu2, (long double)ref.lambda, cond);
+      quad rq[3], q1q[6], q2q[6], f_at;
+      for (int i = 0; i < 3; ++i) rq[i] = r12[i];
+      for (int i = 0; i < 6; ++i) {
+        q1q[i] = q1[i];
+        q2q[i] = q2[i];
+      }
+      if (lam > 0 && lam < 1 &&
+          quad_f(lam, rq, q1q, q2q, &f_at, nullptr))
+        CHECK_IN(f_at >= ref.mu2 * (1 - 4 * (quad)eps) - ref_err,
+                 "lambda = %a: f = %a, mu2 %a (lambda* %La)", lam,
+                 (double)f_at, (double)ref.mu2, (long double)ref.lambda);
+    }
   }
 
   // Every length times 2^k: mu2 and lambda unchanged, bit for bit.
