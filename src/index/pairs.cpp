@@ -11,15 +11,16 @@
 // hot fields (centre, half-widths, wrap, id) and the forms are separate
 // arrays.
 //
-// Each pair is found from both ellipsoids and kept from the one with the
-// smaller id (from its own images, i = j, with a positive shift), so that
-// the work of a thread depends on nothing but its ellipsoids.
+// Each pair is found from both ellipsoids and kept from the one earlier in
+// the snapshot (from its own images, i = j, with a positive shift), so
+// that the work of a thread depends on nothing but its ellipsoids; it is
+// then tested in the output's orientation (i < j), so that its result does
+// not depend on which end found it. The broad phase: broad.hpp.
 #include <algorithm>
 #include <cmath>
 
-#include "contact.hpp"
+#include "broad.hpp"
 #include "index.hpp"
-#include "overlap.hpp"
 
 #if defined(PW85_OPENMP)
 #include <omp.h>
@@ -334,9 +335,9 @@ class Search {
   // The pair of entries a and b (positions in the snapshot, a ≤ b) with
   // b's image `shift` seen from a: put in the output's orientation, (i, j,
   // n) with i = min id, j = max id, n = ±shift, then tested from scratch in
-  // that orientation (r = (c_j + n∘L) − c_i, the broad phase's bounds, the
-  // narrow phase), as a brute force over (i, j, n) would. False stops (no
-  // memory).
+  // that orientation (the box test with the pair's own bound and slack, the
+  // line test, the narrow phase on the exact r = (c_j + n∘L) − c_i), as a
+  // brute force over (i, j, n) would. False stops (no memory).
   bool test(std::size_t a, std::size_t b, std::int32_t const shift[dim],
             Share *share) const noexcept {
     std::int32_t n[dim] = {shift[0], shift[1], shift[2]};
@@ -346,39 +347,21 @@ class Search {
     }
     Hot const &x = s_.hot[a];
     Hot const &y = s_.hot[b];
-    double r[dim];
+    double slack[dim], slack_sum = 0.0, r[dim];
     for (int k = 0; k < dim; ++k) {
-      r[k] = (y.c[k] + n[k] * box_[k]) - x.c[k];
-      if (!(std::fabs(r[k]) <=
-            sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin)))
-        return true;
+      slack[k] = rounding_slack(cmax_, x.c[k], box_bound(sqrt_t_, x.h[k], y.h[k]),
+                                box_[k]);
+      slack_sum += slack[k];
     }
+    if (!boxes_meet(x.c, x.h, y.c, y.h, n, box_, sqrt_t_, slack, r)) return true;
     double const *q1 = s_.forms[a].q;
     double const *q2 = s_.forms[b].q;
-    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_)) return true;
+    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_, slack_sum)) return true;
     ++share->candidates;
+    ImageVector v;
+    image_vector_exact(x.c, y.c, n, box_, &v);
     PairHit hit{x.id, y.id, {n[0], n[1], n[2]}, 0, 0.0, 0.0};
-    if (within_) {
-      double out[2] = {NAN, NAN};
-      Status const st = contact_function(r, q1, q2, out);
-      if (st == Status::out_of_range && out[0] == HUGE_VAL) return true;
-      if (st != Status::success) {
-        fail(share, st, hit);
-        return true;
-      }
-      if (!(out[0] < t_)) return true;
-      hit.mu2 = out[0];
-      hit.lambda = out[1];
-    } else {
-      int res = 1;
-      Status const st = overlap(r, q1, q2, &res);
-      if (st != Status::success) {
-        fail(share, st, hit);
-        return true;
-      }
-      if (res > 0) return true;
-      hit.result = res;
-    }
+    if (!narrow(v, q1, q2, &hit, share)) return true;
     if (!share->pairs.push_back(hit)) {
       share->status = Status::no_memory;
       return false;
@@ -386,103 +369,99 @@ class Search {
     return true;
   }
 
-  // The AABB test of test() seen from x, as a cheap first filter inlined in
-  // the loops: true only if the test in the output's orientation (y's
-  // image seen from x, or x's seen from y) discards the pair too. Its r
-  // differs from that test's by a few roundings of magnitudes below
-  // 4·(cmax + |c_x| + reach + L) (|n_k·L_k| ≤ 2·cmax + reach + 2·L_k), far
-  // below `slack` (cell_slack() of x and the grid's reach, 2⁻⁴⁰ of them);
-  // the bound √t·(h_x + h_y)·(1 + broad_margin) is the same in both
-  // orientations (the sum commutes).
-  bool far_apart(Hot const &x, Hot const &y, std::int32_t const shift[dim],
-                 double const slack[dim]) const noexcept {
-    for (int k = 0; k < dim; ++k) {
-      double const r = (y.c[k] + shift[k] * box_[k]) - x.c[k];
-      if (std::fabs(r) >
-          sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin) + slack[k])
-        return true;
+  // The narrow phase of test(): true when the pair is reported (hit
+  // filled); a failure is recorded in the share.
+  bool narrow(ImageVector const &v, double const q1[sym], double const q2[sym],
+              PairHit *hit, Share *share) const noexcept {
+    if (within_) {
+      double out[2] = {NAN, NAN};
+      Status const st = image_contact(v, q1, q2, out);
+      if (st == Status::out_of_range && out[0] == HUGE_VAL) return false;
+      if (st != Status::success) {
+        fail(share, st, *hit);
+        return false;
+      }
+      if (!(out[0] < t_)) return false;
+      hit->mu2 = out[0];
+      hit->lambda = out[1];
+      return true;
     }
-    return false;
+    int res = 1;
+    Status const st = image_overlap(v, q1, q2, &res);
+    if (st != Status::success) {
+      fail(share, st, *hit);
+      return false;
+    }
+    hit->result = res;
+    return res <= 0;
   }
 
   // Each pair is found from both entries (the broad phase is symmetric):
   // it is kept from the one earlier in the snapshot, b > a, or, for an
   // entry's own image (b = a), with a positive shift (the pair (a, a, −n)
-  // is the same as (a, a, n)). Runs of entries wholly before a are skipped
-  // without reading them.
+  // is the same as (a, a, n)).
   bool grid(Grid const &g, std::size_t a, Share *share) const noexcept {
     Hot const &x = s_.hot[a];
-    double reach[dim], lo[dim], hi[dim];
-    double cells = 1.0;
-    for (int k = 0; k < dim; ++k) {
-      reach[k] = sqrt_t_ * (x.h[k] + g.hmax[k]) * (1.0 + broad_margin);
-      double const slack = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
-      double const c = x.c[k] - g.origin[k];
-      lo[k] = std::floor((c - reach[k] - slack) * g.inv[k]);
-      hi[k] = std::floor((c + reach[k] + slack) * g.inv[k]);
-      if (!periodic_) {  // clamped as the entries' cells are (monotone)
-        double const last = double(g.n[k] - 1);
-        lo[k] = std::min(std::max(lo[k], 0.0), last);
-        hi[k] = std::min(std::max(hi[k], 0.0), last);
-      }
-      cells *= hi[k] - lo[k] + 1.0;
+    Reach const rc = reach_of(x.c, x.h, g.hmax, sqrt_t_, cmax_, box_);
+    double first[dim], last[dim], lo[dim], hi[dim];
+    for (int k = 0; k < dim; ++k) {  // open: clamped as the entries' cells
+      first[k] = periodic_ ? -HUGE_VAL : 0.0;
+      last[k] = periodic_ ? HUGE_VAL : double(g.n[k] - 1);
     }
-    std::int32_t shift[dim] = {0, 0, 0};
-    double slack[dim];
-    for (int k = 0; k < dim; ++k)
-      slack[k] = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
-    if (cells > 2.0 * double(g.cells) + 8.0) {
-      // Wider than the grid: every entry, with the shifts in reach.
-      // The check of the number of images (max_span, out_of_range) is made
-      // from x against every entry y of the grid with y.id ≥ x.id, with the
-      // grid's reach, as when pairs were kept from the smaller id: whether
-      // the query fails is a function of each entry's own view, not of the
-      // order of the snapshot.
-      if (periodic_)
-        for (std::size_t b = g.first; b < g.first + g.count; ++b) {
-          Hot const &y = s_.hot[b];
-          if (y.id < x.id) continue;
-          for (int k = 0; k < dim; ++k) {
-            double const u = std::floor((x.c[k] - reach[k] - slack[k] - y.c[k]) / box_[k]);
-            double const v = std::floor((x.c[k] + reach[k] + slack[k] - y.c[k]) / box_[k]) + 1.0;
-            if (v - u + 1.0 > max_span) {
-              fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
-              return true;
-            }
-          }
-        }
-      // The images of y kept from x: those within the pair's own reach
-      // √t·(h_x + h_y)·(1 + broad_margin) plus the slack, a superset of
-      // those that the AABB test keeps (at most the grid's reach).
-      for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
-        Hot const &y = s_.hot[b];
-        std::int64_t nlo[dim] = {0, 0, 0}, nhi[dim] = {0, 0, 0};
-        if (periodic_) {
-          for (int k = 0; k < dim; ++k) {
-            double const pr = sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin);
-            double const u = std::floor((x.c[k] - pr - slack[k] - y.c[k]) / box_[k]);
-            double const v = std::floor((x.c[k] + pr + slack[k] - y.c[k]) / box_[k]) + 1.0;
-            if (v - u + 1.0 > max_span) {  // only if y.id < x.id (see above)
-              std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
-              fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
-              return true;
-            }
-            nlo[k] = static_cast<std::int64_t>(u);
-            nhi[k] = static_cast<std::int64_t>(v);
-          }
-        }
-        for (std::int64_t u = nlo[0]; u <= nhi[0]; ++u)
-          for (std::int64_t v = nlo[1]; v <= nhi[1]; ++v)
-            for (std::int64_t w = nlo[2]; w <= nhi[2]; ++w) {
-              shift[0] = std::int32_t(u);
-              shift[1] = std::int32_t(v);
-              shift[2] = std::int32_t(w);
-              if (b == a && !shift_positive(shift)) continue;
-              if (!test(a, b, shift, share)) return false;
-            }
+    double const cells = cell_range(rc, x.c, g.origin, g.inv, first, last, lo, hi);
+    if (cells > 2.0 * double(g.cells) + 8.0) return every_entry(g, a, rc, share);
+    return runs(g, a, rc, lo, hi, share);
+  }
+
+  // A grid narrower than the reach: every entry, with the shifts in reach.
+  // The check of the number of images (max_span, out_of_range) is made
+  // from x against every entry y of the grid with y.id ≥ x.id, with the
+  // grid's reach: whether the query fails is a function of each entry's
+  // own view, not of the order of the snapshot. The images of y kept from
+  // x are those within the pair's own bound plus the slack, a superset of
+  // those that the box test keeps.
+  bool every_entry(Grid const &g, std::size_t a, Reach const &rc,
+                   Share *share) const noexcept {
+    Hot const &x = s_.hot[a];
+    std::int64_t lo[dim], hi[dim];
+    for (std::size_t b = g.first; b < g.first + g.count; ++b) {
+      Hot const &y = s_.hot[b];
+      if (y.id >= x.id &&
+          !shift_range(periodic_, x.c, rc.reach, rc.slack, y.c, box_, lo, hi)) {
+        fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+        return true;
       }
-      return true;
     }
+    for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
+      Hot const &y = s_.hot[b];
+      double bound[dim];
+      for (int k = 0; k < dim; ++k) bound[k] = box_bound(sqrt_t_, x.h[k], y.h[k]);
+      if (!shift_range(periodic_, x.c, bound, rc.slack, y.c, box_, lo, hi)) {
+        // only if y.id < x.id (see above)
+        std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
+        fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
+        return true;
+      }
+      if (!for_each_shift(lo, hi, [&](std::int32_t const *shift) {
+            return (b == a && !shift_positive(shift)) || test(a, b, shift, share);
+          }))
+        return false;
+    }
+    return true;
+  }
+
+  // The cells [lo, hi] of the grid: along axis 2, one contiguous run of
+  // entries per copy of the box. Runs of entries wholly before a are
+  // skipped without reading them. The box test from x with the grid's
+  // slack is a first filter, inlined: it discards only images that the
+  // test in the output's orientation discards too (test(); σ of the grid's
+  // reach ≥ σ of the pair's bound, both bounding the rounding of r̂ from
+  // either end: margins.hpp).
+  bool runs(Grid const &g, std::size_t a, Reach const &rc, double const lo[dim],
+            double const hi[dim], Share *share) const noexcept {
+    Hot const &x = s_.hot[a];
+    std::int32_t shift[dim];
+    double r[dim];
     std::int64_t const lo2 = std::int64_t(lo[2]), hi2 = std::int64_t(hi[2]);
     std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[2]) : 0;
     std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[2]) : 0;
@@ -493,20 +472,19 @@ class Search {
         std::int64_t const p1 = periodic_ ? floor_div(m1, g.n[1]) : 0;
         std::int64_t const u1 = m1 - p1 * g.n[1];
         std::size_t const row = static_cast<std::size_t>((u0 * g.n[1] + u1) * g.n[2]);
-        // Along axis 2, one contiguous run of entries per copy of the box.
         for (std::int64_t p2 = plo; p2 <= phi; ++p2) {
           std::int64_t const z0 = std::max(lo2, p2 * g.n[2]) - p2 * g.n[2];
           std::int64_t const z1 = std::min(hi2, p2 * g.n[2] + g.n[2] - 1) - p2 * g.n[2];
           std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
           if (b1 <= a) continue;
-          std::size_t const b0 =
-              std::max(g.first + g.start[row + std::size_t(z0)], a);
+          std::size_t const b0 = std::max(g.first + g.start[row + std::size_t(z0)], a);
           for (std::size_t b = b0; b < b1; ++b) {
             Hot const &y = s_.hot[b];
             shift[0] = std::int32_t(p0 - y.wrap[0]);
             shift[1] = std::int32_t(p1 - y.wrap[1]);
             shift[2] = std::int32_t(p2 - y.wrap[2]);
-            if (far_apart(x, y, shift, slack)) continue;
+            if (!boxes_meet(x.c, x.h, y.c, y.h, shift, box_, sqrt_t_, rc.slack, r))
+              continue;
             if (b == a && !shift_positive(shift)) continue;
             if (!test(a, b, shift, share)) return false;
           }
