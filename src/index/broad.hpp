@@ -132,7 +132,7 @@ bool for_each_shift(std::int64_t const lo[dim], std::int64_t const hi[dim],
 // The box test on r̂ = (c_j + n∘L) − c formed in double (written to r):
 // false proves μ² > t·(1 + broad_margin) (margins.hpp: the slack covers
 // the rounding of r̂). box: the sides, or zeros in an open domain.
-inline bool boxes_meet(double const c[dim], double const h[dim],
+PW85_INLINE bool boxes_meet(double const c[dim], double const h[dim],
                        double const cj[dim], double const hj[dim],
                        std::int32_t const shift[dim], double const box[dim],
                        double sqrt_t, double const slack[dim],
@@ -149,7 +149,7 @@ namespace line {
 
 // The bound √(rᵀQr) + √(rᵀQ'r) of the line test, each term raised by its
 // rounding (form_rounding) and by form_floor (underflow).
-inline double projections(double const r[dim], double const q1[sym],
+PW85_INLINE double projections(double const r[dim], double const q1[sym],
                           double const h1[dim], double const q2[sym],
                           double const h2[dim]) noexcept {
   double y[dim];
@@ -168,7 +168,7 @@ inline double projections(double const r[dim], double const q1[sym],
 }
 
 // The test proper on r (with |r|² = d2) and the slack Σσ_k.
-inline bool separated(double const r[dim], double d2, double const q1[sym],
+PW85_INLINE bool separated(double const r[dim], double d2, double const q1[sym],
                       double const h1[dim], double const q2[sym],
                       double const h2[dim], double sqrt_t,
                       double slack_sum) noexcept {
@@ -194,7 +194,7 @@ bool separated_scaled(double const r[dim], double const q1[sym],
 // the slack Σσ_k bounds (margins.hpp, slack_fold). True means
 // μ² > t·(1 + broad_margin) at every length scale: outside
 // [line_low, line_high], r̂ and the forms are scaled first.
-inline bool separated_along_r(double const r[dim], double const q1[sym],
+PW85_INLINE bool separated_along_r(double const r[dim], double const q1[sym],
                               double const h1[dim], double const q2[sym],
                               double const h2[dim], double sqrt_t,
                               double slack_sum) noexcept {
@@ -221,22 +221,28 @@ struct ImageVector {
 void image_vector_tail(double b, double b_lo, double a_lo, double p_lo,
                        double *r, double *lo) noexcept;
 
-inline void image_vector_exact(double const c[dim], double const cj[dim],
+PW85_INLINE void image_vector_exact(double const c[dim], double const cj[dim],
                                std::int32_t const shift[dim],
                                double const box[dim],
                                ImageVector *v) noexcept {
   bool exact = true;
   for (int k = 0; k < dim; ++k) {
-    double const n = shift[k];
-    double const p = n * box[k];
-    double const p_lo = std::fma(n, box[k], -p);  // n·L = p + p_lo
-    dd const a = two_sum(cj[k], p);               // c_j + p
-    dd const b = two_sum(a.hi, -c[k]);            // a.hi − c
-    if (PW85_UNLIKELY(a.lo != 0.0 || p_lo != 0.0)) {
-      image_vector_tail(b.hi, b.lo, a.lo, p_lo, &v->r[k], &v->lo[k]);
-    } else {
+    if (shift[k] == 0) {  // the most common case: c_j − c
+      dd const b = two_sum(cj[k], -c[k]);
       v->r[k] = b.hi;
       v->lo[k] = b.lo;
+    } else {
+      double const n = shift[k];
+      double const p = n * box[k];
+      double const p_lo = std::fma(n, box[k], -p);  // n·L = p + p_lo
+      dd const a = two_sum(cj[k], p);               // c_j + p
+      dd const b = two_sum(a.hi, -c[k]);            // a.hi − c
+      if (PW85_UNLIKELY(a.lo != 0.0 || p_lo != 0.0)) {
+        image_vector_tail(b.hi, b.lo, a.lo, p_lo, &v->r[k], &v->lo[k]);
+      } else {
+        v->r[k] = b.hi;
+        v->lo[k] = b.lo;
+      }
     }
     exact = exact && v->lo[k] == 0.0;
   }

@@ -314,7 +314,20 @@ class Search {
         s_(s),
         within_(within),
         t_(t),
-        sqrt_t_(std::sqrt(t)) {}
+        sqrt_t_(std::sqrt(t)) {
+    // The slack of test(): one for every pair, that of a query of centre
+    // |c_k| ≤ cmax and reach the largest bound of a pair (twice the largest
+    // h_k of any grid), above the σ_k of each pair (margins.hpp), and a
+    // function of the index alone, as test() must be.
+    slack_sum_ = 0.0;
+    for (int k = 0; k < dim; ++k) {
+      double h = 0.0;
+      for (std::size_t g = 0; g < s.grids.size(); ++g)
+        h = std::max(h, s.grids[g].hmax[k]);
+      slack_[k] = rounding_slack(cmax_, cmax_, box_bound(sqrt_t_, h, h), box_[k]);
+      slack_sum_ += slack_[k];
+    }
+  }
 
   // The pairs found from entry a (an index into the snapshot).
   void from(std::size_t a, Share *share) const noexcept {
@@ -335,7 +348,7 @@ class Search {
   // The pair of entries a and b (positions in the snapshot, a ≤ b) with
   // b's image `shift` seen from a: put in the output's orientation, (i, j,
   // n) with i = min id, j = max id, n = ±shift, then tested from scratch in
-  // that orientation (the box test with the pair's own bound and slack, the
+  // that orientation (the box test with the pair's own bound, the
   // line test, the narrow phase on the exact r = (c_j + n∘L) − c_i), as a
   // brute force over (i, j, n) would. False stops (no memory).
   bool test(std::size_t a, std::size_t b, std::int32_t const shift[dim],
@@ -347,16 +360,11 @@ class Search {
     }
     Hot const &x = s_.hot[a];
     Hot const &y = s_.hot[b];
-    double slack[dim], slack_sum = 0.0, r[dim];
-    for (int k = 0; k < dim; ++k) {
-      slack[k] = rounding_slack(cmax_, x.c[k], box_bound(sqrt_t_, x.h[k], y.h[k]),
-                                box_[k]);
-      slack_sum += slack[k];
-    }
-    if (!boxes_meet(x.c, x.h, y.c, y.h, n, box_, sqrt_t_, slack, r)) return true;
+    double r[dim];
+    if (!boxes_meet(x.c, x.h, y.c, y.h, n, box_, sqrt_t_, slack_, r)) return true;
     double const *q1 = s_.forms[a].q;
     double const *q2 = s_.forms[b].q;
-    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_, slack_sum)) return true;
+    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_, slack_sum_)) return true;
     ++share->candidates;
     ImageVector v;
     image_vector_exact(x.c, y.c, n, box_, &v);
@@ -454,9 +462,8 @@ class Search {
   // entries per copy of the box. Runs of entries wholly before a are
   // skipped without reading them. The box test from x with the grid's
   // slack is a first filter, inlined: it discards only images that the
-  // test in the output's orientation discards too (test(); σ of the grid's
-  // reach ≥ σ of the pair's bound, both bounding the rounding of r̂ from
-  // either end: margins.hpp).
+  // test in the output's orientation discards too (both slacks bound the
+  // rounding of r̂, formed from either end: margins.hpp).
   bool runs(Grid const &g, std::size_t a, Reach const &rc, double const lo[dim],
             double const hi[dim], Share *share) const noexcept {
     Hot const &x = s_.hot[a];
@@ -500,6 +507,7 @@ class Search {
   Snapshot const &s_;
   bool within_;
   double t_, sqrt_t_;
+  double slack_[dim], slack_sum_;  // test()'s
 };
 
 }  // namespace
