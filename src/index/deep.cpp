@@ -63,15 +63,11 @@ double inscribed_radius(double const q[sym]) noexcept {
   // λmin(Q) ≥ 1/‖Q⁻¹‖_F (Q⁻¹ = adj(Q)/det(Q)), lowered more.
   double est = least_eigenvalue_estimate(q) * (1.0 - estimate_lowering);
   if (!certified(est)) {
-    double const a00 = q[3] * q[5] - q[4] * q[4];
-    double const a01 = q[2] * q[4] - q[1] * q[5];
-    double const a02 = q[1] * q[4] - q[2] * q[3];
-    double const a11 = q[0] * q[5] - q[2] * q[2];
-    double const a12 = q[1] * q[2] - q[0] * q[4];
-    double const a22 = q[0] * q[3] - q[1] * q[1];
-    double const det = q[0] * a00 + q[1] * a01 + q[2] * a02;
-    double const frob = std::sqrt(a00 * a00 + a11 * a11 + a22 * a22 +
-                                  2.0 * (a01 * a01 + a02 * a02 + a12 * a12));
+    double a[sym];
+    sym_adjugate(q, a);
+    double const det = q[0] * a[0] + q[1] * a[1] + q[2] * a[2];
+    double const frob = std::sqrt(a[0] * a[0] + a[3] * a[3] + a[5] * a[5] +
+                                  2.0 * (a[1] * a[1] + a[2] * a[2] + a[4] * a[4]));
     est = det / frob * (1.0 - fallback_lowering);
     if (!certified(est)) return 0.0;
   }

@@ -42,7 +42,7 @@ constexpr double slack_factor = 0x1p-40;
 // The line-of-centres test on r̂ (exact r = r̂ + δ, |δ| ≤ Σσ_k): it is
 // decided only when Σσ_k ≤ slack_fold·|r̂| (checked squared), so that
 // u·r ≥ |r̂|·(1 − 2⁻²²) for u = r̂/|r̂| (folded into broad_margin above).
-constexpr double slack_fold = 0x1p-22;
+constexpr double slack_fold = broad_margin / 4;  // 2⁻²²
 //
 // form_rounding: rᵀQr in double (six products, five sums) is off by at
 // most 11u·Σ|Q_ij||r_i||r_j| ≤ 11u·(Σ_k h_k|r_k|)², h_k = √Q_kk bounding
@@ -58,7 +58,7 @@ constexpr double form_rounding = 0x1p-40;
 // |r̂|² ≥ 2⁻⁴⁰⁰ (or ≥ ¼ once scaled) the floor weighs below 2⁻¹⁰⁰
 // relative: no decision depends on an underflowed value.
 constexpr double line_low = 0x1p-400;
-constexpr double line_high = 0x1p400;
+constexpr double line_high = 1.0 / line_low;
 constexpr double form_floor = 0x1p-1000;
 
 // ---- The deep-overlap shortcut of overlap_any() (index.cpp) --------------
@@ -68,7 +68,7 @@ constexpr double form_floor = 0x1p-1000;
 // below over- or underflows, and two such forms are within the range that
 // pw85_overlap() accepts.
 constexpr double moderate_low = 0x1p-300;
-constexpr double moderate_high = 0x1p300;
+constexpr double moderate_high = 1.0 / moderate_low;
 //
 // inscribed_radius(): λmin(Q) > s₀ is certified by the Cholesky
 // factorisation of Q − s·I, s = s₀ + shift_margin·M (M = max Q_kk): it
@@ -114,10 +114,10 @@ constexpr double max_trace_ratio = 0x1p20;
 // when (Σσ_k)² ≤ deep_slack·s (s: the certified λmin of line_factor()).
 // Then μ² ≤ (1 − 2⁻²⁰)² < 1 − 2⁻²⁰.
 constexpr double deep_shrink = 0x1p-20;
-constexpr double deep_form = 0x1p-22;
+constexpr double deep_form = deep_shrink / 4;  // 2⁻²²
 constexpr double deep_rounding = 0x1p-48;
-constexpr double deep_bound = 0x1p-19;
-constexpr double deep_slack = 0x1p-42;
+constexpr double deep_bound = 2 * deep_shrink;  // 2⁻¹⁹
+constexpr double deep_slack = (deep_shrink / 2) * (deep_shrink / 2);  // 2⁻⁴²
 
 // ---- Limits --------------------------------------------------------------
 //
@@ -131,7 +131,7 @@ constexpr double dense_cells = 0x1p22;
 // An open domain's cell coordinates are clamped to [−open_half,
 // open_half) (the clamp is monotone: a range of positions maps onto the
 // range of their cells).
-constexpr double open_half = 0x1p20;
+constexpr double open_half = max_span;  // 2²⁰
 // Ids fit 32 bits; 0xFFFFFFFF is no id.
 constexpr std::uint32_t no_id = 0xFFFFFFFFu;
 constexpr std::size_t max_id = 0xFFFFFFFEu;

@@ -86,6 +86,163 @@ int threads_for(int threads, std::size_t n) noexcept {
 // thread: at most this many threads build it.
 constexpr int max_snapshot_threads = 16;
 
+// The shape of the snapshot's grid of a level: origin, sides (1/inv) and
+// cells per axis, then n0·n1·n2 (g.cells).
+void grid_shape(Level const &lv, double const box[dim], bool periodic,
+                Grid *gp) noexcept {
+  Grid &g = *gp;
+  std::size_t const ncells = lv.cells.size();
+  double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  if (!periodic)
+    for (std::size_t ci = 0; ci < ncells; ++ci)
+      for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei)
+        for (int k = 0; k < dim; ++k) {
+          lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
+          hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
+        }
+  double cells = 1.0;
+  for (int k = 0; k < dim; ++k) {
+    g.hmax[k] = lv.hmax[k];
+    double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
+    if (periodic) {
+      g.origin[k] = 0.0;
+      g.n[k] = static_cast<std::int64_t>(std::min(
+          std::max(std::floor(box[k] / side), 1.0), max_span));
+      g.inv[k] = double(g.n[k]) / box[k];
+    } else {
+      g.origin[k] = lo[k];
+      g.inv[k] = 1.0 / side;
+      g.n[k] = static_cast<std::int64_t>(std::min(
+          std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
+    }
+    cells *= double(g.n[k]);
+  }
+  // Coarsen the widest axis until the grid is no larger than its entries.
+  double const most = 2.0 * double(lv.count) + 64.0;
+  while (cells > most) {
+    int k = 0;
+    for (int a = 1; a < dim; ++a)
+      if (g.n[a] > g.n[k]) k = a;
+    cells /= double(g.n[k]);
+    g.n[k] = (g.n[k] + 1) / 2;
+    cells *= double(g.n[k]);
+    g.inv[k] = periodic ? double(g.n[k]) / box[k] : 0.5 * g.inv[k];
+  }
+  g.cells = static_cast<std::size_t>(cells);
+}
+
+// The level's entries sorted by the grid's cell into the snapshot, at
+// g.first: a counting sort, in the order of the level's cells. On nt
+// threads, thread t takes the level's cells [split[t], split[t + 1])
+// (about count/nt entries) and counts its entries per dense cell in its
+// own histogram; in each dense cell, thread t's entries then follow those
+// of threads t' < t, which is the serial order: the snapshot is the same
+// for any number of threads.
+struct LevelSort {
+  Level const &lv;
+  Grid &g;
+  Buffer<std::size_t> const &base;  // the level's cells: offsets of their entries
+  double const *box;
+  bool periodic;
+  Buffer<std::uint32_t> &where;  // the grid's cell of each entry
+  Buffer<std::uint32_t> &hist;   // nt histograms of g.cells counts
+  Snapshot *s;
+  int nt = 1;
+  std::size_t split[max_snapshot_threads + 1] = {};
+
+  // The shares and the scratch arrays; false when an allocation fails.
+  bool prepare(int threads) noexcept {
+    std::size_t const ncells = lv.cells.size();
+    nt = std::min(threads_for(threads, lv.count), max_snapshot_threads);
+    for (int t = 1; t < nt; ++t)
+      split[t] = static_cast<std::size_t>(
+          std::lower_bound(base.data(), base.data() + ncells + 1,
+                           lv.count / std::size_t(nt) * std::size_t(t)) -
+          base.data());
+    split[nt] = ncells;
+    where.clear();
+    hist.clear();
+    return where.resize_uninitialised(lv.count) &&
+           hist.resize(std::size_t(nt) * g.cells);
+  }
+  void locate(int t) noexcept {
+    std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+    for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+      Cell const &cell = lv.cells[ci];
+      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+        std::uint32_t const w = static_cast<std::uint32_t>(
+            cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
+        where[base[ci] + ei] = w;
+        ++h[w];
+      }
+    }
+  }
+  void totals() noexcept {
+    for (std::size_t c = 0; c < g.cells; ++c) {
+      std::uint32_t k = 0;
+      for (int t = 0; t < nt; ++t) k += hist[std::size_t(t) * g.cells + c];
+      g.start[c + 1] = g.start[c] + k;
+    }
+  }
+  // Each thread's histogram becomes its cursors in the cells [c0, c1).
+  void cursors(std::size_t c0, std::size_t c1) noexcept {
+    for (std::size_t c = c0; c < c1; ++c) {
+      std::uint32_t at = g.start[c];
+      for (int t = 0; t < nt; ++t) {
+        std::uint32_t const k = hist[std::size_t(t) * g.cells + c];
+        hist[std::size_t(t) * g.cells + c] = at;
+        at += k;
+      }
+    }
+  }
+  void scatter(int t) noexcept {
+    std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+    for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+      Cell const &cell = lv.cells[ci];
+      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+        Entry const &e = cell[ei];
+        std::size_t const to = g.first + h[where[base[ci] + ei]]++;
+        Hot &x = s->hot[to];
+        for (int k = 0; k < dim; ++k) {
+          x.c[k] = e.c[k];
+          x.h[k] = e.h[k];
+          x.wrap[k] = e.wrap[k];
+        }
+        x.id = e.id;
+        for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
+      }
+    }
+  }
+  void run() noexcept {
+    if (nt <= 1) {
+      locate(0);
+      totals();
+      cursors(0, g.cells);
+      scatter(0);
+      return;
+    }
+#if defined(PW85_OPENMP)
+    long long const ncell = static_cast<long long>(g.cells);
+    // The shares t are handed out by `omp for`, not taken from the
+    // thread's number: OpenMP may start fewer threads than asked
+    // (OMP_THREAD_LIMIT, OMP_DYNAMIC, nesting), and every share must run.
+#pragma omp parallel num_threads(nt)
+    {
+#pragma omp for schedule(static, 1)
+      for (int t = 0; t < nt; ++t) locate(t);
+#pragma omp single
+      totals();
+#pragma omp for schedule(static)
+      for (long long c = 0; c < ncell; c += 4096)
+        cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
+#pragma omp for schedule(static, 1)
+      for (int t = 0; t < nt; ++t) scatter(t);
+    }
+#endif
+  }
+};
+
 // The snapshot of every non-empty level; false when an allocation fails.
 // The cells of the entries (`where`) are computed on `threads` threads;
 // the counting sort itself is serial (in the order of the level's cells,
@@ -114,137 +271,10 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
     base[0] = 0;
     for (std::size_t ci = 0; ci < ncells; ++ci)
       base[ci + 1] = base[ci] + lv.cells[ci].size();
-    double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
-    double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    if (!periodic)
-      for (std::size_t ci = 0; ci < ncells; ++ci)
-        for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei)
-          for (int k = 0; k < dim; ++k) {
-            lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
-            hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
-          }
-    double cells = 1.0;
-    for (int k = 0; k < dim; ++k) {
-      g.hmax[k] = lv.hmax[k];
-      double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
-      if (periodic) {
-        g.origin[k] = 0.0;
-        g.n[k] = static_cast<std::int64_t>(std::min(
-            std::max(std::floor(box[k] / side), 1.0), max_span));
-        g.inv[k] = double(g.n[k]) / box[k];
-      } else {
-        g.origin[k] = lo[k];
-        g.inv[k] = 1.0 / side;
-        g.n[k] = static_cast<std::int64_t>(std::min(
-            std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
-      }
-      cells *= double(g.n[k]);
-    }
-    // Coarsen the widest axis until the grid is no larger than its entries.
-    double const most = 2.0 * double(lv.count) + 64.0;
-    while (cells > most) {
-      int k = 0;
-      for (int a = 1; a < dim; ++a)
-        if (g.n[a] > g.n[k]) k = a;
-      cells /= double(g.n[k]);
-      g.n[k] = (g.n[k] + 1) / 2;
-      cells *= double(g.n[k]);
-      g.inv[k] = periodic ? double(g.n[k]) / box[k] : 0.5 * g.inv[k];
-    }
-    g.cells = static_cast<std::size_t>(cells);
-    if (!g.start.resize(g.cells + 1)) return false;
-    where.clear();
-    if (!where.resize_uninitialised(lv.count)) return false;
-    // A counting sort by cell, in the order of the level's cells. On nt
-    // threads, thread t takes the level's cells [split[t], split[t + 1])
-    // (about count/nt entries) and counts its entries per dense cell in its
-    // own histogram; in each dense cell, thread t's entries then follow
-    // those of threads t' < t, which is the serial order: the snapshot is
-    // the same for any number of threads.
-    int const nt = std::min(threads_for(threads, lv.count), max_snapshot_threads);
-    std::size_t split[max_snapshot_threads + 1];
-    split[0] = 0;
-    for (int t = 1; t < nt; ++t)
-      split[t] = static_cast<std::size_t>(
-          std::lower_bound(base.data(), base.data() + ncells + 1,
-                           lv.count / std::size_t(nt) * std::size_t(t)) -
-          base.data());
-    split[nt] = ncells;
-    hist.clear();
-    if (!hist.resize(std::size_t(nt) * g.cells)) return false;
-    auto locate = [&](int t) {
-      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
-      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
-        Cell const &cell = lv.cells[ci];
-        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-          std::uint32_t const w = static_cast<std::uint32_t>(
-              cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
-          where[base[ci] + ei] = w;
-          ++h[w];
-        }
-      }
-    };
-    // Each thread's histogram becomes its cursors in the cells.
-    auto cursors = [&](std::size_t c0, std::size_t c1) {
-      for (std::size_t c = c0; c < c1; ++c) {
-        std::uint32_t at = g.start[c];
-        for (int t = 0; t < nt; ++t) {
-          std::uint32_t const k = hist[std::size_t(t) * g.cells + c];
-          hist[std::size_t(t) * g.cells + c] = at;
-          at += k;
-        }
-      }
-    };
-    auto scatter = [&](int t) {
-      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
-      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
-        Cell const &cell = lv.cells[ci];
-        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-          Entry const &e = cell[ei];
-          std::size_t const to = g.first + h[where[base[ci] + ei]]++;
-          Hot &x = s->hot[to];
-          for (int k = 0; k < dim; ++k) {
-            x.c[k] = e.c[k];
-            x.h[k] = e.h[k];
-            x.wrap[k] = e.wrap[k];
-          }
-          x.id = e.id;
-          for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
-        }
-      }
-    };
-    auto totals = [&]() {
-      for (std::size_t c = 0; c < g.cells; ++c) {
-        std::uint32_t k = 0;
-        for (int t = 0; t < nt; ++t) k += hist[std::size_t(t) * g.cells + c];
-        g.start[c + 1] = g.start[c] + k;
-      }
-    };
-    if (nt <= 1) {
-      locate(0);
-      totals();
-      cursors(0, g.cells);
-      scatter(0);
-    } else {
-#if defined(PW85_OPENMP)
-      long long const ncell = static_cast<long long>(g.cells);
-      // The shares t are handed out by `omp for`, not taken from the
-      // thread's number: OpenMP may start fewer threads than asked
-      // (OMP_THREAD_LIMIT, OMP_DYNAMIC, nesting), and every share must run.
-#pragma omp parallel num_threads(nt)
-      {
-#pragma omp for schedule(static, 1)
-        for (int t = 0; t < nt; ++t) locate(t);
-#pragma omp single
-        totals();
-#pragma omp for schedule(static)
-        for (long long c = 0; c < ncell; c += 4096)
-          cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
-#pragma omp for schedule(static, 1)
-        for (int t = 0; t < nt; ++t) scatter(t);
-      }
-#endif
-    }
+    grid_shape(lv, box, periodic, &g);
+    LevelSort sort{lv, g, base, box, periodic, where, hist, s};
+    if (!g.start.resize(g.cells + 1) || !sort.prepare(threads)) return false;
+    sort.run();
     s->grids.push_back_reserved(static_cast<Grid &&>(g));
   }
   return true;
@@ -510,6 +540,73 @@ class Search {
   double slack_[dim], slack_sum_;  // test()'s
 };
 
+// The pairs of every share into out, sorted by (i, j, shift); ids: the
+// id table's size, total: the number of pairs. False when an allocation
+// fails.
+bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
+           std::size_t total, Buffer<PairHit> *out) noexcept {
+  // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
+  // The keys (i, j, n) are distinct, so the order within an i before its
+  // sort does not matter: the shares are scattered concurrently (slots
+  // taken by atomic increments) and the output is still the same for any
+  // number of threads.
+  Buffer<std::size_t> first;
+  if (!first.resize(ids + 1) || !out->resize_uninitialised(total)) return false;
+  int const nt = threads_for(threads, total);
+  auto count_share = [&](std::size_t k, bool atomic) {
+    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
+      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        std::size_t *c = &first[p[q].i + 1];
+        if (atomic)
+          __atomic_fetch_add(c, 1, __ATOMIC_RELAXED);
+        else
+          ++*c;
+      }
+    }
+  };
+  auto scatter_share = [&](std::size_t k, bool atomic) {
+    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
+      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        std::size_t *c = &first[p[q].i];
+        std::size_t const to =
+            atomic ? __atomic_fetch_add(c, 1, __ATOMIC_RELAXED) : (*c)++;
+        (*out)[to] = p[q];
+      }
+    }
+  };
+  auto sort_from = [&](std::size_t i) {
+    // first[i] is now the end of i's pairs, first[i − 1] their start.
+    std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
+    if (end - begin > 1)
+      std::sort(out->data() + begin, out->data() + end, pair_less);
+  };
+  if (nt <= 1) {
+    for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
+    for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
+    for (std::size_t k = 0; k < shares.size(); ++k) scatter_share(k, false);
+    for (std::size_t i = 0; i < ids; ++i) sort_from(i);
+  } else {
+#if defined(PW85_OPENMP)
+    long long const nshares = static_cast<long long>(shares.size());
+    long long const nids = static_cast<long long>(ids);
+#pragma omp parallel num_threads(nt)
+    {
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nshares; ++k) count_share(std::size_t(k), true);
+#pragma omp single
+      for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nshares; ++k) scatter_share(std::size_t(k), true);
+#pragma omp for schedule(dynamic, 4096)
+      for (long long i = 0; i < nids; ++i) sort_from(std::size_t(i));
+    }
+#endif
+  }
+  return true;
+}
+
 }  // namespace
 
 Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
@@ -568,67 +665,7 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
   snap.hot.reset();  // spare the memory before the merge's
   snap.forms.reset();
 
-  // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
-  // The keys (i, j, n) are distinct, so the order within an i before its
-  // sort does not matter: the shares are scattered concurrently (slots
-  // taken by atomic increments) and the output is still the same for any
-  // number of threads.
-  Buffer<std::size_t> first;
-  if (!first.resize(id_bound() + 1) || !out->resize_uninitialised(total))
-    return Status::no_memory;
-  int const nt = threads_for(threads, total);
-  std::size_t const ids = id_bound();
-  auto count_share = [&](std::size_t k, bool atomic) {
-    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit> const &p = shares[k].pairs.block(b);
-      for (std::size_t q = 0; q < p.size(); ++q) {
-        std::size_t *c = &first[p[q].i + 1];
-        if (atomic)
-          __atomic_fetch_add(c, 1, __ATOMIC_RELAXED);
-        else
-          ++*c;
-      }
-    }
-  };
-  auto scatter_share = [&](std::size_t k, bool atomic) {
-    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit> const &p = shares[k].pairs.block(b);
-      for (std::size_t q = 0; q < p.size(); ++q) {
-        std::size_t *c = &first[p[q].i];
-        std::size_t const to =
-            atomic ? __atomic_fetch_add(c, 1, __ATOMIC_RELAXED) : (*c)++;
-        (*out)[to] = p[q];
-      }
-    }
-  };
-  auto sort_from = [&](std::size_t i) {
-    // first[i] is now the end of i's pairs, first[i − 1] their start.
-    std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
-    if (end - begin > 1)
-      std::sort(out->data() + begin, out->data() + end, pair_less);
-  };
-  if (nt <= 1) {
-    for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
-    for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
-    for (std::size_t k = 0; k < shares.size(); ++k) scatter_share(k, false);
-    for (std::size_t i = 0; i < ids; ++i) sort_from(i);
-  } else {
-#if defined(PW85_OPENMP)
-    long long const nshares = static_cast<long long>(shares.size());
-    long long const nids = static_cast<long long>(ids);
-#pragma omp parallel num_threads(nt)
-    {
-#pragma omp for schedule(dynamic, 1)
-      for (long long k = 0; k < nshares; ++k) count_share(std::size_t(k), true);
-#pragma omp single
-      for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
-#pragma omp for schedule(dynamic, 1)
-      for (long long k = 0; k < nshares; ++k) scatter_share(std::size_t(k), true);
-#pragma omp for schedule(dynamic, 4096)
-      for (long long i = 0; i < nids; ++i) sort_from(std::size_t(i));
-    }
-#endif
-  }
+  if (!merge(shares, threads, id_bound(), total, out)) return Status::no_memory;
   if (candidates != nullptr) *candidates = found;
   return Status::success;
 }
