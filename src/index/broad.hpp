@@ -18,6 +18,7 @@
 #ifndef PW85_SRC_INDEX_BROAD_HPP
 #define PW85_SRC_INDEX_BROAD_HPP
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -84,8 +85,8 @@ inline double cell_range(Reach const &rc, double const c[dim],
   double cells = 1.0;
   for (int k = 0; k < dim; ++k) {
     double const x = c[k] - origin[k], w = rc.reach[k] + rc.slack[k];
-    lo[k] = std::fmin(std::fmax(std::floor((x - w) * inv[k]), first[k]), last[k]);
-    hi[k] = std::fmin(std::fmax(std::floor((x + w) * inv[k]), first[k]), last[k]);
+    lo[k] = std::min(std::max(std::floor((x - w) * inv[k]), first[k]), last[k]);
+    hi[k] = std::min(std::max(std::floor((x + w) * inv[k]), first[k]), last[k]);
     cells *= hi[k] - lo[k] + 1.0;
   }
   return cells;

@@ -139,7 +139,7 @@ class CellScan {
 
 // The cells that hold points within half a cell of c (at most two along
 // each axis), inside the block [from, to].
-void nearest_cells(Level const &lv, bool periodic, double const c[dim],
+PW85_INLINE void nearest_cells(Level const &lv, bool periodic, double const c[dim],
                    std::int64_t const from[dim], std::int64_t const to[dim],
                    std::int64_t lo[dim], std::int64_t hi[dim]) noexcept {
   for (int k = 0; k < dim; ++k) {
