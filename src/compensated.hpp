@@ -142,9 +142,10 @@ PW85_INLINE int scale_for_p(double s[dim], double s_lo[dim]) noexcept {
 // callers' hi and lo never leave registers on the common path (passing
 // them made pw85_f_neg 20% slower). Returns false when that factorisation
 // fails (a pivot not > 0); *out is then unchanged.
+// r_lo: as for compensated_from().
 bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
-                    double const q2[sym], bool with_p,
-                    Compensated *out) noexcept;
+                    double const q2[sym], bool with_p, Compensated *out,
+                    double const *r_lo = nullptr) noexcept;
 
 // s = Q(λ)⁻¹·r as s + s_lo, from Q(λ) = hi + lo factorised in
 // double-double: relative error of order κ(Q(λ))·2⁻¹⁰⁴ (the contact
@@ -153,22 +154,34 @@ bool solve_dd(double lambda, double const r[dim], double const q1[sym],
               double const q2[sym], double s[dim], double s_lo[dim]) noexcept;
 
 // The evaluation from Q(λ) as hi + lo and its plain factors and solution.
-// WithP: also P1 and P2.
+// WithP: also P1 and P2. r_lo: nullptr, or the low part of r = r + r_lo
+// (a double-double, |r_lo_k| ≤ ulp(r_k)/2: the index's image vectors,
+// src/index/broad.hpp): f and Pᵢ are then those of r + r_lo. It enters the
+// residual, ρ = (r + r_lo) − Q(λ)·s, rounded once more (an error of
+// ε·|ρ + r_lo|, of the order of ρ's own rounding), and r·s, as r_lo·s in
+// the low part: r·s + r_lo·s + s·ρ = (r + r_lo)ᵀQ⁻¹(r + r_lo) − eᵀQe.
 template <bool WithP>
 PW85_INLINE void compensated_from(double lambda, double const r[dim],
                                   double const q1[sym], double const q2[sym],
                                   double const hi[sym], double const lo[sym],
-                                  LdlSolution const &plain,
-                                  Compensated *out) noexcept {
+                                  LdlSolution const &plain, Compensated *out,
+                                  double const *r_lo = nullptr) noexcept {
   Ldl const &fac = plain.fac;
   double s[dim], rho[dim], ds[dim] = {0.0, 0.0, 0.0};
   double const cond = ldl_cond_bound(hi, fac);
   if (PW85_UNLIKELY(cond > factor_dd_cond) &&
-      compensated_dd(lambda, r, q1, q2, WithP, out))
+      compensated_dd(lambda, r, q1, q2, WithP, out, r_lo))
     return;
+  auto residual = [&]() {
+    compensated_residual(hi, lo, r, s, rho);
+    if (r_lo != nullptr) {
+      PW85_UNROLL
+      for (int i = 0; i < dim; ++i) rho[i] += r_lo[i];
+    }
+  };
   PW85_UNROLL
   for (int i = 0; i < dim; ++i) s[i] = plain.s[i];
-  compensated_residual(hi, lo, r, s, rho);
+  residual();
   bool const refine = cond > refine_cond;
   // The refined s is ds + ds_lo; ds_lo is kept where it may matter, when
   // Q(λ) is ill-conditioned (below p_carry_cond, Pᵢ from ds alone moves λ
@@ -191,9 +204,11 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   if (refine) {
     PW85_UNROLL
     for (int i = 0; i < dim; ++i) s[i] = ds[i];
-    compensated_residual(hi, lo, r, s, rho);
+    residual();
   }
-  dd const rs = dd_add(dot_dd(r, s), dot(s, rho));     // rᵀQ⁻¹r − eᵀQe
+  double low = dot(s, rho);
+  if (r_lo != nullptr) low += dot(r_lo, s);
+  dd const rs = dd_add(dot_dd(r, s), low);  // rᵀQ⁻¹r − eᵀQe
   dd const w = dd_mul(two_sum(1.0, -lambda), lambda);  // λ(1−λ)
   dd const value = dd_mul(w, rs);  // normalised: value.hi = dd_round(value)
   out->f = value.hi;
@@ -215,22 +230,24 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
 // factorise, in double nor in double-double. fast: see ldl_decomp_q().
 // (One function for both cases, so that a caller inlines the kernels
 // once: code size counts in the finish's loop.)
+// r_lo: as for compensated_from().
 template <bool WithP>
 PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
                                       double const q1[sym],
                                       double const q2[sym], bool fast,
                                       LdlSolution const *plain,
-                                      Compensated *out) noexcept {
+                                      Compensated *out,
+                                      double const *r_lo = nullptr) noexcept {
   double hi[sym], lo[sym];
   combine_dd(lambda, q1, q2, hi, lo);
   LdlSolution fresh;
   if (plain == nullptr) {
     if (PW85_UNLIKELY(!ldl_decomp_q(hi, &fresh.fac, fast)))
-      return compensated_dd(lambda, r, q1, q2, WithP, out);
+      return compensated_dd(lambda, r, q1, q2, WithP, out, r_lo);
     ldl_solve(fresh.fac, r, fresh.s);
     plain = &fresh;
   }
-  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, *plain, out);
+  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, *plain, out, r_lo);
   return true;
 }
 

@@ -30,13 +30,17 @@ PW85_INLINE bool ldl_decomp_dd(dd const a[sym], LdlDd *f) noexcept {
 }
 
 // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ (a sum of non-negative terms) and s = Q⁻¹·r as
-// s_hi + s_lo, from z = L⁻¹·r, all in double-double.
+// s_hi + s_lo, from z = L⁻¹·r, all in double-double; r + r_lo when r_lo
+// is not nullptr.
 PW85_INLINE dd ldl_solve_quad_dd(LdlDd const &f, double const r[dim],
-                                 double s[dim], double s_lo[dim]) noexcept {
-  dd const z0{r[0], 0.0};
-  dd const z1 = dd_sub(dd{r[1], 0.0}, dd_mul(f.l10, z0));
-  dd const z2 =
-      dd_sub(dd_sub(dd{r[2], 0.0}, dd_mul(f.l20, z0)), dd_mul(f.l21, z1));
+                                 double const *r_lo, double s[dim],
+                                 double s_lo[dim]) noexcept {
+  dd const z0{r[0], r_lo != nullptr ? r_lo[0] : 0.0};
+  dd const z1 =
+      dd_sub(dd{r[1], r_lo != nullptr ? r_lo[1] : 0.0}, dd_mul(f.l10, z0));
+  dd const z2 = dd_sub(
+      dd_sub(dd{r[2], r_lo != nullptr ? r_lo[2] : 0.0}, dd_mul(f.l20, z0)),
+      dd_mul(f.l21, z1));
   dd const y0 = dd_div(z0, f.d[0]);
   dd const y1 = dd_div(z1, f.d[1]);
   dd const y2 = dd_div(z2, f.d[2]);
@@ -68,8 +72,8 @@ PW85_INLINE bool factorise_q_dd(double lambda, double const q1[sym],
 
 PW85_FMA_CLONES
 bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
-                    double const q2[sym], bool with_p,
-                    Compensated *out) noexcept {
+                    double const q2[sym], bool with_p, Compensated *out,
+                    double const *r_lo) noexcept {
   // f = λ(1−λ)·rᵀQ⁻¹r from the double-double factors, and Pᵢ = sᵀQᵢs from
   // s = s_hi + s_lo: sᵀQs = s_hiᵀQs_hi + 2·(Q·s_hi)·s_lo to second order
   // in s_lo. (From s rounded to double, Pᵢ would be off by up to
@@ -77,7 +81,7 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
   LdlDd fdd;
   if (!factorise_q_dd(lambda, q1, q2, &fdd)) return false;
   double s[dim], s_lo[dim];
-  dd const quad = ldl_solve_quad_dd(fdd, r, s, s_lo);
+  dd const quad = ldl_solve_quad_dd(fdd, r, r_lo, s, s_lo);
   dd const value = dd_mul(dd_mul(two_sum(1.0, -lambda), lambda), quad);
   out->f = value.hi;
   out->f_lo = value.lo;
@@ -97,7 +101,7 @@ bool solve_dd(double lambda, double const r[dim], double const q1[sym],
               double const q2[sym], double s[dim], double s_lo[dim]) noexcept {
   LdlDd fdd;
   if (!factorise_q_dd(lambda, q1, q2, &fdd)) return false;
-  ldl_solve_quad_dd(fdd, r, s, s_lo);
+  ldl_solve_quad_dd(fdd, r, nullptr, s, s_lo);
   return true;
 }
 

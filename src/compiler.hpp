@@ -21,6 +21,26 @@
 #define PW85_UNLIKELY(c) (c)
 #endif
 
+// PW85_PREFETCH(p): a hint that *p will be read soon (the index's cell
+// visits); no effect on results.
+#if defined(__GNUC__)
+#define PW85_PREFETCH(p) __builtin_prefetch(p)
+#else
+#define PW85_PREFETCH(p) ((void)0)
+#endif
+
+// PW85_ADVISE_HUGEPAGES(p, bytes): a hint to the kernel that the block
+// [p, p + bytes) be mapped with transparent huge pages (Linux, where
+// MADV_HUGEPAGE exists; nothing elsewhere). Its failure changes nothing.
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+#define PW85_ADVISE_HUGEPAGES(p, bytes) ((void)madvise((p), (bytes), MADV_HUGEPAGE))
+#else
+#define PW85_ADVISE_HUGEPAGES(p, bytes) ((void)(p), (void)(bytes))
+#endif
+
 // Compile a function twice, for CPUs with and without FMA, and pick one at
 // load time (an ifunc): where the CPU has FMA, std::fma becomes one
 // instruction; elsewhere it stays the exact libm routine. The build itself

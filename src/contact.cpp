@@ -18,7 +18,7 @@
 namespace pw85::detail {
 
 template <bool Fast>
-Status solve(Problem const &p, double out[2]) noexcept {
+Status solve(Problem const &p, double out[2], double const *r_lo) noexcept {
   // 3. Warm start (eq. (5.9)); 4. Newton on ω from there.
   NewtonResult newton =
       newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter);
@@ -57,7 +57,7 @@ Status solve(Problem const &p, double out[2]) noexcept {
   // reuses) when Newton's last step from there was below finish_reuse
   // (relative), else from the estimate.
   double const c = newton.last.lambda;
-  FinishStart start{newton.lambda, newton.last.domega, nullptr};
+  FinishStart start{newton.lambda, newton.last.domega, nullptr, r_lo};
   if (newton.last_within(finish_reuse * std::min(c, 1.0 - c))) {
     start.lambda = c;
     start.plain = &newton.last.sol;
@@ -74,14 +74,16 @@ Status solve(Problem const &p, double out[2]) noexcept {
   return Status::success;
 }
 
-template Status solve<true>(Problem const &, double[2]) noexcept;
-template Status solve<false>(Problem const &, double[2]) noexcept;
+template Status solve<true>(Problem const &, double[2], double const *) noexcept;
+template Status solve<false>(Problem const &, double[2], double const *) noexcept;
 
 namespace {
 
 // Inline, so that contact_function() keeps the problem in its own frame.
+// r_lo: nullptr, or the low part of r (contact_function_dd()).
 PW85_INLINE Status search(double const r[dim], double const q1[sym],
-                          double const q2[sym], Contact *c) noexcept {
+                          double const q2[sym], Contact *c,
+                          double const *r_lo = nullptr) noexcept {
   // 2. Rescaling, and the factorisations of Q1 and Q2.
   Problem &p = c->p;
   Status status = prepare(r, q1, q2, &p);
@@ -93,9 +95,16 @@ PW85_INLINE Status search(double const r[dim], double const q1[sym],
   }
   quads(&p);
   orient(&p);
+  // r_lo scaled as r (exact but for underflow, an error below 2⁻¹⁰⁷⁴ of
+  // the scaled |r| ≥ ½); orient() leaves r as it is.
+  double lo[dim];
+  if (r_lo != nullptr)
+    for (int k = 0; k < dim; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
+  double const *const scaled_lo = r_lo != nullptr ? lo : nullptr;
   // 3.–7.
   double res[2];
-  status = p.moderate ? solve<true>(p, res) : solve<false>(p, res);
+  status = p.moderate ? solve<true>(p, res, scaled_lo)
+                      : solve<false>(p, res, scaled_lo);
   if (status != Status::success) return status;
   // 8. Floor: beyond the documented domain (cond(Qᵢ) far above 1/ε) the
   // computed f can be meaningless; μ² never falls below the rigorous sphere
@@ -127,10 +136,10 @@ Status contact_search(double const r[dim], double const q1[sym],
   return search(r, q1, q2, c);
 }
 
-Status contact_function(double const r[dim], double const q1[sym],
-                        double const q2[sym], double out[2]) noexcept {
-  Contact c;
-  Status const status = search(r, q1, q2, &c);
+namespace {
+
+PW85_INLINE Status contact_out(Status status, Contact const &c,
+                               double out[2]) noexcept {
   if (status != Status::success) return status;
   out[1] = c.p.swapped ? 1.0 - c.lambda : c.lambda;
   if (std::isinf(c.mu2)) {
@@ -139,6 +148,23 @@ Status contact_function(double const r[dim], double const q1[sym],
   }
   out[0] = c.mu2;
   return Status::success;
+}
+
+}  // namespace
+
+Status contact_function(double const r[dim], double const q1[sym],
+                        double const q2[sym], double out[2]) noexcept {
+  Contact c;
+  Status const status = search(r, q1, q2, &c);
+  return contact_out(status, c, out);
+}
+
+Status contact_function_dd(double const r[dim], double const r_lo[dim],
+                           double const q1[sym], double const q2[sym],
+                           double out[2]) noexcept {
+  Contact c;
+  Status const status = search(r, q1, q2, &c, r_lo);
+  return contact_out(status, c, out);
 }
 
 }  // namespace pw85::detail

@@ -31,13 +31,27 @@ Status contact_search(double const r[dim], double const q1[sym],
 Status contact_function(double const r[dim], double const q1[sym],
                         double const q2[sym], double out[2]) noexcept;
 
-// Steps 3 to 7 on a prepared problem with r ≠ 0: out = {μ² of the problem
-// (unscaled, unfloored), λ}. Fast = p.moderate.
-template <bool Fast>
-Status solve(Problem const &p, double out[2]) noexcept;
+// contact_function() of r + r_lo, a double-double (|r_lo_k| ≤
+// ulp(r_k)/2; r_lo finite): μ² correctly rounded for r + r_lo, as
+// contact_function() for r. The plain stages of the search (steps 3 to 6)
+// run on r, which moves their λ by O(ε) relative; the compensated finish
+// (step 7) evaluates f at r + r_lo (compensated_from()) and lands on the
+// maximiser of that f. For the spatial index (src/index/broad.hpp).
+Status contact_function_dd(double const r[dim], double const r_lo[dim],
+                           double const q1[sym], double const q2[sym],
+                           double out[2]) noexcept;
 
-extern template Status solve<true>(Problem const &, double[2]) noexcept;
-extern template Status solve<false>(Problem const &, double[2]) noexcept;
+// Steps 3 to 7 on a prepared problem with r ≠ 0: out = {μ² of the problem
+// (unscaled, unfloored), λ}. Fast = p.moderate. r_lo: nullptr, or the low
+// part of p.r, scaled as p.r (contact_function_dd()).
+template <bool Fast>
+Status solve(Problem const &p, double out[2],
+             double const *r_lo = nullptr) noexcept;
+
+extern template Status solve<true>(Problem const &, double[2],
+                                   double const *) noexcept;
+extern template Status solve<false>(Problem const &, double[2],
+                                    double const *) noexcept;
 
 }  // namespace pw85::detail
 

@@ -65,7 +65,7 @@ bool finish(Problem const &p, FinishStart const &start,
   for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
     Compensated a;
     if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
-                                    plain, &a))
+                                    plain, &a, start.r_lo))
       break;
     best.see(a.f, lambda);
     double const omega = omega_of(lambda, a);

@@ -16,6 +16,10 @@ struct FinishStart {
   // The plain factors and solution at lambda, when the caller has them
   // (Newton's last point), else nullptr.
   LdlSolution const *plain;
+  // nullptr, or the low part of the problem's r (scaled as p.r): the
+  // compensated evaluations are then those of p.r + r_lo
+  // (compensated_from()).
+  double const *r_lo;
 };
 
 struct Finished {

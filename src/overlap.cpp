@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compiler.hpp"
 #include "contact.hpp"
 #include "evaluate.hpp"
 #include "ldl.hpp"
@@ -30,6 +31,7 @@ struct Filtering {
   double one;
   double cond1, cond2;  // κ̄(Q1), κ̄(Q2)
   double a1, a2;        // rᵀQ1⁻¹r, rᵀQ2⁻¹r
+  double const *r_lo;   // nullptr, or the low part of p.r (overlap_dd())
 };
 
 // Filter 1, no factorisation needed: the sphere bound μ² ≥
@@ -92,9 +94,10 @@ Decision bounds_filters(Filtering const &s) noexcept {
 // The last stage: the exact contact function, for nearly tangent pairs or
 // pairs too ill-conditioned for the plain bounds.
 template <bool Fast>
-Status exact_decision(Problem const &p, Decision *d) noexcept {
+Status exact_decision(Problem const &p, double const *r_lo,
+                      Decision *d) noexcept {
   double res[2];
-  Status const status = solve<Fast>(p, res);
+  Status const status = solve<Fast>(p, res, r_lo);
   if (status != Status::success) return status;
   double const mu2 = std::ldexp(res[0], p.shift);
   *d = std::fabs(mu2 - 1.0) <= tangency
@@ -107,13 +110,13 @@ template <bool Fast>
 Status decide(Filtering const &s, Decision *d) noexcept {
   *d = bounds_filters<Fast>(s);
   if (*d != Decision::undecided) return Status::success;
-  return exact_decision<Fast>(s.p, d);
+  return exact_decision<Fast>(s.p, s.r_lo, d);
 }
 
-}  // namespace
-
-Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
-               int *result) noexcept {
+// overlap() of r + r_lo (r_lo: nullptr for 0).
+PW85_INLINE Status decide_overlap(double const r[dim], double const *r_lo,
+                                  double const q1[sym], double const q2[sym],
+                                  int *result) noexcept {
   Problem p;
   Status status = prepare(r, q1, q2, &p);
   if (status != Status::success) return status;
@@ -130,20 +133,40 @@ Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
                       trace(p.q1) * p.tinv1,  // κ̄(Q1) (ldl_cond_bound())
                       trace(p.q2) * p.tinv2,
                       p.a1,
-                      p.a2};
+                      p.a2,
+                      nullptr};
     d = centre_filter(s);
     if (d == Decision::undecided) {
       // The remaining stages in the problem's canonical orientation, so
       // that both argument orders take the same steps. (The filters above
       // are symmetric in Q1 and Q2 as they stand.)
       orient(&p);
-      Filtering const t{p, one, s.cond1, s.cond2, p.a1, p.a2};
+      // r_lo scaled as r (contact.cpp, search()).
+      double lo[dim];
+      if (r_lo != nullptr)
+        for (int k = 0; k < dim; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
+      Filtering const t{p,       one,  s.cond1,
+                        s.cond2, p.a1, p.a2,
+                        r_lo != nullptr ? lo : nullptr};
       status = p.moderate ? decide<true>(t, &d) : decide<false>(t, &d);
       if (status != Status::success) return status;
     }
   }
   *result = static_cast<int>(d);
   return Status::success;
+}
+
+}  // namespace
+
+Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
+               int *result) noexcept {
+  return decide_overlap(r, nullptr, q1, q2, result);
+}
+
+Status overlap_dd(double const r[dim], double const r_lo[dim],
+                  double const q1[sym], double const q2[sym],
+                  int *result) noexcept {
+  return decide_overlap(r, r_lo, q1, q2, result);
 }
 
 }  // namespace pw85::detail

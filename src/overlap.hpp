@@ -16,6 +16,19 @@ namespace pw85::detail {
 Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
                int *result) noexcept;
 
+// overlap() of r + r_lo, a double-double (|r_lo_k| ≤ ulp(r_k)/2; r_lo
+// finite): the decision on the sign of μ²(r + r_lo) − 1 (the exact μ² of
+// contact_function_dd() near tangency). The filters run on r: |r_lo| ≤
+// ε/2·|r| moves rᵀA⁻¹r by a factor within 1 ± ε·√κ̄(A)·(1 + ε·√κ̄(A)) for
+// every A = Q(λ) or Qᵢ (|r_lo|_A⁻¹ ≤ √cond(A)·ε/2·|r|_A⁻¹), μ² and every
+// μᵢ² likewise (cond Q(λ) ≤ max cond Qᵢ), and |r|² by 1 ± 1.01ε: inside
+// each filter's margin (tolerances.hpp: 16ε for the sphere bound's 7.5ε;
+// 32ε·κ̄ ≥ 96ε·√κ̄ (κ̄ ≥ 9) for estimates off by 8ε·κ̄), so that a
+// filter's decision holds for r + r_lo.
+Status overlap_dd(double const r[dim], double const r_lo[dim],
+                  double const q1[sym], double const q2[sym],
+                  int *result) noexcept;
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_OVERLAP_HPP

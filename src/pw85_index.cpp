@@ -32,6 +32,26 @@ bool outputs_ok(std::size_t capacity, void const *a, void const *b,
   return capacity == 0 || (a != nullptr && b != nullptr && c != nullptr);
 }
 
+// The ids and shifts of the first n pairs, in the layout of pw85_index.h.
+void copy_pairs(core::Buffer<core::PairHit> const &pairs, std::size_t n,
+                size_t *ids, int *shifts) noexcept {
+  for (std::size_t k = 0; k < n; ++k) {
+    ids[2 * k] = pairs[k].i;
+    ids[2 * k + 1] = pairs[k].j;
+    for (int a = 0; a < PW85_DIM; ++a) shifts[3 * k + a] = pairs[k].shift[a];
+  }
+}
+
+// insert() or update() (member) of one ellipsoid, pointers checked.
+int store(pw85_index *index, size_t id, double const centre[PW85_DIM],
+          double const q[PW85_SYM],
+          Status (core::Index::*member)(std::size_t, double const *,
+                                        double const *)) noexcept {
+  if (index == nullptr || centre == nullptr || q == nullptr)
+    return PW85_EFAULT;
+  return to_code((index->index.*member)(id, centre, q));
+}
+
 }  // namespace
 
 extern "C" {
@@ -69,9 +89,7 @@ int pw85_index_count(pw85_index const *index, size_t *count) noexcept {
 int pw85_index_insert(pw85_index *index, size_t id,
                       double const centre[PW85_DIM],
                       double const q[PW85_SYM]) noexcept {
-  if (index == nullptr || centre == nullptr || q == nullptr)
-    return PW85_EFAULT;
-  return to_code(index->index.insert(id, centre, q));
+  return store(index, id, centre, q, &core::Index::insert);
 }
 
 int pw85_index_insert_many(pw85_index *index, size_t n, size_t const *ids,
@@ -85,9 +103,7 @@ int pw85_index_insert_many(pw85_index *index, size_t n, size_t const *ids,
 int pw85_index_update(pw85_index *index, size_t id,
                       double const centre[PW85_DIM],
                       double const q[PW85_SYM]) noexcept {
-  if (index == nullptr || centre == nullptr || q == nullptr)
-    return PW85_EFAULT;
-  return to_code(index->index.update(id, centre, q));
+  return store(index, id, centre, q, &core::Index::update);
 }
 
 int pw85_index_remove(pw85_index *index, size_t id) noexcept {
@@ -162,12 +178,8 @@ int pw85_index_overlapping_pairs(pw85_index const *index, int threads,
   Status const s = index->index.pairs(false, 1.0, threads, &pairs, nullptr);
   if (s != Status::success) return to_code(s);
   std::size_t const n = std::min(capacity, pairs.size());
-  for (std::size_t k = 0; k < n; ++k) {
-    ids[2 * k] = pairs[k].i;
-    ids[2 * k + 1] = pairs[k].j;
-    for (int a = 0; a < PW85_DIM; ++a) shifts[3 * k + a] = pairs[k].shift[a];
-    results[k] = pairs[k].result;
-  }
+  copy_pairs(pairs, n, ids, shifts);
+  for (std::size_t k = 0; k < n; ++k) results[k] = pairs[k].result;
   *count = pairs.size();
   return PW85_SUCCESS;
 }
@@ -182,10 +194,8 @@ int pw85_index_pairs_within(pw85_index const *index, double t, int threads,
   Status const s = index->index.pairs(true, t, threads, &pairs, nullptr);
   if (s != Status::success) return to_code(s);
   std::size_t const n = std::min(capacity, pairs.size());
+  copy_pairs(pairs, n, ids, shifts);
   for (std::size_t k = 0; k < n; ++k) {
-    ids[2 * k] = pairs[k].i;
-    ids[2 * k + 1] = pairs[k].j;
-    for (int a = 0; a < PW85_DIM; ++a) shifts[3 * k + a] = pairs[k].shift[a];
     mu2_lambda[2 * k] = pairs[k].mu2;
     mu2_lambda[2 * k + 1] = pairs[k].lambda;
   }

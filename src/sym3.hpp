@@ -50,6 +50,17 @@ PW85_INLINE void combine(double lambda, double const q1[sym],
   for (int i = 0; i < sym; ++i) q[i] = mu * q1[i] + lambda * q2[i];
 }
 
+// The adjugate of a symmetric A (symmetric too: its entries are the
+// cofactors), in the same storage; det A = a·(row 0 of adj A).
+PW85_INLINE void sym_adjugate(double const a[sym], double c[sym]) noexcept {
+  c[0] = a[3] * a[5] - a[4] * a[4];
+  c[1] = a[2] * a[4] - a[1] * a[5];
+  c[2] = a[1] * a[4] - a[2] * a[3];
+  c[3] = a[0] * a[5] - a[2] * a[2];
+  c[4] = a[1] * a[2] - a[0] * a[4];
+  c[5] = a[0] * a[3] - a[1] * a[1];
+}
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_SYM3_HPP

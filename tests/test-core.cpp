@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "brent_certify.hpp"
+#include "index/deep.hpp"
 #include "index/index.hpp"
 #include "ldl.hpp"
 #include "pw85.h"

@@ -71,6 +71,14 @@ static double mean_volume(Shapes shapes) {
   return 1.;
 }
 
+/* x rounded to a multiple of 2⁻²⁴. The brute force forms the image vector
+ * r = (c_j + n∘L) − c in double, as pw85_overlap() and
+ * pw85_contact_function() take it; the index forms it exactly. Centres and
+ * box sides on this grid, below 2²⁸ in magnitude, make every such sum
+ * exact, so that both see the same configuration (tests/test-index-exact.c
+ * tests the exact vectors against high-precision references). */
+static double on_grid(double x) { return ldexp(nearbyint(ldexp(x, 24)), -24); }
+
 static void random_ellipsoid(GRand *rng, Config const *cf, double side,
                              double c[3], double q[6]) {
   double a[3], e[3];
@@ -85,6 +93,7 @@ static void random_ellipsoid(GRand *rng, Config const *cf, double side,
     } else {
       c[k] = g_rand_double_range(rng, -.5 * side, 1.5 * side); /* unwrapped */
     }
+    c[k] = on_grid(c[k]);
   }
 }
 
@@ -381,7 +390,8 @@ static void test_config(gconstpointer data) {
   double const amax = cf->shapes == POLY ? 10. : 1.;
   double const side = MAX(cbrt(n * mean_volume(cf->shapes) / cf->fraction),
                           2.3 * amax / .9);
-  Mirror m = {cf->periodic, {side, side * 1.1, side * .9}, (size_t)n + n / 2,
+  Mirror m = {cf->periodic, {on_grid(side), on_grid(side * 1.1), on_grid(side * .9)},
+              (size_t)n + n / 2,
               NULL, NULL, NULL};
   m.present = g_new0(gboolean, m.cap);
   m.c = g_new0(double, 3 * m.cap);
@@ -432,7 +442,7 @@ static void test_config(gconstpointer data) {
       if (g_rand_boolean(rng)) /* a small move, same shape */
         for (int k = 0; k < 3; k++) {
           memcpy(qq, m.q + 6 * id, sizeof qq);
-          cc[k] = m.c[3 * id + k] + g_rand_double_range(rng, -.3, .3);
+          cc[k] = on_grid(m.c[3 * id + k] + g_rand_double_range(rng, -.3, .3));
         }
       g_assert_cmpint(pw85_index_update(ix, id, cc, qq), ==, PW85_SUCCESS);
     }
@@ -831,7 +841,9 @@ static void test_near_contact(void) {
       double const scale = sqrt((1. + delta) / out[0]);
       double stored[3] = {.3, .2, .1}, cand[3], r[3];
       if (periodic) for (int d = 0; d < 3; d++) stored[d] = box[d] - .2;
-      for (int d = 0; d < 3; d++) cand[d] = stored[d] - scale * dir[d];
+      for (int d = 0; d < 3; d++) stored[d] = ldexp(nearbyint(ldexp(stored[d], 40)), -40);
+      for (int d = 0; d < 3; d++) /* on a grid of 2⁻⁴⁰: r below is exact */
+        cand[d] = ldexp(nearbyint(ldexp(stored[d] - scale * dir[d], 40)), -40);
       pw85_index *ix = NULL;
       g_assert_cmpint(pw85_index_create(periodic ? box : NULL, &ix), ==, PW85_SUCCESS);
       g_assert_cmpint(pw85_index_insert(ix, 7, stored, q[0]), ==, PW85_SUCCESS);
@@ -860,6 +872,212 @@ static void test_near_contact(void) {
   g_assert_cmpint(overlapping, >, 4000); /* both sides of contact tested */
   g_assert_cmpint(separate, >, 4000);
   g_rand_free(rng);
+}
+
+/* ---- length scales ------------------------------------------------------- */
+
+/* A fixed configuration scaled by 2^e, e from −500 to 500: centres and box
+ * sides by 2^e, forms by 2^2e, exactly (entries on a grid of 2⁻²⁴, forms'
+ * nonzero entries above 2⁻²⁰: none leaves the normal range). μ² and λ
+ * are invariant under that scaling, and so are pw85_overlap()'s and
+ * pw85_contact_function()'s answers: at every scale, every query of the
+ * index must give the brute force's answers at that scale, and those of
+ * scale 1, bit for bit. (Below 2⁻²⁶⁸ the line-of-centres test once formed
+ * rᵀQr in underflow and discarded every pair.) */
+#define SCALE_N 16
+#define SCALE_CANDIDATES 6
+
+typedef struct {
+  int overlap_any[SCALE_CANDIDATES];
+  size_t any_id[SCALE_CANDIDATES];
+  GArray *within[SCALE_CANDIDATES]; /* Ref */
+  GArray *pairs, *pairs_within;      /* Ref */
+} ScaleAnswers;
+
+static void scale_answers_clear(ScaleAnswers *a) {
+  for (int k = 0; k < SCALE_CANDIDATES; k++) g_array_unref(a->within[k]);
+  g_array_unref(a->pairs), g_array_unref(a->pairs_within);
+}
+
+/* The index's answers on the configuration scaled by 2^e. */
+static void index_answers(Mirror const *m, double const *cand_c,
+                          double const *cand_q, ScaleAnswers *out) {
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(m->periodic ? m->box : NULL, &ix), ==, PW85_SUCCESS);
+  for (size_t i = 0; i < m->cap; i++)
+    g_assert_cmpint(pw85_index_insert(ix, i, m->c + 3 * i, m->q + 6 * i), ==, PW85_SUCCESS);
+  for (int k = 0; k < SCALE_CANDIDATES; k++) {
+    double const *c = cand_c + 3 * k, *q = cand_q + 6 * k;
+    g_assert_cmpint(pw85_index_overlap_any(ix, c, q, PW85_INDEX_NO_ID, &out->overlap_any[k],
+                                           &out->any_id[k]), ==, PW85_SUCCESS);
+    size_t ids[64], n = 0;
+    int shifts[3 * 64];
+    double ml[2 * 64];
+    g_assert_cmpint(pw85_index_within(ix, c, q, 1.5, PW85_INDEX_NO_ID, 64, ids, shifts, ml,
+                                      &n), ==, PW85_SUCCESS);
+    g_assert_cmpuint(n, <=, 64);
+    out->within[k] = g_array_new(FALSE, FALSE, sizeof(Ref));
+    for (size_t a = 0; a < n; a++) {
+      Ref r = {PW85_INDEX_NO_ID, ids[a], {shifts[3 * a], shifts[3 * a + 1], shifts[3 * a + 2]},
+               0, ml[2 * a], ml[2 * a + 1]};
+      g_array_append_val(out->within[k], r);
+    }
+  }
+  for (int within = 0; within <= 1; within++) {
+    Pairs p = index_pairs(ix, within, 2., 1);
+    GArray *a = g_array_new(FALSE, FALSE, sizeof(Ref));
+    for (size_t k = 0; k < p.count; k++) {
+      Ref r = {p.ids[2 * k], p.ids[2 * k + 1],
+               {p.shifts[3 * k], p.shifts[3 * k + 1], p.shifts[3 * k + 2]},
+               within ? 0 : p.results[k], within ? p.mu2_lambda[2 * k] : 0.,
+               within ? p.mu2_lambda[2 * k + 1] : 0.};
+      g_array_append_val(a, r);
+    }
+    if (within) out->pairs_within = a; else out->pairs = a;
+    pairs_clear(&p);
+  }
+  pw85_index_destroy(ix);
+}
+
+static gboolean refs_equal(GArray *a, GArray *b) {
+  if (a->len != b->len) return FALSE;
+  for (guint k = 0; k < a->len; k++) {
+    Ref const *x = &g_array_index(a, Ref, k), *y = &g_array_index(b, Ref, k);
+    if (x->j != y->j || memcmp(x->n, y->n, sizeof x->n) != 0 || x->result != y->result ||
+        x->mu2 != y->mu2 || x->lambda != y->lambda ||
+        (x->i != y->i && x->i != PW85_INDEX_NO_ID))
+      return FALSE;
+  }
+  return TRUE;
+}
+
+/* The brute force's answers on the same configuration, and the index's
+ * against them and against those at scale 1 (first, NULL at scale 1). */
+static int check_scale(Mirror const *m, double const *cand_c, double const *cand_q,
+                       ScaleAnswers const *first, ScaleAnswers *got, int e) {
+  int bad = 0;
+  index_answers(m, cand_c, cand_q, got);
+  for (int k = 0; k < SCALE_CANDIDATES; k++) {
+    GArray *ref = brute_candidate(m, cand_c + 3 * k, cand_q + 6 * k, PW85_INDEX_NO_ID,
+                                  FALSE, 1.);
+    int best = 1;
+    for (guint a = 0; a < ref->len; a++) best = MIN(best, g_array_index(ref, Ref, a).result);
+    g_array_unref(ref);
+    ref = brute_candidate(m, cand_c + 3 * k, cand_q + 6 * k, PW85_INDEX_NO_ID, TRUE, 1.5);
+    if (got->overlap_any[k] != best || !refs_equal(got->within[k], ref) ||
+        (first != NULL && (got->overlap_any[k] != first->overlap_any[k] ||
+                           got->any_id[k] != first->any_id[k] ||
+                           !refs_equal(got->within[k], first->within[k])))) {
+      test_mismatch("scale 2^%d, %s, candidate %d: overlap_any %d (brute force %d), "
+                    "within finds %u (brute force %u)", e, m->periodic ? "periodic" : "open",
+                    k, got->overlap_any[k], best, got->within[k]->len, ref->len);
+      bad++;
+    }
+    g_array_unref(ref);
+  }
+  for (int within = 0; within <= 1; within++) {
+    GArray *ref = brute_pairs(m, within, 2.);
+    GArray *mine = within ? got->pairs_within : got->pairs;
+    if (!refs_equal(mine, ref) ||
+        (first != NULL && !refs_equal(mine, within ? first->pairs_within : first->pairs))) {
+      test_mismatch("scale 2^%d, %s, %s: %u pairs (brute force %u)", e,
+                    m->periodic ? "periodic" : "open",
+                    within ? "pairs_within" : "overlapping_pairs", mine->len, ref->len);
+      bad++;
+    }
+    g_array_unref(ref);
+  }
+  return bad;
+}
+
+/* A form of semi-axes a (random orientation) with entries on a grid of
+ * 2⁻²⁰, nonzero ones above 2⁻²⁰ in magnitude; positive definite (checked
+ * by the index on insertion). */
+static void grid_form(GRand *rng, double const a[3], double q[6]) {
+  double e[3];
+  for (int k = 0; k < 3; k++) e[k] = a[k] * a[k];
+  random_form_with_eigenvalues(rng, e, q);
+  for (int k = 0; k < 6; k++) q[k] = ldexp(nearbyint(ldexp(q[k], 20)), -20);
+}
+
+static void test_length_scales(void) {
+  GRand *rng = g_rand_new_with_seed(2268);
+  double c[3 * SCALE_N], q[6 * SCALE_N], cc[3 * SCALE_CANDIDATES], cq[6 * SCALE_CANDIDATES];
+  double const box[3] = {4., 4.5, 5.};
+  double const axes[3] = {1.2, .8, .5};
+  for (int i = 0; i < SCALE_N + SCALE_CANDIDATES; i++) {
+    double *ci = i < SCALE_N ? c + 3 * i : cc + 3 * (i - SCALE_N);
+    double *qi = i < SCALE_N ? q + 6 * i : cq + 6 * (i - SCALE_N);
+    for (int k = 0; k < 3; k++) ci[k] = on_grid(g_rand_double_range(rng, -.5, box[k] + .5));
+    grid_form(rng, axes, qi);
+  }
+  int bad = 0, overlaps = 0;
+  for (int periodic = 0; periodic <= 1; periodic++) {
+    ScaleAnswers first;
+    for (int step = 0; step <= 50; step++) {
+      int const e = step == 0 ? 0 : -500 + 20 * (step - 1); /* scale 1 first */
+      double sc[3 * SCALE_N], sq[6 * SCALE_N], scc[3 * SCALE_CANDIDATES],
+          scq[6 * SCALE_CANDIDATES];
+      for (int k = 0; k < 3 * SCALE_N; k++) sc[k] = ldexp(c[k], e);
+      for (int k = 0; k < 6 * SCALE_N; k++) sq[k] = ldexp(q[k], 2 * e);
+      for (int k = 0; k < 3 * SCALE_CANDIDATES; k++) scc[k] = ldexp(cc[k], e);
+      for (int k = 0; k < 6 * SCALE_CANDIDATES; k++) scq[k] = ldexp(cq[k], 2 * e);
+      gboolean present[SCALE_N];
+      for (int i = 0; i < SCALE_N; i++) present[i] = TRUE;
+      Mirror m = {periodic, {ldexp(box[0], e), ldexp(box[1], e), ldexp(box[2], e)},
+                  SCALE_N, present, sc, sq};
+      ScaleAnswers got;
+      bad += check_scale(&m, scc, scq, step == 0 ? NULL : &first, &got, e);
+      if (step == 0) {
+        first = got;
+        overlaps = (int)got.pairs->len;
+      } else {
+        scale_answers_clear(&got);
+      }
+    }
+    scale_answers_clear(&first);
+  }
+  g_test_message("length scales 2^-500 to 2^500: %d overlapping pairs at scale 1", overlaps);
+  g_assert_cmpint(overlaps, >, 0); /* the configuration has something to find */
+  g_assert_cmpint(bad, ==, 0);
+  g_rand_free(rng);
+}
+
+/* The reproducer of issue 25: two spheres of radius 2⁻²⁸⁰ whose centres
+ * are 1.2·2⁻²⁸¹ apart, stored and candidate, in an open domain and in a
+ * periodic box: pw85_overlap() answers −1, and so must every query. */
+static void test_tiny_reproducer(void) {
+  double const c1[3] = {0x1.999999999999ap-284, 0x1.999999999999ap-283, 0x1.3333333333333p-282};
+  double const c2[3] = {0x1.ccccccccccccdp-281, 0x1p-281, 0x1.6666666666666p-281};
+  double const q[6] = {0x1p-560, 0, 0, 0x1p-560, 0, 0x1p-560};
+  double const box[3] = {0x1p-270, 0x1p-270, 0x1p-270};
+  double r[3];
+  for (int k = 0; k < 3; k++) r[k] = c2[k] - c1[k]; /* exact (Sterbenz) */
+  int ref = 9;
+  g_assert_cmpint(pw85_overlap(r, q, q, &ref), ==, PW85_SUCCESS);
+  g_assert_cmpint(ref, ==, -1);
+  for (int periodic = 0; periodic <= 1; periodic++) {
+    pw85_index *ix = NULL;
+    g_assert_cmpint(pw85_index_create(periodic ? box : NULL, &ix), ==, PW85_SUCCESS);
+    g_assert_cmpint(pw85_index_insert(ix, 0, c1, q), ==, PW85_SUCCESS);
+    int result = 9;
+    size_t id = 7, n = 0;
+    g_assert_cmpint(pw85_index_overlap_any(ix, c2, q, PW85_INDEX_NO_ID, &result, &id), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpint(result, ==, -1);
+    g_assert_cmpuint(id, ==, 0);
+    g_assert_cmpint(pw85_index_within(ix, c2, q, 1., PW85_INDEX_NO_ID, 0, NULL, NULL, NULL,
+                                      &n), ==, PW85_SUCCESS);
+    g_assert_cmpuint(n, ==, 1);
+    g_assert_cmpint(pw85_index_insert(ix, 1, c2, q), ==, PW85_SUCCESS);
+    g_assert_cmpint(pw85_index_overlapping_pairs(ix, 1, 0, NULL, NULL, NULL, &n), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpuint(n, ==, 1);
+    g_assert_cmpint(pw85_index_pairs_within(ix, 1., 1, 0, NULL, NULL, NULL, &n), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpuint(n, ==, 1);
+    pw85_index_destroy(ix);
+  }
 }
 
 /* ---- overlap_any in batches -------------------------------------------- */
@@ -986,6 +1204,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/index/several-images", test_several_images);
   g_test_add_func("/pw85/index/concurrent-queries", test_concurrent_queries);
   g_test_add_func("/pw85/index/near-contact", test_near_contact);
+  g_test_add_func("/pw85/index/length-scales", test_length_scales);
+  g_test_add_func("/pw85/index/tiny-reproducer", test_tiny_reproducer);
   g_test_add_func("/pw85/index/overlap-any-batch", test_overlap_any_batch);
   for (size_t k = 0; k < G_N_ELEMENTS(configs); k++) {
     char *path = g_strdup_printf("/pw85/index/brute-force/%s", configs[k].name);

@@ -336,7 +336,7 @@ void test_finish() {
     double const start = star + (n % 2 ? 1e-9 : -1e-9) * std::min(star, 1 - star);
     double const slope = p.moderate ? plain_slope<true>(p, start)
                                     : plain_slope<false>(p, start);
-    core::FinishStart const s{start, slope, nullptr};
+    core::FinishStart const s{start, slope, nullptr, nullptr};
     core::Finished out;
     g_assert_true(core::finish(p, s, &out));
     double const expected = std::ldexp(pairs.MU2[n], -p.shift);

@@ -12,8 +12,9 @@
  *
  * Ellipsoids are named by ids chosen by the caller, integers from 0 to
  * PW85_INDEX_MAX_ID; the index keeps a table indexed by id, so its memory
- * grows with the largest id in use (about 100 bytes per id): use small
- * ids, such as the positions of the ellipsoids in the caller's arrays.
+ * grows with the largest id in use (12 bytes per id, besides 128 bytes per
+ * stored ellipsoid): use small ids, such as the positions of the
+ * ellipsoids in the caller's arrays.
  *
  * Domain. Open: any finite centre. Periodic: an orthorhombic box of sides
  * L = (L0, L1, L2); an ellipsoid stands for all its images c + n∘L,
@@ -26,19 +27,27 @@
  *
  * Images. A result names a stored ellipsoid j by its id and an image
  * shift n (three ints; 0 in an open domain); the vector from the query's
- * centre c to that image is, in double arithmetic and in this order,
- * r = (c_j + n∘L) − c, each product n_k·L_k rounded once: the r12 given to
- * pw85_overlap() or pw85_contact_function(), whose results the queries
- * return bit for bit. Periodic images of the query ellipsoid itself are
- * not considered by the queries on a candidate.
+ * centre c to that image is r = (c_j + n∘L) − c, formed exactly (not
+ * rounded to doubles: an error-free sum, a double-double). The queries
+ * decide and report for the configuration as stored: μ² is correctly
+ * rounded for that exact r, and overlaps are decided by its sign of
+ * μ² − 1 (4-ulp band as pw85_overlap()). Where r is a double (as when the
+ * centres and sides lie on a common grid of 2^−k, far enough from the
+ * range's ends), these are the results of pw85_overlap() and
+ * pw85_contact_function() on r, bit for bit. (Where the exact r does not
+ * fit two doubles, centres with bits far below ulp(L), it is carried to
+ * 2⁻¹⁰⁵ relative.) Periodic images of the query ellipsoid itself are not
+ * considered by the queries on a candidate.
  *
  * Certification. The broad phase (a grid over the axis-aligned bounding
  * boxes of the ellipsoids, whose half-widths are √Q_kk exactly, then the
  * projections of the two ellipsoids on the line of their centres) only
  * discards pairs with μ² > t·(1 + 2⁻²⁰), far outside the rounding of any
- * decision; every other pair is decided by the logic of pw85_overlap() or
- * by pw85_contact_function(). The answers are therefore those of a brute
- * force loop calling these functions on every pair and every image.
+ * decision, at every length scale; every other pair is decided by the
+ * logic of pw85_overlap() or by pw85_contact_function() on the exact image
+ * vector. The answers are therefore those of a brute force loop over every
+ * pair and every image, deciding each exact configuration as these
+ * functions decide theirs.
  *
  * Memory and threads. The index allocates from the heap (that is its
  * job), and every allocation that fails is reported as PW85_ENOMEM, never
@@ -223,7 +232,8 @@ PW85_API int pw85_index_get(pw85_index const *index, size_t id,
  *        addition and of hard-particle Monte Carlo.
  *
  * Every image of every stored ellipsoid but `exclude` is decided as
- * pw85_overlap(r, q, q_j) decides it (r as in the file description).
+ * pw85_overlap(r, q, q_j) decides it, r the exact image vector of the file
+ * description ("Images").
  * @param[in] index the index.
  * @param[in] centre the candidate's centre c (in a periodic box,
  *            |c_k| ≤ 2²⁹·L_k).
@@ -296,8 +306,9 @@ PW85_API int pw85_index_overlap_any_batch(
 /**
  * @brief Every stored ellipsoid, and image, within μ² < t of a candidate.
  *
- * μ² and λ of pw85_contact_function(r, q, q_j) (r as in the file
- * description): λ is the weight of the stored ellipsoid's form. The
+ * μ² and λ of pw85_contact_function(r, q, q_j), r the exact image vector
+ * of the file description ("Images"): λ is the weight of the stored
+ * ellipsoid's form. The
  * results are sorted by id, then by image shift (lexicographically).
  * @param[in] index the index.
  * @param[in] centre the candidate's centre (as pw85_index_overlap_any()).
@@ -329,7 +340,7 @@ PW85_API int pw85_index_within(pw85_index const *index,
  *        once, with its image shift.
  *
  * A pair is (i, j, n), i < j, decided by pw85_overlap(r, q_i, q_j) with
- * r = (c_j + n∘L) − c_i; it is reported when the result is −1 or 0 (the
+ * r = (c_j + n∘L) − c_i, exact ("Images"); it is reported when the result is −1 or 0 (the
  * side rule of a periodic box keeps an ellipsoid from meeting its own
  * images). Sorted by i, then j, then n; the same output, bit for bit, for
  * any number of threads.

@@ -7,8 +7,9 @@
 //
 // Large buffers (the all-pairs queries' snapshot and pair lists, tens to
 // hundreds of megabytes at N = 1e6) are aligned to 2 MiB and, on Linux,
-// marked MADV_HUGEPAGE: with transparent huge pages in "madvise" mode (the
-// default of Debian 12) a page fault then maps 2 MiB instead of 4 KiB.
+// marked for huge pages (PW85_ADVISE_HUGEPAGES, compiler.hpp): with
+// transparent huge pages in "madvise" mode (the default of Debian 12) a
+// page fault then maps 2 MiB instead of 4 KiB.
 // Faults on fresh memory cost a quarter of the all-pairs query at N = 1e6
 // without it (measured with perf on a virtual machine). The advice is a
 // hint to the kernel: its failure changes nothing.
@@ -22,9 +23,7 @@
 #include <type_traits>
 #include <utility>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
+#include "compiler.hpp"
 
 namespace pw85::detail {
 
@@ -36,9 +35,7 @@ inline void *buffer_alloc(std::size_t bytes, std::size_t align) noexcept {
     std::size_t const rounded = (bytes + huge - 1) & ~(huge - 1);
     if (rounded < bytes) return nullptr;
     void *p = std::aligned_alloc(huge, rounded);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (p != nullptr) (void)madvise(p, rounded, MADV_HUGEPAGE);
-#endif
+    if (p != nullptr) PW85_ADVISE_HUGEPAGES(p, rounded);
     return p;
   }
   if (align > alignof(std::max_align_t)) return std::aligned_alloc(align, bytes);

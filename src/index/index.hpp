@@ -1,16 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The spatial index of ellipsoids (private; include/pw85/pw85_index.h is
-// its contract, docs/index.rst its account).
-//
-// Broad phase: the axis-aligned bounding box (AABB) of {x : xᵀQ⁻¹x ≤ 1}
-// has half-widths h_k = √Q_kk exactly, and that of the ellipsoid scaled by
-// √t half-widths √t·h_k; two scaled ellipsoids that meet have meeting
-// AABBs, so |r_k| > √t·(h_k + h'_k) for some k proves μ² > t. The test
-// below inflates the bound by 1 + 2⁻²⁰ (broad_margin), far more than its
-// few roundings: a pair it discards has μ² > t·(1 + 2⁻²⁰), outside any
-// rounding band of the narrow phase. Pairs whose AABBs meet are then
-// tested along the line of centres (separated_along_r()), with the same
-// margin.
+// its contract, docs/assemblies.rst its account). Its broad phase, shared
+// by every query: broad.hpp; its margins and limits: margins.hpp.
 //
 // Grid: ellipsoids are sorted into levels by the largest half-width of
 // their AABB, H = max_k h_k; level e holds those with 2^(e−1) < H ≤ 2^e
@@ -33,22 +24,15 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "broad.hpp"
 #include "buffer.hpp"
 #include "cell_map.hpp"
+#include "margins.hpp"
 #include "status.hpp"
 #include "sym3.hpp"
 
-// A hint that *p will be read soon (no effect on results).
-#if defined(__GNUC__)
-#define PW85_INDEX_PREFETCH(p) __builtin_prefetch(p)
-#else
-#define PW85_INDEX_PREFETCH(p) ((void)0)
-#endif
-
 namespace pw85::detail {
 
-// The AABB test's inflation (see above).
-constexpr double broad_margin = 0x1p-20;
 // The cells of a level's grid are 2^hash_cell_octaves times 2^e, and
 // those of the all-pairs snapshot 2^snapshot_cell_octaves times 2^e:
 // larger cells, fewer to visit, more ellipsoids tested in each. Measured
@@ -60,14 +44,6 @@ constexpr double broad_margin = 0x1p-20;
 // snapshot is best at 2^e (1 : 0.5 : 0.2 at packing fractions 0.2 to 0.4).
 constexpr int hash_cell_octaves = 1;
 constexpr int snapshot_cell_octaves = 0;
-// The side rule of a periodic box: 2·h_k·(1 + broad_margin) < L_k.
-// Centres: |c_k| ≤ max_wraps·L_k, so that wraps and shifts fit an int32.
-constexpr double max_wraps = 0x1p29;
-// The most cells (or image shifts) a query visits along an axis.
-constexpr double max_span = 0x1p20;
-// Ids fit 32 bits; 0xFFFFFFFF is no id.
-constexpr std::uint32_t no_id = 0xFFFFFFFFu;
-constexpr std::size_t max_id = 0xFFFFFFFEu;
 
 // A stored ellipsoid, as its cell holds it. What the broad phase reads
 // (id, wrap, centre, half-widths) fills the first cache line; the form,
@@ -120,18 +96,15 @@ struct Level {
   }
 };
 
-// The most cells of a dense level (16 MiB of positions).
-constexpr double dense_cells = 0x1p22;
-
 // A result of a query on a candidate: a stored ellipsoid's image.
 struct Hit {
   std::uint32_t id;
   std::int32_t shift[dim];
-  int result;  // overlap queries
-  double mu2, lambda;  // within queries
+  double mu2, lambda;
 };
 
-// A result of an all-pairs query: (i, j, n), i ≤ j.
+// A result of an all-pairs query: (i, j, n), i ≤ j; result (overlap
+// mode: −1 or 0) or μ² and λ (μ² < t).
 struct PairHit {
   std::uint32_t i, j;
   std::int32_t shift[dim];
@@ -181,28 +154,36 @@ class Index {
   Status check_ellipsoid(double const c[dim], double const q[sym]) const
       noexcept;
   Status check_centre(double const c[dim]) const noexcept;
-  // The entry of an ellipsoid, its level's exponent and cell key.
-  void make_entry(std::size_t id, double const c[dim], double const q[sym],
-                  Entry *e) const noexcept;
-  // Where insert_entry() would put e: the level (maybe levels_.size(),
-  // a new one) and the cell key.
-  int level_of(Entry const &e) const noexcept;
+  // The side rule of a periodic box: 2·h_k·(1 + broad_margin) < L_k.
+  bool fits_box(double const h[dim]) const noexcept;
+  // Fills *e, the entry of an ellipsoid; returns the exponent of its
+  // level (H ≤ 2^exponent).
+  int make_entry(std::size_t id, double const c[dim], double const q[sym],
+                 Entry *e) const noexcept;
+  // The position in levels_ of the level of that exponent, or
+  // levels_.size() when there is none yet.
+  int level_of(int exponent) const noexcept;
   void cell_coords(Level const &lv, Entry const &e, std::uint64_t u[dim]) const
       noexcept;
-  // Every allocation insert_entry(e) needs; false on failure (the index
-  // is unchanged but for spare capacity, or an empty new level).
-  bool reserve_for(Entry const &e) noexcept;
-  void insert_entry(Entry const &e) noexcept;  // after reserve_for()
+  // Every allocation insert_entry(e, exponent) needs; false on failure
+  // (the index is unchanged but for spare capacity, or an empty new
+  // level).
+  bool reserve_for(Entry const &e, int exponent) noexcept;
+  void insert_entry(Entry const &e, int exponent) noexcept;  // after reserve_for()
+  // A new level of that exponent, with its dense array of cells when
+  // small enough; false on failure.
+  bool add_level(int exponent) noexcept;
   void erase(std::size_t id) noexcept;
   void init_level(Level *lv, int exponent) const noexcept;
 
-  // Calls f(entry, shift, r) for every image of every stored ellipsoid
-  // but `exclude` whose AABB, scaled by √t, meets the candidate's (centre
-  // c, half-widths h) inflated by broad_margin (r: the vector to it, as
-  // pw85_index.h defines it; f makes the rest of the tests); stops when f
-  // returns false. Returns Status::out_of_range when the reach spans too many
-  // cells or images (max_span). With nearest_first, the cells nearest to
-  // c are visited before the others (for a query that stops early).
+  // The broad phase of the queries on a candidate (broad.hpp): calls
+  // f(entry, shift, r, slack_sum) for every image of every stored
+  // ellipsoid but `exclude` that passes the box test against the
+  // candidate (centre c, half-widths h, scaled by √t): r is r̂ of the box
+  // test, slack_sum its Σσ_k; f makes the rest of the tests and returns
+  // false to stop. Returns Status::out_of_range when the reach spans too
+  // many images (max_span). With nearest_first, the cells nearest to c
+  // are visited before the others (for a query that stops early).
   template <typename F>
   Status visit(double const c[dim], double const h[dim], double sqrt_t,
                std::uint32_t exclude, bool nearest_first, F &&f) const
@@ -212,6 +193,11 @@ class Index {
                      double const h[dim], double sqrt_t,
                      std::uint32_t exclude, bool nearest_first, bool *go_on,
                      F &f) const noexcept;
+  // A level wider than the reach: every entry, with its shifts in reach.
+  template <typename Test>
+  Status visit_every_entry(Level const &lv, double const c[dim],
+                           Reach const &rc, std::uint32_t exclude,
+                           bool *go_on, Test &test) const noexcept;
 
   bool periodic_;
   double box_[dim] = {};
@@ -221,62 +207,10 @@ class Index {
   Buffer<Level> levels_;
 };
 
-// The AABB half-widths of q, and whether every entry is finite and q
-// positive definite (the rule of pw85.h).
-void half_widths(double const q[sym], double h[dim]) noexcept;
-
-// The second test of the broad phase, for pairs whose AABBs meet: are the
-// projections of the two ellipsoids scaled by √t on the line of centres
-// disjoint? The projection of {x : xᵀQ⁻¹x ≤ 1} on a unit vector u has
-// half-width √(uᵀQu); with u = r/|r|, a plane normal to r separates the
-// scaled ellipsoids when |r|² > √t·(√(rᵀQ1r) + √(rᵀQ2r)), and then μ² > t.
-// Each rᵀQr is computed with an error below 2⁻⁴⁰·(Σ_k h_k·|r_k|)² (h_k =
-// √Q_kk bounds |Q_ij| by h_i·h_j), added to it, and the test carries
-// broad_margin as the AABB test does: true means μ² > t·(1 + 2⁻²⁰).
-inline bool separated_along_r(double const r[dim], double const q1[sym],
-                              double const h1[dim], double const q2[sym],
-                              double const h2[dim], double sqrt_t) noexcept {
-  double y[dim];
-  sym_mul(q1, r, y);
-  double const a1 = dot(r, y);
-  sym_mul(q2, r, y);
-  double const a2 = dot(r, y);
-  double b1 = 0.0, b2 = 0.0;
-  for (int k = 0; k < dim; ++k) {
-    double const x = r[k] < 0 ? -r[k] : r[k];
-    b1 += h1[k] * x;
-    b2 += h2[k] * x;
-  }
-  double const reach = std::sqrt(a1 + 0x1p-40 * b1 * b1) +
-                       std::sqrt(a2 + 0x1p-40 * b2 * b2);
-  return dot(r, r) > sqrt_t * reach * (1.0 + broad_margin);
-}
-
-// A radius ρ ≥ 0 of a ball about the centre inside the ellipsoid
-// {x : xᵀQ⁻¹x ≤ 1}: ρ² < λmin(Q), certified (0 when not found; always 0
-// unless every Q_kk is in [2⁻³⁰⁰, 2³⁰⁰], so that nothing below over- or
-// underflows and two forms with ρ > 0 are within the range that
-// pw85_overlap() accepts). An estimate s₀ of λmin(Q) (index.cpp) is
-// checked: the Cholesky factorisation of Q − s·I, s = s₀ + 2⁻⁴⁶·M
-// (M = max Q_kk), completes only if Q − s·I + E is positive definite for
-// some ‖E‖₂ ≤ 3·γ₄·M + 2⁻⁵³·M < 2⁻⁴⁸·M (Higham, Accuracy and Stability
-// of Numerical Algorithms, 2nd ed., th. 10.3, and the rounding of the
-// diagonal), so that λmin(Q) > s₀. Within 2⁻¹⁷ of √λmin(Q) for forms of
-// moderate condition.
-double inscribed_radius(double const q[sym]) noexcept;
-
 // ⌊a / b⌋ for b > 0.
 inline std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
   std::int64_t const d = a / b;
   return (a % b != 0 && a < 0) ? d - 1 : d;
-}
-
-// The absolute rounding margin of the cell arithmetic along an axis: the
-// roundings of the wrap, of the products by 1/side and of c ± reach are
-// each below 2⁻⁵⁰ of these magnitudes.
-inline double cell_slack(double cmax, double c, double reach,
-                         double box) noexcept {
-  return 0x1p-40 * (cmax + (c < 0 ? -c : c) + reach + box);
 }
 
 }  // namespace pw85::detail

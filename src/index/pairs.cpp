@@ -11,15 +11,16 @@
 // hot fields (centre, half-widths, wrap, id) and the forms are separate
 // arrays.
 //
-// Each pair is found from both ellipsoids and kept from the one with the
-// smaller id (from its own images, i = j, with a positive shift), so that
-// the work of a thread depends on nothing but its ellipsoids.
+// Each pair is found from both ellipsoids and kept from the one earlier in
+// the snapshot (from its own images, i = j, with a positive shift), so
+// that the work of a thread depends on nothing but its ellipsoids; it is
+// then tested in the output's orientation (i < j), so that its result does
+// not depend on which end found it. The broad phase: broad.hpp.
 #include <algorithm>
 #include <cmath>
 
-#include "contact.hpp"
+#include "broad.hpp"
 #include "index.hpp"
-#include "overlap.hpp"
 
 #if defined(PW85_OPENMP)
 #include <omp.h>
@@ -85,6 +86,163 @@ int threads_for(int threads, std::size_t n) noexcept {
 // thread: at most this many threads build it.
 constexpr int max_snapshot_threads = 16;
 
+// The shape of the snapshot's grid of a level: origin, sides (1/inv) and
+// cells per axis, then n0·n1·n2 (g.cells).
+void grid_shape(Level const &lv, double const box[dim], bool periodic,
+                Grid *gp) noexcept {
+  Grid &g = *gp;
+  std::size_t const ncells = lv.cells.size();
+  double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  if (!periodic)
+    for (std::size_t ci = 0; ci < ncells; ++ci)
+      for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei)
+        for (int k = 0; k < dim; ++k) {
+          lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
+          hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
+        }
+  double cells = 1.0;
+  for (int k = 0; k < dim; ++k) {
+    g.hmax[k] = lv.hmax[k];
+    double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
+    if (periodic) {
+      g.origin[k] = 0.0;
+      g.n[k] = static_cast<std::int64_t>(std::min(
+          std::max(std::floor(box[k] / side), 1.0), max_span));
+      g.inv[k] = double(g.n[k]) / box[k];
+    } else {
+      g.origin[k] = lo[k];
+      g.inv[k] = 1.0 / side;
+      g.n[k] = static_cast<std::int64_t>(std::min(
+          std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
+    }
+    cells *= double(g.n[k]);
+  }
+  // Coarsen the widest axis until the grid is no larger than its entries.
+  double const most = 2.0 * double(lv.count) + 64.0;
+  while (cells > most) {
+    int k = 0;
+    for (int a = 1; a < dim; ++a)
+      if (g.n[a] > g.n[k]) k = a;
+    cells /= double(g.n[k]);
+    g.n[k] = (g.n[k] + 1) / 2;
+    cells *= double(g.n[k]);
+    g.inv[k] = periodic ? double(g.n[k]) / box[k] : 0.5 * g.inv[k];
+  }
+  g.cells = static_cast<std::size_t>(cells);
+}
+
+// The level's entries sorted by the grid's cell into the snapshot, at
+// g.first: a counting sort, in the order of the level's cells. On nt
+// threads, thread t takes the level's cells [split[t], split[t + 1])
+// (about count/nt entries) and counts its entries per dense cell in its
+// own histogram; in each dense cell, thread t's entries then follow those
+// of threads t' < t, which is the serial order: the snapshot is the same
+// for any number of threads.
+struct LevelSort {
+  Level const &lv;
+  Grid &g;
+  Buffer<std::size_t> const &base;  // the level's cells: offsets of their entries
+  double const *box;
+  bool periodic;
+  Buffer<std::uint32_t> &where;  // the grid's cell of each entry
+  Buffer<std::uint32_t> &hist;   // nt histograms of g.cells counts
+  Snapshot *s;
+  int nt = 1;
+  std::size_t split[max_snapshot_threads + 1] = {};
+
+  // The shares and the scratch arrays; false when an allocation fails.
+  bool prepare(int threads) noexcept {
+    std::size_t const ncells = lv.cells.size();
+    nt = std::min(threads_for(threads, lv.count), max_snapshot_threads);
+    for (int t = 1; t < nt; ++t)
+      split[t] = static_cast<std::size_t>(
+          std::lower_bound(base.data(), base.data() + ncells + 1,
+                           lv.count / std::size_t(nt) * std::size_t(t)) -
+          base.data());
+    split[nt] = ncells;
+    where.clear();
+    hist.clear();
+    return where.resize_uninitialised(lv.count) &&
+           hist.resize(std::size_t(nt) * g.cells);
+  }
+  void locate(int t) noexcept {
+    std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+    for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+      Cell const &cell = lv.cells[ci];
+      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+        std::uint32_t const w = static_cast<std::uint32_t>(
+            cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
+        where[base[ci] + ei] = w;
+        ++h[w];
+      }
+    }
+  }
+  void totals() noexcept {
+    for (std::size_t c = 0; c < g.cells; ++c) {
+      std::uint32_t k = 0;
+      for (int t = 0; t < nt; ++t) k += hist[std::size_t(t) * g.cells + c];
+      g.start[c + 1] = g.start[c] + k;
+    }
+  }
+  // Each thread's histogram becomes its cursors in the cells [c0, c1).
+  void cursors(std::size_t c0, std::size_t c1) noexcept {
+    for (std::size_t c = c0; c < c1; ++c) {
+      std::uint32_t at = g.start[c];
+      for (int t = 0; t < nt; ++t) {
+        std::uint32_t const k = hist[std::size_t(t) * g.cells + c];
+        hist[std::size_t(t) * g.cells + c] = at;
+        at += k;
+      }
+    }
+  }
+  void scatter(int t) noexcept {
+    std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+    for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
+      Cell const &cell = lv.cells[ci];
+      for (std::size_t ei = 0; ei < cell.size(); ++ei) {
+        Entry const &e = cell[ei];
+        std::size_t const to = g.first + h[where[base[ci] + ei]]++;
+        Hot &x = s->hot[to];
+        for (int k = 0; k < dim; ++k) {
+          x.c[k] = e.c[k];
+          x.h[k] = e.h[k];
+          x.wrap[k] = e.wrap[k];
+        }
+        x.id = e.id;
+        for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
+      }
+    }
+  }
+  void run() noexcept {
+    if (nt <= 1) {
+      locate(0);
+      totals();
+      cursors(0, g.cells);
+      scatter(0);
+      return;
+    }
+#if defined(PW85_OPENMP)
+    long long const ncell = static_cast<long long>(g.cells);
+    // The shares t are handed out by `omp for`, not taken from the
+    // thread's number: OpenMP may start fewer threads than asked
+    // (OMP_THREAD_LIMIT, OMP_DYNAMIC, nesting), and every share must run.
+#pragma omp parallel num_threads(nt)
+    {
+#pragma omp for schedule(static, 1)
+      for (int t = 0; t < nt; ++t) locate(t);
+#pragma omp single
+      totals();
+#pragma omp for schedule(static)
+      for (long long c = 0; c < ncell; c += 4096)
+        cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
+#pragma omp for schedule(static, 1)
+      for (int t = 0; t < nt; ++t) scatter(t);
+    }
+#endif
+  }
+};
+
 // The snapshot of every non-empty level; false when an allocation fails.
 // The cells of the entries (`where`) are computed on `threads` threads;
 // the counting sort itself is serial (in the order of the level's cells,
@@ -113,137 +271,10 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
     base[0] = 0;
     for (std::size_t ci = 0; ci < ncells; ++ci)
       base[ci + 1] = base[ci] + lv.cells[ci].size();
-    double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
-    double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    if (!periodic)
-      for (std::size_t ci = 0; ci < ncells; ++ci)
-        for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei)
-          for (int k = 0; k < dim; ++k) {
-            lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
-            hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
-          }
-    double cells = 1.0;
-    for (int k = 0; k < dim; ++k) {
-      g.hmax[k] = lv.hmax[k];
-      double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
-      if (periodic) {
-        g.origin[k] = 0.0;
-        g.n[k] = static_cast<std::int64_t>(std::min(
-            std::max(std::floor(box[k] / side), 1.0), max_span));
-        g.inv[k] = double(g.n[k]) / box[k];
-      } else {
-        g.origin[k] = lo[k];
-        g.inv[k] = 1.0 / side;
-        g.n[k] = static_cast<std::int64_t>(std::min(
-            std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
-      }
-      cells *= double(g.n[k]);
-    }
-    // Coarsen the widest axis until the grid is no larger than its entries.
-    double const most = 2.0 * double(lv.count) + 64.0;
-    while (cells > most) {
-      int k = 0;
-      for (int a = 1; a < dim; ++a)
-        if (g.n[a] > g.n[k]) k = a;
-      cells /= double(g.n[k]);
-      g.n[k] = (g.n[k] + 1) / 2;
-      cells *= double(g.n[k]);
-      g.inv[k] = periodic ? double(g.n[k]) / box[k] : 0.5 * g.inv[k];
-    }
-    g.cells = static_cast<std::size_t>(cells);
-    if (!g.start.resize(g.cells + 1)) return false;
-    where.clear();
-    if (!where.resize_uninitialised(lv.count)) return false;
-    // A counting sort by cell, in the order of the level's cells. On nt
-    // threads, thread t takes the level's cells [split[t], split[t + 1])
-    // (about count/nt entries) and counts its entries per dense cell in its
-    // own histogram; in each dense cell, thread t's entries then follow
-    // those of threads t' < t, which is the serial order: the snapshot is
-    // the same for any number of threads.
-    int const nt = std::min(threads_for(threads, lv.count), max_snapshot_threads);
-    std::size_t split[max_snapshot_threads + 1];
-    split[0] = 0;
-    for (int t = 1; t < nt; ++t)
-      split[t] = static_cast<std::size_t>(
-          std::lower_bound(base.data(), base.data() + ncells + 1,
-                           lv.count / std::size_t(nt) * std::size_t(t)) -
-          base.data());
-    split[nt] = ncells;
-    hist.clear();
-    if (!hist.resize(std::size_t(nt) * g.cells)) return false;
-    auto locate = [&](int t) {
-      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
-      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
-        Cell const &cell = lv.cells[ci];
-        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-          std::uint32_t const w = static_cast<std::uint32_t>(
-              cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
-          where[base[ci] + ei] = w;
-          ++h[w];
-        }
-      }
-    };
-    // Each thread's histogram becomes its cursors in the cells.
-    auto cursors = [&](std::size_t c0, std::size_t c1) {
-      for (std::size_t c = c0; c < c1; ++c) {
-        std::uint32_t at = g.start[c];
-        for (int t = 0; t < nt; ++t) {
-          std::uint32_t const k = hist[std::size_t(t) * g.cells + c];
-          hist[std::size_t(t) * g.cells + c] = at;
-          at += k;
-        }
-      }
-    };
-    auto scatter = [&](int t) {
-      std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
-      for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
-        Cell const &cell = lv.cells[ci];
-        for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-          Entry const &e = cell[ei];
-          std::size_t const to = g.first + h[where[base[ci] + ei]]++;
-          Hot &x = s->hot[to];
-          for (int k = 0; k < dim; ++k) {
-            x.c[k] = e.c[k];
-            x.h[k] = e.h[k];
-            x.wrap[k] = e.wrap[k];
-          }
-          x.id = e.id;
-          for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
-        }
-      }
-    };
-    auto totals = [&]() {
-      for (std::size_t c = 0; c < g.cells; ++c) {
-        std::uint32_t k = 0;
-        for (int t = 0; t < nt; ++t) k += hist[std::size_t(t) * g.cells + c];
-        g.start[c + 1] = g.start[c] + k;
-      }
-    };
-    if (nt <= 1) {
-      locate(0);
-      totals();
-      cursors(0, g.cells);
-      scatter(0);
-    } else {
-#if defined(PW85_OPENMP)
-      long long const ncell = static_cast<long long>(g.cells);
-      // The shares t are handed out by `omp for`, not taken from the
-      // thread's number: OpenMP may start fewer threads than asked
-      // (OMP_THREAD_LIMIT, OMP_DYNAMIC, nesting), and every share must run.
-#pragma omp parallel num_threads(nt)
-      {
-#pragma omp for schedule(static, 1)
-        for (int t = 0; t < nt; ++t) locate(t);
-#pragma omp single
-        totals();
-#pragma omp for schedule(static)
-        for (long long c = 0; c < ncell; c += 4096)
-          cursors(std::size_t(c), std::min(std::size_t(c) + 4096, g.cells));
-#pragma omp for schedule(static, 1)
-        for (int t = 0; t < nt; ++t) scatter(t);
-      }
-#endif
-    }
+    grid_shape(lv, box, periodic, &g);
+    LevelSort sort{lv, g, base, box, periodic, where, hist, s};
+    if (!g.start.resize(g.cells + 1) || !sort.prepare(threads)) return false;
+    sort.run();
     s->grids.push_back_reserved(static_cast<Grid &&>(g));
   }
   return true;
@@ -313,7 +344,20 @@ class Search {
         s_(s),
         within_(within),
         t_(t),
-        sqrt_t_(std::sqrt(t)) {}
+        sqrt_t_(std::sqrt(t)) {
+    // The slack of test(): one for every pair, that of a query of centre
+    // |c_k| ≤ cmax and reach the largest bound of a pair (twice the largest
+    // h_k of any grid), above the σ_k of each pair (margins.hpp), and a
+    // function of the index alone, as test() must be.
+    slack_sum_ = 0.0;
+    for (int k = 0; k < dim; ++k) {
+      double h = 0.0;
+      for (std::size_t g = 0; g < s.grids.size(); ++g)
+        h = std::max(h, s.grids[g].hmax[k]);
+      slack_[k] = rounding_slack(cmax_, cmax_, box_bound(sqrt_t_, h, h), box_[k]);
+      slack_sum_ += slack_[k];
+    }
+  }
 
   // The pairs found from entry a (an index into the snapshot).
   void from(std::size_t a, Share *share) const noexcept {
@@ -334,9 +378,9 @@ class Search {
   // The pair of entries a and b (positions in the snapshot, a ≤ b) with
   // b's image `shift` seen from a: put in the output's orientation, (i, j,
   // n) with i = min id, j = max id, n = ±shift, then tested from scratch in
-  // that orientation (r = (c_j + n∘L) − c_i, the broad phase's bounds, the
-  // narrow phase), as a brute force over (i, j, n) would. False stops (no
-  // memory).
+  // that orientation (the box test with the pair's own bound, the
+  // line test, the narrow phase on the exact r = (c_j + n∘L) − c_i), as a
+  // brute force over (i, j, n) would. False stops (no memory).
   bool test(std::size_t a, std::size_t b, std::int32_t const shift[dim],
             Share *share) const noexcept {
     std::int32_t n[dim] = {shift[0], shift[1], shift[2]};
@@ -347,38 +391,15 @@ class Search {
     Hot const &x = s_.hot[a];
     Hot const &y = s_.hot[b];
     double r[dim];
-    for (int k = 0; k < dim; ++k) {
-      r[k] = (y.c[k] + n[k] * box_[k]) - x.c[k];
-      if (!(std::fabs(r[k]) <=
-            sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin)))
-        return true;
-    }
+    if (!boxes_meet(x.c, x.h, y.c, y.h, n, box_, sqrt_t_, slack_, r)) return true;
     double const *q1 = s_.forms[a].q;
     double const *q2 = s_.forms[b].q;
-    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_)) return true;
+    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_, slack_sum_)) return true;
     ++share->candidates;
+    ImageVector v;
+    image_vector_exact(x.c, y.c, n, box_, &v);
     PairHit hit{x.id, y.id, {n[0], n[1], n[2]}, 0, 0.0, 0.0};
-    if (within_) {
-      double out[2] = {NAN, NAN};
-      Status const st = contact_function(r, q1, q2, out);
-      if (st == Status::out_of_range && out[0] == HUGE_VAL) return true;
-      if (st != Status::success) {
-        fail(share, st, hit);
-        return true;
-      }
-      if (!(out[0] < t_)) return true;
-      hit.mu2 = out[0];
-      hit.lambda = out[1];
-    } else {
-      int res = 1;
-      Status const st = overlap(r, q1, q2, &res);
-      if (st != Status::success) {
-        fail(share, st, hit);
-        return true;
-      }
-      if (res > 0) return true;
-      hit.result = res;
-    }
+    if (!narrow(v, q1, q2, &hit, share)) return true;
     if (!share->pairs.push_back(hit)) {
       share->status = Status::no_memory;
       return false;
@@ -386,103 +407,98 @@ class Search {
     return true;
   }
 
-  // The AABB test of test() seen from x, as a cheap first filter inlined in
-  // the loops: true only if the test in the output's orientation (y's
-  // image seen from x, or x's seen from y) discards the pair too. Its r
-  // differs from that test's by a few roundings of magnitudes below
-  // 4·(cmax + |c_x| + reach + L) (|n_k·L_k| ≤ 2·cmax + reach + 2·L_k), far
-  // below `slack` (cell_slack() of x and the grid's reach, 2⁻⁴⁰ of them);
-  // the bound √t·(h_x + h_y)·(1 + broad_margin) is the same in both
-  // orientations (the sum commutes).
-  bool far_apart(Hot const &x, Hot const &y, std::int32_t const shift[dim],
-                 double const slack[dim]) const noexcept {
-    for (int k = 0; k < dim; ++k) {
-      double const r = (y.c[k] + shift[k] * box_[k]) - x.c[k];
-      if (std::fabs(r) >
-          sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin) + slack[k])
-        return true;
+  // The narrow phase of test(): true when the pair is reported (hit
+  // filled); a failure is recorded in the share.
+  bool narrow(ImageVector const &v, double const q1[sym], double const q2[sym],
+              PairHit *hit, Share *share) const noexcept {
+    if (within_) {
+      double out[2] = {NAN, NAN};
+      Status const st = image_contact(v, q1, q2, out);
+      if (st == Status::out_of_range && out[0] == HUGE_VAL) return false;
+      if (st != Status::success) {
+        fail(share, st, *hit);
+        return false;
+      }
+      if (!(out[0] < t_)) return false;
+      hit->mu2 = out[0];
+      hit->lambda = out[1];
+      return true;
     }
-    return false;
+    int res = 1;
+    Status const st = image_overlap(v, q1, q2, &res);
+    if (st != Status::success) {
+      fail(share, st, *hit);
+      return false;
+    }
+    hit->result = res;
+    return res <= 0;
   }
 
   // Each pair is found from both entries (the broad phase is symmetric):
   // it is kept from the one earlier in the snapshot, b > a, or, for an
   // entry's own image (b = a), with a positive shift (the pair (a, a, −n)
-  // is the same as (a, a, n)). Runs of entries wholly before a are skipped
-  // without reading them.
+  // is the same as (a, a, n)).
   bool grid(Grid const &g, std::size_t a, Share *share) const noexcept {
     Hot const &x = s_.hot[a];
-    double reach[dim], lo[dim], hi[dim];
-    double cells = 1.0;
-    for (int k = 0; k < dim; ++k) {
-      reach[k] = sqrt_t_ * (x.h[k] + g.hmax[k]) * (1.0 + broad_margin);
-      double const slack = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
-      double const c = x.c[k] - g.origin[k];
-      lo[k] = std::floor((c - reach[k] - slack) * g.inv[k]);
-      hi[k] = std::floor((c + reach[k] + slack) * g.inv[k]);
-      if (!periodic_) {  // clamped as the entries' cells are (monotone)
-        double const last = double(g.n[k] - 1);
-        lo[k] = std::min(std::max(lo[k], 0.0), last);
-        hi[k] = std::min(std::max(hi[k], 0.0), last);
-      }
-      cells *= hi[k] - lo[k] + 1.0;
+    Reach const rc = reach_of(x.c, x.h, g.hmax, sqrt_t_, cmax_, box_);
+    double first[dim], last[dim], lo[dim], hi[dim];
+    for (int k = 0; k < dim; ++k) {  // open: clamped as the entries' cells
+      first[k] = periodic_ ? -HUGE_VAL : 0.0;
+      last[k] = periodic_ ? HUGE_VAL : double(g.n[k] - 1);
     }
-    std::int32_t shift[dim] = {0, 0, 0};
-    double slack[dim];
-    for (int k = 0; k < dim; ++k)
-      slack[k] = cell_slack(cmax_, x.c[k], reach[k], box_[k]);
-    if (cells > 2.0 * double(g.cells) + 8.0) {
-      // Wider than the grid: every entry, with the shifts in reach.
-      // The check of the number of images (max_span, out_of_range) is made
-      // from x against every entry y of the grid with y.id ≥ x.id, with the
-      // grid's reach, as when pairs were kept from the smaller id: whether
-      // the query fails is a function of each entry's own view, not of the
-      // order of the snapshot.
-      if (periodic_)
-        for (std::size_t b = g.first; b < g.first + g.count; ++b) {
-          Hot const &y = s_.hot[b];
-          if (y.id < x.id) continue;
-          for (int k = 0; k < dim; ++k) {
-            double const u = std::floor((x.c[k] - reach[k] - slack[k] - y.c[k]) / box_[k]);
-            double const v = std::floor((x.c[k] + reach[k] + slack[k] - y.c[k]) / box_[k]) + 1.0;
-            if (v - u + 1.0 > max_span) {
-              fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
-              return true;
-            }
-          }
-        }
-      // The images of y kept from x: those within the pair's own reach
-      // √t·(h_x + h_y)·(1 + broad_margin) plus the slack, a superset of
-      // those that the AABB test keeps (at most the grid's reach).
-      for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
-        Hot const &y = s_.hot[b];
-        std::int64_t nlo[dim] = {0, 0, 0}, nhi[dim] = {0, 0, 0};
-        if (periodic_) {
-          for (int k = 0; k < dim; ++k) {
-            double const pr = sqrt_t_ * (x.h[k] + y.h[k]) * (1.0 + broad_margin);
-            double const u = std::floor((x.c[k] - pr - slack[k] - y.c[k]) / box_[k]);
-            double const v = std::floor((x.c[k] + pr + slack[k] - y.c[k]) / box_[k]) + 1.0;
-            if (v - u + 1.0 > max_span) {  // only if y.id < x.id (see above)
-              std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
-              fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
-              return true;
-            }
-            nlo[k] = static_cast<std::int64_t>(u);
-            nhi[k] = static_cast<std::int64_t>(v);
-          }
-        }
-        for (std::int64_t u = nlo[0]; u <= nhi[0]; ++u)
-          for (std::int64_t v = nlo[1]; v <= nhi[1]; ++v)
-            for (std::int64_t w = nlo[2]; w <= nhi[2]; ++w) {
-              shift[0] = std::int32_t(u);
-              shift[1] = std::int32_t(v);
-              shift[2] = std::int32_t(w);
-              if (b == a && !shift_positive(shift)) continue;
-              if (!test(a, b, shift, share)) return false;
-            }
+    double const cells = cell_range(rc, x.c, g.origin, g.inv, first, last, lo, hi);
+    if (cells > 2.0 * double(g.cells) + 8.0) return every_entry(g, a, rc, share);
+    return runs(g, a, rc, lo, hi, share);
+  }
+
+  // A grid narrower than the reach: every entry, with the shifts in reach.
+  // The check of the number of images (max_span, out_of_range) is made
+  // from x against every entry y of the grid with y.id ≥ x.id, with the
+  // grid's reach: whether the query fails is a function of each entry's
+  // own view, not of the order of the snapshot. The images of y kept from
+  // x are those within the pair's own bound plus the slack, a superset of
+  // those that the box test keeps.
+  bool every_entry(Grid const &g, std::size_t a, Reach const &rc,
+                   Share *share) const noexcept {
+    Hot const &x = s_.hot[a];
+    std::int64_t lo[dim], hi[dim];
+    for (std::size_t b = g.first; b < g.first + g.count; ++b) {
+      Hot const &y = s_.hot[b];
+      if (y.id >= x.id &&
+          !shift_range(periodic_, x.c, rc.reach, rc.slack, y.c, box_, lo, hi)) {
+        fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+        return true;
       }
-      return true;
     }
+    for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
+      Hot const &y = s_.hot[b];
+      double bound[dim];
+      for (int k = 0; k < dim; ++k) bound[k] = box_bound(sqrt_t_, x.h[k], y.h[k]);
+      if (!shift_range(periodic_, x.c, bound, rc.slack, y.c, box_, lo, hi)) {
+        // only if y.id < x.id (see above)
+        std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
+        fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
+        return true;
+      }
+      if (!for_each_shift(lo, hi, [&](std::int32_t const *shift) {
+            return (b == a && !shift_positive(shift)) || test(a, b, shift, share);
+          }))
+        return false;
+    }
+    return true;
+  }
+
+  // The cells [lo, hi] of the grid: along axis 2, one contiguous run of
+  // entries per copy of the box. Runs of entries wholly before a are
+  // skipped without reading them. The box test from x with the grid's
+  // slack is a first filter, inlined: it discards only images that the
+  // test in the output's orientation discards too (both slacks bound the
+  // rounding of r̂, formed from either end: margins.hpp).
+  bool runs(Grid const &g, std::size_t a, Reach const &rc, double const lo[dim],
+            double const hi[dim], Share *share) const noexcept {
+    Hot const &x = s_.hot[a];
+    std::int32_t shift[dim];
+    double r[dim];
     std::int64_t const lo2 = std::int64_t(lo[2]), hi2 = std::int64_t(hi[2]);
     std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[2]) : 0;
     std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[2]) : 0;
@@ -493,20 +509,19 @@ class Search {
         std::int64_t const p1 = periodic_ ? floor_div(m1, g.n[1]) : 0;
         std::int64_t const u1 = m1 - p1 * g.n[1];
         std::size_t const row = static_cast<std::size_t>((u0 * g.n[1] + u1) * g.n[2]);
-        // Along axis 2, one contiguous run of entries per copy of the box.
         for (std::int64_t p2 = plo; p2 <= phi; ++p2) {
           std::int64_t const z0 = std::max(lo2, p2 * g.n[2]) - p2 * g.n[2];
           std::int64_t const z1 = std::min(hi2, p2 * g.n[2] + g.n[2] - 1) - p2 * g.n[2];
           std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
           if (b1 <= a) continue;
-          std::size_t const b0 =
-              std::max(g.first + g.start[row + std::size_t(z0)], a);
+          std::size_t const b0 = std::max(g.first + g.start[row + std::size_t(z0)], a);
           for (std::size_t b = b0; b < b1; ++b) {
             Hot const &y = s_.hot[b];
             shift[0] = std::int32_t(p0 - y.wrap[0]);
             shift[1] = std::int32_t(p1 - y.wrap[1]);
             shift[2] = std::int32_t(p2 - y.wrap[2]);
-            if (far_apart(x, y, shift, slack)) continue;
+            if (!boxes_meet(x.c, x.h, y.c, y.h, shift, box_, sqrt_t_, rc.slack, r))
+              continue;
             if (b == a && !shift_positive(shift)) continue;
             if (!test(a, b, shift, share)) return false;
           }
@@ -522,7 +537,75 @@ class Search {
   Snapshot const &s_;
   bool within_;
   double t_, sqrt_t_;
+  double slack_[dim], slack_sum_;  // test()'s
 };
+
+// The pairs of every share into out, sorted by (i, j, shift); ids: the
+// id table's size, total: the number of pairs. False when an allocation
+// fails.
+bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
+           std::size_t total, Buffer<PairHit> *out) noexcept {
+  // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
+  // The keys (i, j, n) are distinct, so the order within an i before its
+  // sort does not matter: the shares are scattered concurrently (slots
+  // taken by atomic increments) and the output is still the same for any
+  // number of threads.
+  Buffer<std::size_t> first;
+  if (!first.resize(ids + 1) || !out->resize_uninitialised(total)) return false;
+  int const nt = threads_for(threads, total);
+  auto count_share = [&](std::size_t k, bool atomic) {
+    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
+      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        std::size_t *c = &first[p[q].i + 1];
+        if (atomic)
+          __atomic_fetch_add(c, 1, __ATOMIC_RELAXED);
+        else
+          ++*c;
+      }
+    }
+  };
+  auto scatter_share = [&](std::size_t k, bool atomic) {
+    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
+      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      for (std::size_t q = 0; q < p.size(); ++q) {
+        std::size_t *c = &first[p[q].i];
+        std::size_t const to =
+            atomic ? __atomic_fetch_add(c, 1, __ATOMIC_RELAXED) : (*c)++;
+        (*out)[to] = p[q];
+      }
+    }
+  };
+  auto sort_from = [&](std::size_t i) {
+    // first[i] is now the end of i's pairs, first[i − 1] their start.
+    std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
+    if (end - begin > 1)
+      std::sort(out->data() + begin, out->data() + end, pair_less);
+  };
+  if (nt <= 1) {
+    for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
+    for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
+    for (std::size_t k = 0; k < shares.size(); ++k) scatter_share(k, false);
+    for (std::size_t i = 0; i < ids; ++i) sort_from(i);
+  } else {
+#if defined(PW85_OPENMP)
+    long long const nshares = static_cast<long long>(shares.size());
+    long long const nids = static_cast<long long>(ids);
+#pragma omp parallel num_threads(nt)
+    {
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nshares; ++k) count_share(std::size_t(k), true);
+#pragma omp single
+      for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
+#pragma omp for schedule(dynamic, 1)
+      for (long long k = 0; k < nshares; ++k) scatter_share(std::size_t(k), true);
+#pragma omp for schedule(dynamic, 4096)
+      for (long long i = 0; i < nids; ++i) sort_from(std::size_t(i));
+    }
+#endif
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -582,67 +665,7 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
   snap.hot.reset();  // spare the memory before the merge's
   snap.forms.reset();
 
-  // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
-  // The keys (i, j, n) are distinct, so the order within an i before its
-  // sort does not matter: the shares are scattered concurrently (slots
-  // taken by atomic increments) and the output is still the same for any
-  // number of threads.
-  Buffer<std::size_t> first;
-  if (!first.resize(id_bound() + 1) || !out->resize_uninitialised(total))
-    return Status::no_memory;
-  int const nt = threads_for(threads, total);
-  std::size_t const ids = id_bound();
-  auto count_share = [&](std::size_t k, bool atomic) {
-    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit> const &p = shares[k].pairs.block(b);
-      for (std::size_t q = 0; q < p.size(); ++q) {
-        std::size_t *c = &first[p[q].i + 1];
-        if (atomic)
-          __atomic_fetch_add(c, 1, __ATOMIC_RELAXED);
-        else
-          ++*c;
-      }
-    }
-  };
-  auto scatter_share = [&](std::size_t k, bool atomic) {
-    for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit> const &p = shares[k].pairs.block(b);
-      for (std::size_t q = 0; q < p.size(); ++q) {
-        std::size_t *c = &first[p[q].i];
-        std::size_t const to =
-            atomic ? __atomic_fetch_add(c, 1, __ATOMIC_RELAXED) : (*c)++;
-        (*out)[to] = p[q];
-      }
-    }
-  };
-  auto sort_from = [&](std::size_t i) {
-    // first[i] is now the end of i's pairs, first[i − 1] their start.
-    std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
-    if (end - begin > 1)
-      std::sort(out->data() + begin, out->data() + end, pair_less);
-  };
-  if (nt <= 1) {
-    for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
-    for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
-    for (std::size_t k = 0; k < shares.size(); ++k) scatter_share(k, false);
-    for (std::size_t i = 0; i < ids; ++i) sort_from(i);
-  } else {
-#if defined(PW85_OPENMP)
-    long long const nshares = static_cast<long long>(shares.size());
-    long long const nids = static_cast<long long>(ids);
-#pragma omp parallel num_threads(nt)
-    {
-#pragma omp for schedule(dynamic, 1)
-      for (long long k = 0; k < nshares; ++k) count_share(std::size_t(k), true);
-#pragma omp single
-      for (std::size_t i = 0; i < ids; ++i) first[i + 1] += first[i];
-#pragma omp for schedule(dynamic, 1)
-      for (long long k = 0; k < nshares; ++k) scatter_share(std::size_t(k), true);
-#pragma omp for schedule(dynamic, 4096)
-      for (long long i = 0; i < nids; ++i) sort_from(std::size_t(i));
-    }
-#endif
-  }
+  if (!merge(shares, threads, id_bound(), total, out)) return Status::no_memory;
   if (candidates != nullptr) *candidates = found;
   return Status::success;
 }

@@ -1,0 +1,270 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The broad phase of the spatial index, written once for the queries on a
+// candidate (index.cpp) and the all-pairs queries (pairs.cpp), which are
+// its visitors (private; docs/assemblies.rst, "Why the answers are
+// certified"; every margin: margins.hpp):
+// - the reach of a query and the cells it covers (reach_of(),
+//   cell_range());
+// - the image shifts within reach of a stored centre (for_each_shift());
+// - the box test, on the image vector r̂ formed in double (boxes_meet());
+// - the line-of-centres test (separated_along_r());
+// - the narrow phase, on the image vector formed exactly
+//   (image_vector_exact(), image_overlap(), image_contact()).
+//
+// Box test: the axis-aligned bounding box (AABB) of {x : xᵀQ⁻¹x ≤ 1} has
+// half-widths h_k = √Q_kk exactly, and that of the ellipsoid scaled by √t
+// half-widths √t·h_k; two scaled ellipsoids that meet have meeting AABBs,
+// so |r_k| > √t·(h_k + h'_k) for some k proves μ² > t.
+#ifndef PW85_SRC_INDEX_BROAD_HPP
+#define PW85_SRC_INDEX_BROAD_HPP
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "compiler.hpp"
+#include "contact.hpp"
+#include "dd.hpp"
+#include "margins.hpp"
+#include "overlap.hpp"
+#include "scaling.hpp"
+#include "status.hpp"
+#include "sym3.hpp"
+
+namespace pw85::detail {
+
+// The AABB half-widths √Q_kk of a positive definite q.
+inline void half_widths(double const q[sym], double h[dim]) noexcept {
+  for (int k = 0; k < dim; ++k) h[k] = std::sqrt(q[diag_of[k]]);
+}
+
+// The absolute rounding allowance σ_k of a query along an axis
+// (margins.hpp, slack_factor).
+inline double rounding_slack(double cmax, double c, double reach,
+                             double box) noexcept {
+  return slack_factor * (cmax + std::fabs(c) + reach + box);
+}
+
+// The bound of the box test along an axis, √t·(h + h')·(1 + broad_margin).
+inline double box_bound(double sqrt_t, double h1, double h2) noexcept {
+  return sqrt_t * (h1 + h2) * (1.0 + broad_margin);
+}
+
+// A query's extent in a level of the grid (or a grid of the snapshot),
+// per axis: the largest bound of its box tests there (its h and the
+// level's largest), and the slack σ_k; slack_sum = Σσ_k.
+struct Reach {
+  double reach[dim];
+  double slack[dim];
+  double slack_sum;
+};
+
+// box: the sides, or zeros in an open domain.
+inline Reach reach_of(double const c[dim], double const h[dim],
+                      double const hmax[dim], double sqrt_t, double cmax,
+                      double const box[dim]) noexcept {
+  Reach rc;
+  rc.slack_sum = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    rc.reach[k] = box_bound(sqrt_t, h[k], hmax[k]);
+    rc.slack[k] = rounding_slack(cmax, c[k], rc.reach[k], box[k]);
+    rc.slack_sum += rc.slack[k];
+  }
+  return rc;
+}
+
+// The cells along each axis that hold the centres within reach of c:
+// [lo_k, hi_k], ⌊(c_k − origin_k ∓ (reach_k + σ_k))·inv_k⌋, clamped to
+// [first_k, last_k] (an open domain's clamp; ±∞ for none). The cell of a
+// centre x is ⌊(x − origin)·inv⌋ clamped alike (monotone in x). Returns
+// the number of cells of the block.
+inline double cell_range(Reach const &rc, double const c[dim],
+                         double const origin[dim], double const inv[dim],
+                         double const first[dim], double const last[dim],
+                         double lo[dim], double hi[dim]) noexcept {
+  double cells = 1.0;
+  for (int k = 0; k < dim; ++k) {
+    double const x = c[k] - origin[k], w = rc.reach[k] + rc.slack[k];
+    lo[k] = std::min(std::max(std::floor((x - w) * inv[k]), first[k]), last[k]);
+    hi[k] = std::min(std::max(std::floor((x + w) * inv[k]), first[k]), last[k]);
+    cells *= hi[k] - lo[k] + 1.0;
+  }
+  return cells;
+}
+
+// The image shifts n of a stored centre cj whose images cj + n∘L may be
+// within reach + slack of c along each axis: [lo_k, hi_k] (a superset: the
+// box test decides). Open domain: n = 0. Returns false when an axis spans
+// more than max_span shifts.
+inline bool shift_range(bool periodic, double const c[dim],
+                        double const reach[dim], double const slack[dim],
+                        double const cj[dim], double const box[dim],
+                        std::int64_t lo[dim], std::int64_t hi[dim]) noexcept {
+  for (int k = 0; k < dim; ++k) {
+    lo[k] = hi[k] = 0;
+    if (!periodic) continue;
+    double const w = reach[k] + slack[k];
+    double const a = std::floor((c[k] - w - cj[k]) / box[k]);
+    double const b = std::floor((c[k] + w - cj[k]) / box[k]) + 1.0;
+    if (b - a + 1.0 > max_span) return false;
+    lo[k] = static_cast<std::int64_t>(a);
+    hi[k] = static_cast<std::int64_t>(b);
+  }
+  return true;
+}
+
+// Calls f(shift) for every shift of [lo, hi] (lexicographic order) until
+// f returns false; returns false then.
+template <typename F>
+bool for_each_shift(std::int64_t const lo[dim], std::int64_t const hi[dim],
+                    F &&f) noexcept {
+  std::int32_t shift[dim];
+  for (std::int64_t a = lo[0]; a <= hi[0]; ++a)
+    for (std::int64_t b = lo[1]; b <= hi[1]; ++b)
+      for (std::int64_t d = lo[2]; d <= hi[2]; ++d) {
+        shift[0] = std::int32_t(a);
+        shift[1] = std::int32_t(b);
+        shift[2] = std::int32_t(d);
+        if (!f(static_cast<std::int32_t const *>(shift))) return false;
+      }
+  return true;
+}
+
+// The box test on r̂ = (c_j + n∘L) − c formed in double (written to r):
+// false proves μ² > t·(1 + broad_margin) (margins.hpp: the slack covers
+// the rounding of r̂). box: the sides, or zeros in an open domain.
+PW85_INLINE bool boxes_meet(double const c[dim], double const h[dim],
+                       double const cj[dim], double const hj[dim],
+                       std::int32_t const shift[dim], double const box[dim],
+                       double sqrt_t, double const slack[dim],
+                       double r[dim]) noexcept {
+  for (int k = 0; k < dim; ++k) {
+    r[k] = (cj[k] + shift[k] * box[k]) - c[k];
+    if (!(std::fabs(r[k]) <= box_bound(sqrt_t, h[k], hj[k]) + slack[k]))
+      return false;
+  }
+  return true;
+}
+
+namespace line {
+
+// The bound √(rᵀQr) + √(rᵀQ'r) of the line test, each term raised by its
+// rounding (form_rounding) and by form_floor (underflow).
+PW85_INLINE double projections(double const r[dim], double const q1[sym],
+                          double const h1[dim], double const q2[sym],
+                          double const h2[dim]) noexcept {
+  double y[dim];
+  sym_mul(q1, r, y);
+  double const a1 = dot(r, y);
+  sym_mul(q2, r, y);
+  double const a2 = dot(r, y);
+  double b1 = 0.0, b2 = 0.0;
+  for (int k = 0; k < dim; ++k) {
+    double const x = std::fabs(r[k]);
+    b1 += h1[k] * x;
+    b2 += h2[k] * x;
+  }
+  return std::sqrt(a1 + form_rounding * b1 * b1 + form_floor) +
+         std::sqrt(a2 + form_rounding * b2 * b2 + form_floor);
+}
+
+// The test proper on r (with |r|² = d2) and the slack Σσ_k.
+PW85_INLINE bool separated(double const r[dim], double d2, double const q1[sym],
+                      double const h1[dim], double const q2[sym],
+                      double const h2[dim], double sqrt_t,
+                      double slack_sum) noexcept {
+  if (!(slack_sum * slack_sum <= slack_fold * slack_fold * d2)) return false;
+  return d2 > sqrt_t * projections(r, q1, h1, q2, h2) * (1.0 + broad_margin);
+}
+
+// The test on r and the forms scaled by powers of two, r to order one
+// (a length scale far from one: margins.hpp, line_low).
+bool separated_scaled(double const r[dim], double const q1[sym],
+                      double const h1[dim], double const q2[sym],
+                      double const h2[dim], double sqrt_t,
+                      double slack_sum) noexcept;
+
+}  // namespace line
+
+// The line-of-centres test, for images whose AABBs meet: are the
+// projections of the two ellipsoids scaled by √t on the line of centres
+// disjoint? The projection of {x : xᵀQ⁻¹x ≤ 1} on a unit vector u has
+// half-width √(uᵀQu); with u = r/|r|, a plane normal to r separates the
+// scaled ellipsoids when |r|² > √t·(√(rᵀQ1r) + √(rᵀQ2r)), and then μ² > t.
+// Any u is valid: u = r̂/|r̂| from the r̂ of the box test, whose rounding
+// the slack Σσ_k bounds (margins.hpp, slack_fold). True means
+// μ² > t·(1 + broad_margin) at every length scale: outside
+// [line_low, line_high], r̂ and the forms are scaled first.
+PW85_INLINE bool separated_along_r(double const r[dim], double const q1[sym],
+                              double const h1[dim], double const q2[sym],
+                              double const h2[dim], double sqrt_t,
+                              double slack_sum) noexcept {
+  double const d2 = dot(r, r);
+  if (PW85_UNLIKELY(!(d2 >= line_low && d2 <= line_high)))
+    return line::separated_scaled(r, q1, h1, q2, h2, sqrt_t, slack_sum);
+  return line::separated(r, d2, q1, h1, q2, h2, sqrt_t, slack_sum);
+}
+
+// The image vector r = (c_j + n∘L) − c, formed exactly (an error-free
+// transformation: n_k·L_k by a fused multiply-add, the sums by two_sum()):
+// r + lo, a double-double, |lo_k| ≤ ulp(r_k)/2, equal to the exact vector
+// within 2⁻¹⁰⁵·|r_k| + 2⁻²⁰⁰·(|c_j,k| + |n_k·L_k| + |c_k|) along each axis
+// (exactly, in the common case where c_j + n_k·L_k is a double). exact:
+// lo = 0, r̂ of the box test was exact. box: zeros in an open domain.
+struct ImageVector {
+  double r[dim];
+  double lo[dim];
+  bool exact;
+};
+
+// The rare case of image_vector_exact(): r = b + b_lo + a_lo + p_lo
+// exactly, the last two not zero.
+void image_vector_tail(double b, double b_lo, double a_lo, double p_lo,
+                       double *r, double *lo) noexcept;
+
+PW85_INLINE void image_vector_exact(double const c[dim], double const cj[dim],
+                               std::int32_t const shift[dim],
+                               double const box[dim],
+                               ImageVector *v) noexcept {
+  bool exact = true;
+  for (int k = 0; k < dim; ++k) {
+    if (shift[k] == 0) {  // the most common case: c_j − c
+      dd const b = two_sum(cj[k], -c[k]);
+      v->r[k] = b.hi;
+      v->lo[k] = b.lo;
+    } else {
+      double const n = shift[k];
+      double const p = n * box[k];
+      double const p_lo = std::fma(n, box[k], -p);  // n·L = p + p_lo
+      dd const a = two_sum(cj[k], p);               // c_j + p
+      dd const b = two_sum(a.hi, -c[k]);            // a.hi − c
+      if (PW85_UNLIKELY(a.lo != 0.0 || p_lo != 0.0)) {
+        image_vector_tail(b.hi, b.lo, a.lo, p_lo, &v->r[k], &v->lo[k]);
+      } else {
+        v->r[k] = b.hi;
+        v->lo[k] = b.lo;
+      }
+    }
+    exact = exact && v->lo[k] == 0.0;
+  }
+  v->exact = exact;
+}
+
+// The narrow phase on an exact image vector: pw85_overlap()'s decision and
+// pw85_contact_function()'s μ² and λ for the exact r (overlap_dd(),
+// contact_function_dd()), through the double paths when r is a double.
+inline Status image_overlap(ImageVector const &v, double const q1[sym],
+                            double const q2[sym], int *result) noexcept {
+  return v.exact ? overlap(v.r, q1, q2, result)
+                 : overlap_dd(v.r, v.lo, q1, q2, result);
+}
+
+inline Status image_contact(ImageVector const &v, double const q1[sym],
+                            double const q2[sym], double out[2]) noexcept {
+  return v.exact ? contact_function(v.r, q1, q2, out)
+                 : contact_function_dd(v.r, v.lo, q1, q2, out);
+}
+
+}  // namespace pw85::detail
+
+#endif  // PW85_SRC_INDEX_BROAD_HPP
