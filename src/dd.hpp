@@ -74,6 +74,13 @@ PW85_INLINE dd dd_div(dd a, dd b) noexcept {
   return dd_add(two_sum(q1, q2), q3);
 }
 
+// √a for a > 0 as a double-double: one Newton correction of √a.hi.
+PW85_INLINE dd dd_sqrt(dd a) noexcept {
+  double const x = std::sqrt(a.hi);
+  dd const rem = dd_sub(a, two_prod(x, x));
+  return two_sum(x, (rem.hi + rem.lo) / (2.0 * x));
+}
+
 // Compensated accumulation (Ogita, Rump and Oishi, SIAM J. Sci. Comput. 26,
 // 2005, algorithm Dot2): the result is as accurate as if computed in twice
 // the working precision, then rounded.

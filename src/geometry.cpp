@@ -15,116 +15,13 @@
 #include "contact.hpp"
 #include "dd.hpp"
 #include "evaluate.hpp"
+#include "polish.hpp"
 #include "scaling.hpp"
 #include "tolerances.hpp"
 
 namespace pw85::detail {
 
 namespace {
-
-// s = Q(λ)⁻¹·r as s + s_lo (tolerances.hpp, geometry_refine_cond); false
-// when no factorisation succeeds, or s is not finite or is zero (both only
-// far beyond the domain).
-// A usable solution: finite, with a finite low part, and not zero.
-PW85_INLINE bool usable(double const s[dim], double const s_lo[dim]) noexcept {
-  return all_finite<dim>(s) && all_finite<dim>(s_lo) &&
-         (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0);
-}
-
-PW85_INLINE bool solve_accurately(Problem const &p, double lambda, double s[dim],
-                      double s_lo[dim]) noexcept {
-  double hi[sym], lo[sym];
-  combine_dd(lambda, p.q1, p.q2, hi, lo);
-  Ldl fac;
-  bool const plain = ldl_decomp(hi, &fac);
-  if (plain && ldl_cond_bound(hi, fac) <= geometry_refine_cond) {
-    double rho[dim], ds[dim];
-    ldl_solve(fac, p.r, s);
-    compensated_residual(hi, lo, p.r, s, rho);
-    ldl_solve(fac, rho, ds);
-    PW85_UNROLL
-    for (int i = 0; i < dim; ++i) {
-      dd const t = two_sum(s[i], ds[i]);
-      s[i] = t.hi;
-      s_lo[i] = t.lo;
-    }
-    if (usable(s, s_lo)) return true;
-  }
-  if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo) && usable(s, s_lo))
-    return true;
-  // Beyond the domain (entries spanning most of the range of a double),
-  // where even the double-double factors fail: the plain solve, if any.
-  if (!plain) return false;
-  ldl_solve(fac, p.r, s);
-  PW85_UNROLL
-  for (int i = 0; i < dim; ++i) s_lo[i] = 0.0;
-  return usable(s, s_lo);
-}
-
-// sᵀ·A·s for s = s + s_lo, as a double-double: the products of s exact
-// (Dot2), the tail to first order, 2·(A·s)·s_lo.
-PW85_INLINE dd quad_form_dd2(double const a[sym], double const s[dim],
-                             double const s_lo[dim]) noexcept {
-  Dot2 acc{0.0, 0.0};
-  PW85_UNROLL
-  for (int k = 0; k < sym; ++k) {
-    double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;  // exact
-    dd const p = two_prod(factor * a[k], s[row_of[k]]);
-    acc.add_product(p.hi, s[col_of[k]]);
-    acc.err += p.lo * s[col_of[k]];
-  }
-  double t[dim];
-  sym_mul(a, s, t);
-  acc.err += 2.0 * dot(t, s_lo);
-  return two_sum(acc.sum, acc.err);
-}
-
-// √a for a > 0 as a double-double: one Newton correction of √a.hi.
-PW85_INLINE dd dd_sqrt(dd a) noexcept {
-  double const x = std::sqrt(a.hi);
-  dd const rem = dd_sub(a, two_prod(x, x));
-  return two_sum(x, (rem.hi + rem.lo) / (2.0 * x));
-}
-
-// ω(λ) = λ·√(P2/P1) − (1 − λ) (eq. (5.6) of docs/optimisation.rst) in
-// double-double from s = Q(λ)⁻¹·r as s + s_lo, rounded once: at a flat
-// maximum (small ω′), the error of ω in double alone, a few ε, would move
-// its root by a few ε/ω′ (2e-12 relative where f″·λ²/μ² = −1.5e-5).
-// s is scaled to order one first (Pᵢ do not underflow; ρ is unchanged).
-PW85_INLINE double omega_dd(double lambda, Problem const &p, double s[dim],
-                            double s_lo[dim]) noexcept {
-  scale_for_p(s, s_lo);
-  dd const p1 = quad_form_dd2(p.q1, s, s_lo);
-  dd const p2 = quad_form_dd2(p.q2, s, s_lo);
-  dd const rho = dd_sqrt(dd_div(p2, p1));
-  return dd_round(dd_sub(dd_mul(rho, lambda), two_sum(1.0, -lambda)));
-}
-
-// Newton steps on ω in double-double (omega_dd(); its root is λ*, the
-// maximiser of f: docs/theory.rst), with the plain ω′ (eq. (5.7)) as
-// slope: the slope only sets the rate, the compensated ω sets the root.
-// Returns the polished λ (the last one reached where an evaluation fails,
-// or where a step would be larger than polish_max_step).
-template <bool Fast>
-PW85_INLINE double polish(Problem const &p, double lambda0) noexcept {
-  double lambda = lambda0;
-  for (int k = 0; k < polish_iter; ++k) {
-    PlainPoint pt;
-    NewtonStep plain_step;
-    double s[dim], s_lo[dim];
-    if (!evaluate_plain<Fast>(lambda, p, &pt) ||
-        !newton_step(pt, &plain_step) ||
-        !solve_accurately(p, lambda, s, s_lo))
-      break;
-    double const omega = omega_dd(lambda, p, s, s_lo);
-    double const step = omega / plain_step.domega;
-    double const size = std::min(lambda, 1.0 - lambda);
-    if (!(std::fabs(step) <= polish_max_step * size)) break;
-    lambda -= step;
-    if (std::fabs(step) <= polish_accept * size) break;
-  }
-  return lambda;
-}
 
 // Q·s for s = s + s_lo, as t + t_lo (t = the rounded value).
 PW85_INLINE void sym_mul_dd(double const q[sym], double const s[dim],
