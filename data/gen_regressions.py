@@ -62,6 +62,17 @@ PAIRS = {
         ["0x1.65904c278cb5cp+529", "-0x1.ec8c1164f28p+527",
          "0x1.406bb29c404c6p+529", "0x1.408c02a5877cep+530",
          "0x1.deea29145686p+527", "0x1.778d8efa9f35ep+529"]),
+    # fuzz-contact-structured: λ of the contact function 1.8e-8 off at a
+    # maximum flatter still (f''·λ²/μ² = −1.5e-9), cond(Q1) = 9e15.
+    "flat-lambda": (
+        ["0x1.2b47af9ba1547p-60", "-0x1.e03f029f4b623p-62",
+         "-0x1.5f6363ebeba2fp-61"],
+        ["0x1.c38e0eb71dcacp-121", "0x1.3bd664e651b5ep-122",
+         "0x1.844e0e11e225ap-124", "0x1.8dafe1f2b794bp-123",
+         "-0x1.fb3e0c7e217a8p-123", "0x1.d905f8cc344ffp-121"],
+        ["0x1.091d7ae4291d7p-120", "0x1.6e4ae764cc3cp-128",
+         "-0x1.1dddd57c6945p-126", "0x1.0297cae3dbf26p-120",
+         "0x1.10fe37859fe2p-126", "0x1.0c9aba37faf05p-120"]),
 }
 
 

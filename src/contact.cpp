@@ -12,6 +12,7 @@
 #include "evaluate.hpp"
 #include "finish.hpp"
 #include "newton.hpp"
+#include "polish.hpp"
 #include "tolerances.hpp"
 #include "warm_start.hpp"
 
@@ -68,7 +69,15 @@ Status solve(Problem const &p, double out[2], double const *r_lo) noexcept {
     // estimate in plain arithmetic.
     finished.lambda = brent.estimate;
     finished.mu2 = -neg_f_or_zero<Fast>(brent.estimate, p);
+    finished.slope = NAN;
   }
+  // 7b. A flat maximum (tolerances.hpp, flat_slope), or a finish that
+  // ended without a Newton step: λ polished with ω in double-double (μ²
+  // stands: f is flat there).
+  double const near = std::min(finished.lambda, 1.0 - finished.lambda);
+  if (PW85_UNLIKELY(!(near * finished.slope >= flat_slope)) &&
+      r_lo == nullptr)
+    finished.lambda = polish<Fast>(p, finished.lambda);
   out[0] = finished.mu2;
   out[1] = finished.lambda;
   return Status::success;

@@ -86,6 +86,7 @@ bool finish(Problem const &p, FinishStart const &start,
       double const gain = model_gain(lambda, a, omega, step);
       if (gain >= 0.0 && gain <= max_model_gain * a.f) {
         out->lambda = next;
+        out->slope = domega;
         // The gain is added to f before f is rounded: it can reach an ulp.
         out->mu2 = std::max(a.f + (a.f_lo + gain), best.f);
         return true;
@@ -127,6 +128,7 @@ bool finish(Problem const &p, FinishStart const &start,
   if (!best.any) return false;
   out->lambda = best.lambda;
   out->mu2 = best.f;
+  out->slope = NAN;
   return true;
 }
 

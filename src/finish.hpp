@@ -24,7 +24,8 @@ struct FinishStart {
 
 struct Finished {
   double lambda;
-  double mu2;  // μ² of the problem
+  double mu2;    // μ² of the problem
+  double slope;  // ω′ of the accepted Newton step (NaN if none was)
 };
 
 // Compensated Newton steps on ω (slope: start.domega first, then secants),

@@ -148,6 +148,18 @@ static void test_lambda_near_zero(void) {
   g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
 }
 
+/* λ of the contact function at a maximum flatter still (f″·λ²/μ² =
+ * −1.5e-9, cond(Q1) = 9e15; fuzz-contact-structured): within the hard
+ * set's 6e-10·min(λ*, 1 − λ*) (it was 1.8e-8 off), μ² correctly rounded. */
+static void test_flat_lambda(void) {
+  Pair const *p = pair("flat-lambda");
+  double out[2];
+  g_assert_cmpint(pw85_contact_function(p->in, p->in + 3, p->in + 9, out), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
@@ -157,5 +169,6 @@ int main(int argc, char **argv) {
                   test_needle_far_larger);
   g_test_add_func("/pw85/regressions/lambda-near-zero", test_lambda_near_zero);
   g_test_add_func("/pw85/regressions/flat-maximum", test_flat_maximum);
+  g_test_add_func("/pw85/regressions/flat-lambda", test_flat_lambda);
   return g_test_run();
 }
