@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Writes tests/definite-forms.txt: symmetric 3×3 forms (six doubles, upper
+"""Writes data/pw85_definite_forms.txt: symmetric 3×3 forms (six doubles, upper
 triangle row by row, as pw85.h stores them) with the exact verdict of
 positive definiteness, decided here in rational arithmetic (Sylvester's
 criterion on the exact values of the doubles, fractions.Fraction), never
@@ -22,7 +22,7 @@ import sys
 from fractions import Fraction as F
 from pathlib import Path
 
-OUT = Path(__file__).resolve().parent.parent / "tests" / "definite-forms.txt"
+OUT = Path(__file__).resolve().parent / "pw85_definite_forms.txt"
 
 
 def positive_definite(q):

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: BSD-3-Clause
-"""Writes tests/regression-pairs.txt: the pairs that the fuzzing of issue 25
+"""Writes data/pw85_regression_pairs.txt: the pairs that the fuzzing of issue 25
 found wrong, with references at 700 digits (mpmath, gen_geometry.geometry():
 safeguarded Newton on f' at the working precision), each rounded once to
 a double. Never computed by pw85.
@@ -20,7 +20,7 @@ import gen_geometry as geo  # noqa: E402
 import mpmath  # noqa: E402
 
 DPS = 700  # the inputs span 2^1400: 80 digits beyond their range
-OUT = HERE.parent / "tests" / "regression-pairs.txt"
+OUT = HERE / "pw85_regression_pairs.txt"
 
 PAIRS = {
     # μ² wrong by 2.7e-8 (overlap of the wrong sign): the unit sphere and a

@@ -360,7 +360,7 @@ int main(int argc, char **argv) {
                  {"mixed", test_mixed},
                  {"call_errors", test_call_errors}};
     for (size_t t = 0; t < G_N_ELEMENTS(tests); t++) {
-      char *path = g_strdup_printf("/batch/%s/%s", kinds[k].name,
+      char *path = g_strdup_printf("/pw85/batch/%s/%s", kinds[k].name,
                                    tests[t].name);
       g_test_add_data_func(path, &kinds[k], tests[t].func);
       g_free(path);

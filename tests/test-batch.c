@@ -442,9 +442,9 @@ int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
   make_pairs();
-  g_test_add_func("/batch/no_thread_unasked", test_no_thread_unasked);
-  g_test_add_func("/batch/thread_policy", test_thread_policy);
-  g_test_add_func("/batch/concurrent", test_concurrent);
+  g_test_add_func("/pw85/batch/no_thread_unasked", test_no_thread_unasked);
+  g_test_add_func("/pw85/batch/thread_policy", test_thread_policy);
+  g_test_add_func("/pw85/batch/concurrent", test_concurrent);
   for (size_t k = 0; k < G_N_ELEMENTS(kinds); k++) {
     static const struct {
       const char *name;
@@ -454,7 +454,7 @@ int main(int argc, char **argv) {
                  {"mixed", test_mixed},
                  {"call_errors", test_call_errors}};
     for (size_t t = 0; t < G_N_ELEMENTS(tests); t++) {
-      char *path = g_strdup_printf("/batch/%s/%s", kinds[k].name,
+      char *path = g_strdup_printf("/pw85/batch/%s/%s", kinds[k].name,
                                    tests[t].name);
       g_test_add_data_func(path, &kinds[k], tests[t].func);
       g_free(path);

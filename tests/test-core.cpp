@@ -221,8 +221,8 @@ void test_inscribed_radius() {
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, nullptr);
   install_failing_gsl_handler();
-  g_test_add_func("/core/ldl/backward-error", test_ldl_backward_error);
-  g_test_add_func("/core/golden-bracket", test_golden_bracket);
-  g_test_add_func("/core/index/inscribed-radius", test_inscribed_radius);
+  g_test_add_func("/pw85/core/ldl/backward-error", test_ldl_backward_error);
+  g_test_add_func("/pw85/core/golden-bracket", test_golden_bracket);
+  g_test_add_func("/pw85/core/index/inscribed-radius", test_inscribed_radius);
   return g_test_run();
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* One definiteness rule, the same answer from every entry point (pw85.h,
- * "Positive definite, as stored"): each form of tests/definite-forms.txt,
+ * "Positive definite, as stored"): each form of data/pw85_definite_forms.txt,
  * whose verdict was decided exactly in rational arithmetic by
  * data/gen_definite.py (not by pw85), through every function that takes a
  * form. A form that is not positive definite must be refused
@@ -27,7 +27,8 @@ static Form *forms;
 static size_t n_forms;
 
 static void load_forms(void) {
-  gchar *path = g_test_build_filename(G_TEST_DIST, "definite-forms.txt", NULL);
+  gchar *path = g_strdup(g_getenv("PW85_DEFINITE_FORMS"));
+  if (path == NULL) g_error("PW85_DEFINITE_FORMS is not set (meson test sets it)");
   FILE *f = fopen(path, "r");
   if (f == NULL) g_error("cannot open %s", path);
   char line[512];

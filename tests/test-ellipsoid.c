@@ -478,19 +478,19 @@ static void test_spheroid_checked(void) {
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
-  g_test_add_func("/ellipsoid/contract", test_contract);
-  g_test_add_func("/ellipsoid/unit-tolerance", test_unit_tolerance);
-  g_test_add_func("/ellipsoid/hand-derived", test_hand_derived);
-  g_test_add_func("/ellipsoid/rotation-bound", test_rotation_bound);
-  g_test_add_func("/ellipsoid/quaternion-matches-rotation",
+  g_test_add_func("/pw85/ellipsoid/contract", test_contract);
+  g_test_add_func("/pw85/ellipsoid/unit-tolerance", test_unit_tolerance);
+  g_test_add_func("/pw85/ellipsoid/hand-derived", test_hand_derived);
+  g_test_add_func("/pw85/ellipsoid/rotation-bound", test_rotation_bound);
+  g_test_add_func("/pw85/ellipsoid/quaternion-matches-rotation",
                   test_quaternion_matches_rotation);
-  g_test_add_func("/principal-axes/contract", test_axes_contract);
-  g_test_add_func("/principal-axes/diagonal", test_axes_diagonal);
-  g_test_add_func("/principal-axes/properties", test_axes_properties);
-  g_test_add_func("/principal-axes-quaternion/contract",
+  g_test_add_func("/pw85/principal-axes/contract", test_axes_contract);
+  g_test_add_func("/pw85/principal-axes/diagonal", test_axes_diagonal);
+  g_test_add_func("/pw85/principal-axes/properties", test_axes_properties);
+  g_test_add_func("/pw85/principal-axes-quaternion/contract",
                   test_axes_quaternion_contract);
-  g_test_add_func("/principal-axes-quaternion/properties",
+  g_test_add_func("/pw85/principal-axes-quaternion/properties",
                   test_axes_quaternion_properties);
-  g_test_add_func("/spheroid-checked/contract", test_spheroid_checked);
+  g_test_add_func("/pw85/spheroid-checked/contract", test_spheroid_checked);
   return g_test_run();
 }

@@ -225,7 +225,7 @@ static void test_constructors(void) {
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
-  g_test_add_func("/geometry-refs/pairs", test_pairs);
-  g_test_add_func("/geometry-refs/constructors", test_constructors);
+  g_test_add_func("/pw85/geometry-refs/pairs", test_pairs);
+  g_test_add_func("/pw85/geometry-refs/constructors", test_constructors);
   return g_test_run();
 }

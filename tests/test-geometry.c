@@ -432,13 +432,13 @@ static void test_overflow(void) {
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
-  g_test_add_func("/geometry/contract", test_contract);
-  g_test_add_func("/geometry/zero-r12", test_zero_r12);
-  g_test_add_func("/geometry/spheres", test_spheres);
-  g_test_add_func("/geometry/same-search", test_same_search);
-  g_test_add_func("/geometry/identities", test_identities);
-  g_test_add_func("/geometry/swap", test_swap);
-  g_test_add_func("/geometry/finite-differences", test_finite_differences);
-  g_test_add_func("/geometry/overflow", test_overflow);
+  g_test_add_func("/pw85/geometry/contract", test_contract);
+  g_test_add_func("/pw85/geometry/zero-r12", test_zero_r12);
+  g_test_add_func("/pw85/geometry/spheres", test_spheres);
+  g_test_add_func("/pw85/geometry/same-search", test_same_search);
+  g_test_add_func("/pw85/geometry/identities", test_identities);
+  g_test_add_func("/pw85/geometry/swap", test_swap);
+  g_test_add_func("/pw85/geometry/finite-differences", test_finite_differences);
+  g_test_add_func("/pw85/geometry/overflow", test_overflow);
   return g_test_run();
 }

@@ -581,11 +581,11 @@ void test_constants() {
 
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, nullptr);
-  g_test_add_func("/index-hpp/constants", test_constants);
-  g_test_add_func("/index-hpp/same/open", test_same_open);
-  g_test_add_func("/index-hpp/same/periodic", test_same_periodic);
-  g_test_add_func("/index-hpp/capacity", test_capacity);
-  g_test_add_func("/index-hpp/move", test_move);
-  g_test_add_func("/index-hpp/errors", test_errors);
+  g_test_add_func("/pw85/index-hpp/constants", test_constants);
+  g_test_add_func("/pw85/index-hpp/same/open", test_same_open);
+  g_test_add_func("/pw85/index-hpp/same/periodic", test_same_periodic);
+  g_test_add_func("/pw85/index-hpp/capacity", test_capacity);
+  g_test_add_func("/pw85/index-hpp/move", test_move);
+  g_test_add_func("/pw85/index-hpp/errors", test_errors);
   return g_test_run();
 }

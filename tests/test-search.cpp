@@ -357,11 +357,11 @@ int main(int argc, char **argv) {
   g_test_init(&argc, &argv, nullptr);
   install_failing_gsl_handler();
   general_pairs_load_or_fail(&pairs);
-  g_test_add_func("/search/safeguard", test_safeguard);
-  g_test_add_func("/search/newton/invariants", test_newton_invariants);
-  g_test_add_func("/search/brent/invariants", test_brent_invariants);
-  g_test_add_func("/search/finish", test_finish);
-  g_test_add_func("/search/result-bounds-every-f", test_result_bounds_every_f);
+  g_test_add_func("/pw85/search/safeguard", test_safeguard);
+  g_test_add_func("/pw85/search/newton/invariants", test_newton_invariants);
+  g_test_add_func("/pw85/search/brent/invariants", test_brent_invariants);
+  g_test_add_func("/pw85/search/finish", test_finish);
+  g_test_add_func("/pw85/search/result-bounds-every-f", test_result_bounds_every_f);
   int const status = g_test_run();
   general_pairs_clear(&pairs);
   return status;

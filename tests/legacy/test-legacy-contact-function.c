@@ -105,9 +105,9 @@ static Replay const replay2 = {"contact_function2",
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   ref_data_load_or_fail(&data);
-  g_test_add_data_func("/pw85_legacy/contact_function1/ref_data", &replay1,
+  g_test_add_data_func("/pw85/legacy/contact_function1/ref_data", &replay1,
                        replay);
-  g_test_add_data_func("/pw85_legacy/contact_function2/ref_data", &replay2,
+  g_test_add_data_func("/pw85/legacy/contact_function2/ref_data", &replay2,
                        replay);
   int const status = g_test_run();
   ref_data_clear(&data);

@@ -347,7 +347,7 @@ static void add_contact_tests(Impl const *impl) {
   };
   for (size_t k = 0; k < G_N_ELEMENTS(tests); k++) {
     char *path =
-        g_strdup_printf("/pw85_legacy/%s/%s", impl->name, tests[k].path);
+        g_strdup_printf("/pw85/legacy/%s/%s", impl->name, tests[k].path);
     g_test_add_data_func(path, impl, tests[k].func);
     g_free(path);
   }
@@ -357,11 +357,11 @@ int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   add_contact_tests(&impl1);
   add_contact_tests(&impl2);
-  g_test_add_func("/pw85_legacy/f1/contract", test_f1_contract);
-  g_test_add_func("/pw85_legacy/f2/contract", test_f2_contract);
-  g_test_add_func("/pw85_legacy/f/agree", test_f_agree);
-  g_test_add_func("/pw85_legacy/f1/nan-everywhere", test_f1_nan_everywhere);
-  g_test_add_func("/pw85_legacy/definiteness/one-rule",
+  g_test_add_func("/pw85/legacy/f1/contract", test_f1_contract);
+  g_test_add_func("/pw85/legacy/f2/contract", test_f2_contract);
+  g_test_add_func("/pw85/legacy/f/agree", test_f_agree);
+  g_test_add_func("/pw85/legacy/f1/nan-everywhere", test_f1_nan_everywhere);
+  g_test_add_func("/pw85/legacy/definiteness/one-rule",
                   test_one_definiteness_rule);
   return g_test_run();
 }

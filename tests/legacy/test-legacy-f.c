@@ -235,11 +235,11 @@ static void test_f1_derivatives_finite_differences(void) {
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   ref_data_load_or_fail(&data);
-  g_test_add_func("/pw85_legacy/f1/ref_data", test_f1_ref_data);
-  g_test_add_func("/pw85_legacy/f2/ref_data", test_f2_ref_data);
-  g_test_add_func("/pw85_legacy/f1/derivatives/closed-form",
+  g_test_add_func("/pw85/legacy/f1/ref_data", test_f1_ref_data);
+  g_test_add_func("/pw85/legacy/f2/ref_data", test_f2_ref_data);
+  g_test_add_func("/pw85/legacy/f1/derivatives/closed-form",
                   test_f1_derivatives_closed_form);
-  g_test_add_func("/pw85_legacy/f1/derivatives/finite-differences",
+  g_test_add_func("/pw85/legacy/f1/derivatives/finite-differences",
                   test_f1_derivatives_finite_differences);
   int const status = g_test_run();
   ref_data_clear(&data);

@@ -392,17 +392,17 @@ static void test_rT_adjQ_r_as_poly_random(void) {
 
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
-  g_test_add_func("/pw85_legacy/det_sym/exact", test_det_sym_exact);
-  g_test_add_func("/pw85_legacy/det_sym/random", test_det_sym_random);
-  g_test_add_func("/pw85_legacy/xT_adjA_x/exact", test_xT_adjA_x_exact);
-  g_test_add_func("/pw85_legacy/xT_adjA_x/random", test_xT_adjA_x_random);
-  g_test_add_func("/pw85_legacy/detQ_as_poly/exact", test_detQ_as_poly_exact);
-  g_test_add_func("/pw85_legacy/detQ_as_poly/random", test_detQ_as_poly_random);
-  g_test_add_func("/pw85_legacy/rT_adjQ_r_as_poly/exact",
+  g_test_add_func("/pw85/legacy/det_sym/exact", test_det_sym_exact);
+  g_test_add_func("/pw85/legacy/det_sym/random", test_det_sym_random);
+  g_test_add_func("/pw85/legacy/xT_adjA_x/exact", test_xT_adjA_x_exact);
+  g_test_add_func("/pw85/legacy/xT_adjA_x/random", test_xT_adjA_x_random);
+  g_test_add_func("/pw85/legacy/detQ_as_poly/exact", test_detQ_as_poly_exact);
+  g_test_add_func("/pw85/legacy/detQ_as_poly/random", test_detQ_as_poly_random);
+  g_test_add_func("/pw85/legacy/rT_adjQ_r_as_poly/exact",
                   test_rT_adjQ_r_as_poly_exact);
-  g_test_add_func("/pw85_legacy/rT_adjQ_r_as_poly/seed-spelling",
+  g_test_add_func("/pw85/legacy/rT_adjQ_r_as_poly/seed-spelling",
                   test_rT_adjQ_r_as_poly_seed_spelling);
-  g_test_add_func("/pw85_legacy/rT_adjQ_r_as_poly/random",
+  g_test_add_func("/pw85/legacy/rT_adjQ_r_as_poly/random",
                   test_rT_adjQ_r_as_poly_random);
   return g_test_run();
 }
