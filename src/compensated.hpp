@@ -55,10 +55,11 @@ PW85_INLINE void compensated_residual(double const hi[sym],
   }
 }
 
-// sᵀ·A·s for symmetric A, as in twice the working precision: no
-// cancellation error however ill-conditioned A is.
-PW85_INLINE double quad_form_dd(double const a[sym],
-                                double const s[dim]) noexcept {
+// sᵀ·A·s for symmetric A, accumulated as in twice the working precision
+// (the sum and its error): no cancellation error however ill-conditioned
+// A is.
+PW85_INLINE Dot2 quad_form_acc(double const a[sym],
+                               double const s[dim]) noexcept {
   Dot2 acc{0.0, 0.0};
   PW85_UNROLL
   for (int k = 0; k < sym; ++k) {
@@ -67,7 +68,13 @@ PW85_INLINE double quad_form_dd(double const a[sym],
     acc.add_product(p.hi, s[col_of[k]]);
     acc.err += p.lo * s[col_of[k]];
   }
-  return acc.value();
+  return acc;
+}
+
+// quad_form_acc() rounded to double.
+PW85_INLINE double quad_form_dd(double const a[sym],
+                                double const s[dim]) noexcept {
+  return quad_form_acc(a, s).value();
 }
 
 // x·y as an unevaluated sum hi + lo, as in twice the working precision.

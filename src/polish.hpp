@@ -62,14 +62,7 @@ PW85_INLINE bool solve_accurately(Problem const &p, double lambda, double s[dim]
 // (Dot2), the tail to first order, 2·(A·s)·s_lo.
 PW85_INLINE dd quad_form_dd2(double const a[sym], double const s[dim],
                              double const s_lo[dim]) noexcept {
-  Dot2 acc{0.0, 0.0};
-  PW85_UNROLL
-  for (int k = 0; k < sym; ++k) {
-    double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;  // exact
-    dd const p = two_prod(factor * a[k], s[row_of[k]]);
-    acc.add_product(p.hi, s[col_of[k]]);
-    acc.err += p.lo * s[col_of[k]];
-  }
+  Dot2 acc = quad_form_acc(a, s);
   double t[dim];
   sym_mul(a, s, t);
   acc.err += 2.0 * dot(t, s_lo);
