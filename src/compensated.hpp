@@ -71,6 +71,18 @@ PW85_INLINE Dot2 quad_form_acc(double const a[sym],
   return acc;
 }
 
+// hi + lo = a + b entry by entry, exactly (two_sum); hi and lo may be a
+// or b.
+PW85_INLINE void split_sum(double const a[dim], double const b[dim],
+                           double hi[dim], double lo[dim]) noexcept {
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    dd const t = two_sum(a[i], b[i]);
+    hi[i] = t.hi;
+    lo[i] = t.lo;
+  }
+}
+
 // quad_form_acc() rounded to double.
 PW85_INLINE double quad_form_dd(double const a[sym],
                                 double const s[dim]) noexcept {
@@ -197,12 +209,7 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
   double ds_lo[dim];
   if (carry) {
     ldl_solve(fac, rho, ds);
-    PW85_UNROLL
-    for (int i = 0; i < dim; ++i) {
-      dd const t = two_sum(s[i], ds[i]);
-      ds[i] = t.hi;
-      ds_lo[i] = t.lo;
-    }
+    split_sum(s, ds, ds, ds_lo);
   } else if (refine || WithP) {
     ldl_solve(fac, rho, ds);
     PW85_UNROLL

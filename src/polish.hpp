@@ -39,12 +39,7 @@ PW85_INLINE bool solve_accurately(Problem const &p, double lambda, double s[dim]
     ldl_solve(fac, p.r, s);
     compensated_residual(hi, lo, p.r, s, rho);
     ldl_solve(fac, rho, ds);
-    PW85_UNROLL
-    for (int i = 0; i < dim; ++i) {
-      dd const t = two_sum(s[i], ds[i]);
-      s[i] = t.hi;
-      s_lo[i] = t.lo;
-    }
+    split_sum(s, ds, s, s_lo);
     if (usable(s, s_lo)) return true;
   }
   if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo) && usable(s, s_lo))
