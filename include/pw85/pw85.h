@@ -450,11 +450,13 @@ PW85_API int pw85_ellipsoid_quaternion(double const a[PW85_DIM],
  *             direction of a[j]).
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
- *         positive definite by the rule above; PW85_ERANGE if cond(Q)
- *         exceeds about 1e270 (tr(Q)·tr(Q⁻¹) > 2^900: GSL's iterations
- *         could meet subnormal numbers, where they may not converge), or
- *         if a Rayleigh quotient is not > 0 in double-double (cond(Q)
- *         beyond about 1e32). a and rot are written on success only.
+ *         positive definite by the rule above; PW85_ERANGE if Q, positive
+ *         definite, is singular to double precision (its L·D·Lᵀ
+ *         factorisation in double meets a pivot ≤ 0: cond(Q) about 1/ε or
+ *         more), if cond(Q) exceeds about 1e270 (tr(Q)·tr(Q⁻¹) > 2^900:
+ *         GSL's iterations could meet subnormal numbers, where they may
+ *         not converge), or if a Rayleigh quotient is not > 0 in
+ *         double-double. a and rot are written on success only.
  * @since 2.2.0
  */
 PW85_API int pw85_principal_axes(double const q[PW85_SYM],
