@@ -9,6 +9,7 @@
 // constructors' statuses, and a positive, sorted set of semi-axes from
 // every Q they build that is positive definite.
 #include "fuzz_common.h"
+#include "quad_ref.h"
 
 namespace {
 
@@ -64,6 +65,62 @@ void check_geometry(const double r[3], const double q1[6],
     CHECK(fuzz::all_finite(g, PW85_GEOM_SIZE) &&
               (d_overflow || fuzz::all_finite(d, PW85_DERIV_SIZE)),
           "success with a non-finite output");
+  // Against the binary128 reference (quad_ref.h) inside the documented
+  // domain: the accuracy pw85.h states, 1.5·u·κ (x − c1, n, λ relative to
+  // min(λ, 1 − λ)), 1.2·u·κ (∂μ²/∂r12), 1.1·u·κ (torques, relative to
+  // |∂μ²/∂r12|·|x − cᵢ|), κ = cond(Q(λ)), held to 8·u·κ̄ as the tests do
+  // (κ̄ = tr·tr⁻¹ ≥ κ), plus the rounding of each output.
+  if (st2 == PW85_SUCCESS && !zero && fuzz::cond_bound(q1) < 1e16L &&
+      fuzz::cond_bound(q2) < 1e16L && g[PW85_GEOM_MU2] >= DBL_MIN) {
+    fuzz::QuadRef const ref = fuzz::quad_contact(r, q1, q2);
+    fuzz::QuadGeometry qg;
+    if (ref.ok && quad_geometry(ref.lambda, r, q1, q2, &qg) &&
+        qg.cond < 1e16Q) {
+      long double const u = DBL_EPSILON / 2;
+      long double const tol = 8 * u * (long double)qg.cond;
+      auto norm = [](const long double v[3]) {
+        return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+      };
+      // |out − ref| / |ref| for a block of 3
+      auto rel = [&](const double *out, const fuzz::quad *rq,
+                     long double scale) {
+        long double d[3], q3[3];
+        for (int i = 0; i < 3; ++i) {
+          q3[i] = (long double)rq[i];
+          d[i] = (long double)out[i] - q3[i];
+        }
+        long double const s = scale > 0 ? scale : norm(q3);
+        return s > 0 ? norm(d) / s : norm(d);
+      };
+      long double const lam_ref = (long double)ref.lambda;
+      long double const near = std::fmin(lam_ref, 1 - lam_ref);
+      CHECK(std::fabs((long double)lambda - lam_ref) <=
+                tol * near + lam_ref * 0x1p-53L,
+            "lambda %a, reference %La (tol %Lg)", lambda, lam_ref, tol);
+      CHECK(rel(g + PW85_GEOM_POINT, qg.point, 0) <= tol + 2 * u,
+            "x - c1 off by %Lg (tol %Lg)", rel(g + PW85_GEOM_POINT, qg.point, 0),
+            tol);
+      CHECK(rel(g + PW85_GEOM_NORMAL, qg.normal, 0) <= tol + 2 * u,
+            "n off by %Lg (tol %Lg)", rel(g + PW85_GEOM_NORMAL, qg.normal, 0),
+            tol);
+      CHECK(rel(d + PW85_DERIV_R12, qg.d_r12, 0) <= tol + 2 * u,
+            "d/dr12 off by %Lg (tol %Lg)", rel(d + PW85_DERIV_R12, qg.d_r12, 0),
+            tol);
+      long double dr[3], x1[3], x2[3];
+      for (int i = 0; i < 3; ++i) {
+        dr[i] = (long double)qg.d_r12[i];
+        x1[i] = (long double)qg.point[i];
+        x2[i] = x1[i] - r[i];
+      }
+      long double const s1 = norm(dr) * norm(x1), s2 = norm(dr) * norm(x2);
+      CHECK(rel(d + PW85_DERIV_ROT1, qg.rot1, s1) <= tol + 2 * u,
+            "d/drot1 off by %Lg of its scale (tol %Lg)",
+            rel(d + PW85_DERIV_ROT1, qg.rot1, s1), tol);
+      CHECK(rel(d + PW85_DERIV_ROT2, qg.rot2, s2) <= tol + 2 * u,
+            "d/drot2 off by %Lg of its scale (tol %Lg)",
+            rel(d + PW85_DERIV_ROT2, qg.rot2, s2), tol);
+    }
+  }
   // Swapping the ellipsoids: the same status and μ² (bit for bit), n → −n
   // and the derivatives exchanged, exactly (a zero may change sign); where
   // the contact function's swapping is exact.

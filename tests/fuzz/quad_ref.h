@@ -130,6 +130,69 @@ inline QuadRef quad_contact(const double r12[3], const double q1d[6],
   return out;
 }
 
+/* The contact geometry and the derivatives of μ² at λ (the reference λ*),
+ * in quad (theory: x − c1 = (1−λ)·Q1·s, n = s/‖s‖, ∂μ²/∂r12 = 2λ(1−λ)·s,
+ * ∂μ²/∂ω1 = 2λ(1−λ)²·s × Q1s, ∂μ²/∂ω2 = 2λ²(1−λ)·s × Q2s; pw85.h), and
+ * κ̄ = tr(Q(λ))·tr(Q(λ)⁻¹) ≥ cond(Q(λ)). False when Q(λ) is singular. */
+struct QuadGeometry {
+  quad point[3], normal[3], d_r12[3], rot1[3], rot2[3];
+  quad cond;
+};
+
+inline bool quad_geometry(quad lam, const double r12[3], const double q1d[6],
+                          const double q2d[6], QuadGeometry *g) {
+  quad r[3], q1[6], q2[6], q[6];
+  for (int i = 0; i < 3; ++i) r[i] = r12[i];
+  quad const m = 1 - lam;
+  for (int k = 0; k < 6; ++k) {
+    q1[k] = q1d[k];
+    q2[k] = q2d[k];
+    q[k] = m * q1[k] + lam * q2[k];
+  }
+  quad const d0 = q[0];
+  if (!(d0 > 0)) return false;
+  quad const l10 = q[1] / d0, l20 = q[2] / d0;
+  quad const d1 = q[3] - l10 * q[1];
+  if (!(d1 > 0)) return false;
+  quad const l21 = (q[4] - l10 * q[2]) / d1;
+  quad const d2 = q[5] - l20 * q[2] - l21 * l21 * d1;
+  if (!(d2 > 0)) return false;
+  quad const z0 = r[0], z1 = r[1] - l10 * z0, z2 = r[2] - l20 * z0 - l21 * z1;
+  quad s[3];
+  s[2] = z2 / d2;
+  s[1] = z1 / d1 - l21 * s[2];
+  s[0] = z0 / d0 - l10 * s[1] - l20 * s[2];
+  quad const m20 = l10 * l21 - l20;
+  quad const tinv = 1 / d0 + (1 + l10 * l10) / d1 +
+                    (1 + l21 * l21 + m20 * m20) / d2;
+  g->cond = (q[0] + q[3] + q[5]) * tinv;
+  auto mul = [&](const quad a[6], quad out[3]) {
+    out[0] = a[0] * s[0] + a[1] * s[1] + a[2] * s[2];
+    out[1] = a[1] * s[0] + a[3] * s[1] + a[4] * s[2];
+    out[2] = a[2] * s[0] + a[4] * s[1] + a[5] * s[2];
+  };
+  auto cross = [](const quad a[3], const quad b[3], quad out[3]) {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+  };
+  quad t1[3], t2[3], c1[3], c2[3];
+  mul(q1, t1);
+  mul(q2, t2);
+  cross(s, t1, c1);
+  cross(s, t2, c2);
+  quad const ns = (quad)sqrtl((long double)(s[0] * s[0] + s[1] * s[1] +
+                                            s[2] * s[2]));
+  for (int i = 0; i < 3; ++i) {
+    g->point[i] = m * t1[i];
+    g->normal[i] = s[i] / ns;
+    g->d_r12[i] = 2 * lam * m * s[i];
+    g->rot1[i] = 2 * lam * m * m * c1[i];
+    g->rot2[i] = 2 * lam * lam * m * c2[i];
+  }
+  return true;
+}
+
 }  // namespace fuzz
 
 #endif /* PW85_FUZZ_QUAD_REF_H */
