@@ -73,6 +73,18 @@ PAIRS = {
         ["0x1.091d7ae4291d7p-120", "0x1.6e4ae764cc3cp-128",
          "-0x1.1dddd57c6945p-126", "0x1.0297cae3dbf26p-120",
          "0x1.10fe37859fe2p-126", "0x1.0c9aba37faf05p-120"]),
+    # fuzz-geometry: forms 2^1080 apart, ρ = √(P2/P1) overflowed (ω = +∞
+    # everywhere): λ 2^11 times too small, in the contact function and the
+    # geometry (μ² right: f is flat there).
+    "rho-overflow": (
+        ["-0x1.77516d2c89cffp+326", "0x1.696233f926341p+247",
+         "0x0.00000f45447bep-1022"],
+        ["0x1.2f83d79p-84", "0x1.7a9dcc03ff873p-85", "0x1.afc569cde2f88p-85",
+         "0x1.d84d06b315252p-86", "0x1.0d4dd966c4107p-85",
+         "0x1.331cbd88b41e9p-85"],
+        ["0x1.d3d3d3d3d3d3dp+996", "-0x1.8e82304757a64p+871",
+         "0x1.57da3f3de94e5p+167", "0x1.556d52735209cp+967",
+         "-0x1.8e82304757a64p-537", "0x1.57bfc7afb5222p+967"]),
 }
 
 

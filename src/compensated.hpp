@@ -71,6 +71,16 @@ PW85_INLINE Dot2 quad_form_acc(double const a[sym],
   return acc;
 }
 
+// λ·ρ = λ·√(P2/P1) (eq. (5.6)) with P2 first scaled by an even power of
+// two 2^−e towards P1 (exact), so that neither the ratio nor the root
+// leaves the range of doubles where λ·ρ does not: one form may be 2^1000
+// times the other, and ρ beyond DBL_MAX while λ·ρ is near 1.
+PW85_INLINE double lambda_rho(double lambda, double p1, double p2) noexcept {
+  int e = exponent(p2) - exponent(p1);
+  e -= e % 2;
+  return times_pow2(lambda * std::sqrt(times_pow2(p2, -e) / p1), e / 2);
+}
+
 // hi + lo = a + b entry by entry, exactly (two_sum); hi and lo may be a
 // or b.
 PW85_INLINE void split_sum(double const a[dim], double const b[dim],

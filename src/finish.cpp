@@ -16,8 +16,7 @@ namespace {
 
 // ω = λρ − (1 − λ), ρ = √(P2/P1) (eq. (5.6)), from compensated P1 and P2.
 PW85_INLINE double omega_of(double lambda, Compensated const &a) noexcept {
-  double const rho = std::sqrt(a.p2 / a.p1);
-  return lambda * rho - (1.0 - lambda);
+  return lambda_rho(lambda, a.p1, a.p2) - (1.0 - lambda);
 }
 
 // The quadratic model's gain over f(λ) for the Newton step Δλ = −step

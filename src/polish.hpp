@@ -74,8 +74,14 @@ PW85_INLINE double omega_dd(double lambda, Problem const &p, double s[dim],
   scale_for_p(s, s_lo);
   dd const p1 = quad_form_dd2(p.q1, s, s_lo);
   dd const p2 = quad_form_dd2(p.q2, s, s_lo);
-  dd const rho = dd_sqrt(dd_div(p2, p1));
-  return dd_round(dd_sub(dd_mul(rho, lambda), two_sum(1.0, -lambda)));
+  // P2 scaled by an even power of two towards P1 (exact), so that ρ does
+  // not overflow where λ·ρ is near 1 (lambda_rho()).
+  int e = exponent(p2.hi) - exponent(p1.hi);
+  e -= e % 2;
+  dd const p2s{times_pow2(p2.hi, -e), times_pow2(p2.lo, -e)};
+  dd const rho_s = dd_mul(dd_sqrt(dd_div(p2s, p1)), lambda);
+  dd const lambda_rho{times_pow2(rho_s.hi, e / 2), times_pow2(rho_s.lo, e / 2)};
+  return dd_round(dd_sub(lambda_rho, two_sum(1.0, -lambda)));
 }
 
 // Newton steps on ω in double-double (omega_dd(); its root is λ*, the

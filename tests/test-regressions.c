@@ -160,6 +160,21 @@ static void test_flat_lambda(void) {
   g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
 }
 
+/* Forms 2^1080 apart (fuzz-geometry): ρ = √(P2/P1) overflowed, and λ was
+ * 2^11 times too small in the contact function and the geometry; within
+ * the hard set's 6e-10·λ* now, μ² correctly rounded. */
+static void test_rho_overflow(void) {
+  Pair const *p = pair("rho-overflow");
+  double out[2], g[PW85_GEOM_SIZE];
+  g_assert_cmpint(pw85_contact_function(p->in, p->in + 3, p->in + 9, out), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
+  g_assert_cmpint(pw85_contact_geometry(p->in, p->in + 3, p->in + 9, g), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] / p->ref[1] - 1), <=, 6e-10);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
@@ -170,5 +185,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/regressions/lambda-near-zero", test_lambda_near_zero);
   g_test_add_func("/pw85/regressions/flat-maximum", test_flat_maximum);
   g_test_add_func("/pw85/regressions/flat-lambda", test_flat_lambda);
+  g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
   return g_test_run();
 }
