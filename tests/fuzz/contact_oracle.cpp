@@ -204,7 +204,7 @@ void check_contact(const double r12[3], const double q1[6],
       // states (6e-10 on the hard set) for maxima flatter than those
       // sets hold, far below the 1.7e-4 of issue 25's reproducer; plus
       // the rounding of λ to a double (near 1, 1 − λ* may be below ε).
-      quad const near_end = ref.lambda < 0.5Q ? ref.lambda : 1 - ref.lambda;
+      quad const near_end = ref.lambda < 0.5Q ? ref.lambda : ref.other;
       quad const dl = (quad)lam - ref.lambda;
       CHECK_IN((dl < 0 ? -dl : dl) <=
                    1e-8Q * near_end + ref.lambda * 0x1p-53Q + DBL_TRUE_MIN,

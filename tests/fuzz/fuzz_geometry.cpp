@@ -74,7 +74,7 @@ void check_geometry(const double r[3], const double q1[6],
       fuzz::cond_bound(q2) < 1e16L && g[PW85_GEOM_MU2] >= DBL_MIN) {
     fuzz::QuadRef const ref = fuzz::quad_contact(r, q1, q2);
     fuzz::QuadGeometry qg;
-    if (ref.ok && quad_geometry(ref.lambda, r, q1, q2, &qg) &&
+    if (ref.ok && quad_geometry(ref.lambda, ref.other, r, q1, q2, &qg) &&
         qg.cond < 1e16Q) {
       long double const u = DBL_EPSILON / 2;
       long double const tol = 8 * u * (long double)qg.cond;
@@ -93,7 +93,8 @@ void check_geometry(const double r[3], const double q1[6],
         return s > 0 ? norm(d) / s : norm(d);
       };
       long double const lam_ref = (long double)ref.lambda;
-      long double const near = std::fmin(lam_ref, 1 - lam_ref);
+      long double const near =
+          std::fmin(lam_ref, (long double)ref.other);
       CHECK(std::fabs((long double)lambda - lam_ref) <=
                 tol * near + lam_ref * 0x1p-53L,
             "lambda %a, reference %La (tol %Lg)", lambda, lam_ref, tol);

@@ -17,6 +17,7 @@ typedef __float128 quad;
 
 struct QuadRef {
   quad lambda;  // λ*
+  quad other;   // 1 − λ*, kept apart: within 2⁻¹¹³ of 1, λ* rounds to 1
   quad mu2;     // f(λ*)
   bool ok;      // converged
 };
@@ -28,8 +29,8 @@ struct QuadRef {
  * than the other (there f′'s terms cancel to 2^−750 of their size). False
  * when Q(λ) is singular in quad. */
 inline bool quad_f(quad lam, const quad r[3], const quad q1[6],
-                   const quad q2[6], quad *f, quad *w) {
-  quad const m = 1 - lam;
+                   const quad q2[6], quad *f, quad *w, quad m = -1) {
+  if (m < 0) m = 1 - lam;  // 1 − λ, unless given (near 1)
   quad q[6];
   for (int k = 0; k < 6; ++k) q[k] = m * q1[k] + lam * q2[k];
   /* s = Q⁻¹r by L·D·Lᵀ (backward stable: relative error of order
@@ -72,17 +73,21 @@ inline QuadRef quad_contact(const double r12[3], const double q1d[6],
     q1[k] = q1d[k];
     q2[k] = q2d[k];
   }
-  QuadRef out{0, 0, false};
+  QuadRef out{0, 0, 0, false};
   quad f, w;
   if (!quad_f(0.5Q, r, q1, q2, &f, &w)) return out;
-  if (w == 0) return QuadRef{0.5Q, f, true};
-  // Work in t = distance to the nearer end: λ = t (left) or 1 − t.
+  if (w == 0) return QuadRef{0.5Q, 0.5Q, f, true};
+  // Work in t = distance to the nearer end: λ = t (left) or 1 − t, with
+  // 1 − λ = t given exactly on the right.
   bool const left = w > 0;
   auto lambda_of = [&](quad t) { return left ? t : 1 - t; };
+  auto eval = [&](quad t, quad *ff, quad *wt) {
+    return quad_f(lambda_of(t), r, q1, q2, ff, wt, left ? 1 - t : t);
+  };
   // w > 0 (f′ < 0) at λ = t (left) means the root is below: t too large.
   auto too_far = [&](quad t, bool *fail) {
     quad ff, wt;
-    if (!quad_f(lambda_of(t), r, q1, q2, &ff, &wt)) *fail = true;
+    if (!eval(t, &ff, &wt)) *fail = true;
     return left ? wt > 0 : wt < 0;
   };
   bool fail = false;
@@ -121,10 +126,9 @@ inline QuadRef quad_contact(const double r12[3], const double q1d[6],
     if (fail) return out;
   }
   quad flo, fhi;
-  if (!quad_f(lambda_of(lo), r, q1, q2, &flo, nullptr) ||
-      !quad_f(lambda_of(hi), r, q1, q2, &fhi, nullptr))
-    return out;
+  if (!eval(lo, &flo, nullptr) || !eval(hi, &fhi, nullptr)) return out;
   out.lambda = lambda_of((lo + hi) / 2);
+  out.other = left ? 1 - (lo + hi) / 2 : (lo + hi) / 2;
   out.mu2 = flo > fhi ? flo : fhi;
   out.ok = true;
   return out;
@@ -139,11 +143,11 @@ struct QuadGeometry {
   quad cond;
 };
 
-inline bool quad_geometry(quad lam, const double r12[3], const double q1d[6],
-                          const double q2d[6], QuadGeometry *g) {
+inline bool quad_geometry(quad lam, quad m, const double r12[3],
+                          const double q1d[6], const double q2d[6],
+                          QuadGeometry *g) {  // m = 1 − λ
   quad r[3], q1[6], q2[6], q[6];
   for (int i = 0; i < 3; ++i) r[i] = r12[i];
-  quad const m = 1 - lam;
   for (int k = 0; k < 6; ++k) {
     q1[k] = q1d[k];
     q2[k] = q2d[k];
