@@ -85,6 +85,17 @@ PAIRS = {
         ["0x1.d3d3d3d3d3d3dp+996", "-0x1.8e82304757a64p+871",
          "0x1.57da3f3de94e5p+167", "0x1.556d52735209cp+967",
          "-0x1.8e82304757a64p-537", "0x1.57bfc7afb5222p+967"]),
+    # fuzz-contact-structured: λ 1.1e-8 off at a flat maximum with
+    # cond(Q2) = 9.4e15, where the slope test alone did not polish.
+    "flat-lambda-ill-conditioned": (
+        ["0x1.6f7d60898a1acp+41", "0x1.1843ffe8e4f1cp+38",
+         "-0x1.7e1e45cf03b28p+42"],
+        ["0x1.ce021f6a50c28p+85", "-0x1.39aeb4098bc7p+74",
+         "-0x1.52adf23422944p+84", "0x1.728d5b042a423p+86",
+         "0x1.ace0dc9da26b8p+78", "0x1.f0a9546ad5cdep+82"],
+        ["0x1.c6bc67a79783bp+85", "-0x1.673c203559208p+85",
+         "-0x1.1301f4fead7fcp+82", "0x1.2283e8c8fb2aap+85",
+         "-0x1.58f5602dbe81cp+82", "0x1.707fd7c7b6a8fp+86"]),
 }
 
 

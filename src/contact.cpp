@@ -75,7 +75,9 @@ Status solve(Problem const &p, double out[2], double const *r_lo) noexcept {
   // ended without a Newton step: λ polished with ω in double-double (μ²
   // stands: f is flat there).
   double const near = std::min(finished.lambda, 1.0 - finished.lambda);
-  if (PW85_UNLIKELY(!(near * finished.slope >= flat_slope)) &&
+  double const h = near * finished.slope;
+  double const cond = std::max(trace(p.q1) * p.tinv1, trace(p.q2) * p.tinv2);
+  if (PW85_UNLIKELY(!(h >= flat_slope && h * h >= flat_cond_slope2 * cond)) &&
       r_lo == nullptr)
     finished.lambda = polish<Fast>(p, finished.lambda);
   out[0] = finished.mu2;

@@ -109,17 +109,20 @@ constexpr double p_carry_cond = 1e7;
 // A step larger than polish_max_step (relative) is not taken (not
 // expected): λ stays where it is. At most polish_iter evaluations.
 constexpr double polish_accept = 1e-9;
-// The finish's λ is off by about δω/ω′, relative to the nearer end
-// δω/(min(λ, 1 − λ)·ω′), δω the error of ω in double from the
-// compensated Pᵢ: a few ε for well-conditioned forms, measured up to 5e-11
-// with cond(Q1) = 9e15 (a fuzz-contact-structured finding: λ 1.8e-8 off
-// at min(λ, 1 − λ)·ω′ = 2.6e-3, a flat maximum, f″·λ²/μ² = −1.5e-9).
-// Below flat_slope, the contact function polishes λ as the geometry does
-// (omega_dd(): Pᵢ in double-double from s + s_lo), so that λ stays
-// within 5e-9 (δω/flat_slope) of λ*, relative, everywhere: the fuzz
-// oracle's 1e-8. Measured: 1.4% of random triaxial pairs (aspect ratios
-// to 1e3) fall below it.
+// The finish's λ is off by about δω/ω′, relative to the nearer end δω/h
+// with h = min(λ, 1 − λ)·ω′ (small at a flat maximum: f″·λ²/μ² small),
+// δω the error of ω in double from the compensated Pᵢ, which may be off
+// by ε·√κ̄(Qᵢ) relative (compensated.hpp), κ̄ = max κ̄(Qᵢ); measured:
+// δω ≈ 5e-11 at κ̄ = 9e15, 0.005·ε·√κ̄. Where h < flat_slope, or
+// h < 0.01·ε·√κ̄·10¹⁰ (δω/h above 1e-10 by that measure, twice over),
+// the contact function polishes λ as the geometry does (omega_dd(): Pᵢ
+// in double-double from s + s_lo). Found by fuzz-contact-structured's
+// binary128 oracle: λ 1.8e-8 off at h = 2.6e-3, κ̄ = 9e15, and 1.1e-8 off
+// at h ≈ 1e-2, κ̄ = 9.4e15. Measured: 1.4% of random triaxial pairs
+// (aspect ratios to 1e3) have h < flat_slope.
 constexpr double flat_slope = 1e-2;
+constexpr double flat_cond_slope2 =
+    (0.01 * 0x1p-52 * 1e10) * (0.01 * 0x1p-52 * 1e10);  // against h²/κ̄
 constexpr double polish_max_step = 1e-3;
 constexpr int polish_iter = 6;
 // s = Q(λ)⁻¹·r for the outputs: from the plain factors with one

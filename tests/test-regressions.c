@@ -148,11 +148,12 @@ static void test_lambda_near_zero(void) {
   g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
 }
 
-/* λ of the contact function at a maximum flatter still (f″·λ²/μ² =
- * −1.5e-9, cond(Q1) = 9e15; fuzz-contact-structured): within the hard
- * set's 6e-10·min(λ*, 1 − λ*) (it was 1.8e-8 off), μ² correctly rounded. */
-static void test_flat_lambda(void) {
-  Pair const *p = pair("flat-lambda");
+/* λ of the contact function at maxima flatter still (f″·λ²/μ² = −1.5e-9,
+ * cond(Q1) = 9e15; and −5e-9 with cond(Q2) = 9.4e15;
+ * fuzz-contact-structured): within the hard set's 6e-10·min(λ*, 1 − λ*)
+ * (they were 1.8e-8 and 1.1e-8 off), μ² correctly rounded. */
+static void test_flat_lambda(gconstpointer name) {
+  Pair const *p = pair(name);
   double out[2];
   g_assert_cmpint(pw85_contact_function(p->in, p->in + 3, p->in + 9, out), ==,
                   PW85_SUCCESS);
@@ -184,7 +185,10 @@ int main(int argc, char **argv) {
                   test_needle_far_larger);
   g_test_add_func("/pw85/regressions/lambda-near-zero", test_lambda_near_zero);
   g_test_add_func("/pw85/regressions/flat-maximum", test_flat_maximum);
-  g_test_add_func("/pw85/regressions/flat-lambda", test_flat_lambda);
+  g_test_add_data_func("/pw85/regressions/flat-lambda", "flat-lambda",
+                       test_flat_lambda);
+  g_test_add_data_func("/pw85/regressions/flat-lambda-ill-conditioned",
+                       "flat-lambda-ill-conditioned", test_flat_lambda);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
   return g_test_run();
 }
