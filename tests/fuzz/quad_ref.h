@@ -139,7 +139,7 @@ inline QuadRef quad_contact(const double r12[3], const double q1d[6],
  * ∂μ²/∂ω1 = 2λ(1−λ)²·s × Q1s, ∂μ²/∂ω2 = 2λ²(1−λ)·s × Q2s; pw85.h), and
  * κ̄ = tr(Q(λ))·tr(Q(λ)⁻¹) ≥ cond(Q(λ)). False when Q(λ) is singular. */
 struct QuadGeometry {
-  quad point[3], normal[3], d_r12[3], rot1[3], rot2[3];
+  quad point[3], point2[3], normal[3], d_r12[3], rot1[3], rot2[3];
   quad cond;
 };
 
@@ -189,6 +189,7 @@ inline bool quad_geometry(quad lam, quad m, const double r12[3],
                                             s[2] * s[2]));
   for (int i = 0; i < 3; ++i) {
     g->point[i] = m * t1[i];
+    g->point2[i] = -lam * t2[i];  // x − c2 (theory, eq. (3.9b)), no cancellation
     g->normal[i] = s[i] / ns;
     g->d_r12[i] = 2 * lam * m * s[i];
     g->rot1[i] = 2 * lam * m * m * c1[i];
