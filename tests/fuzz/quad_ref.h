@@ -22,20 +22,14 @@ struct QuadRef {
   bool ok;      // converged
 };
 
-/* f(λ) and, if w is not null, w = μ2² − μ1² = λ²·P2 − (1−λ)²·P1 with
- * Pᵢ = sᵀQᵢs, s = Q(λ)⁻¹r (docs/optimisation.rst, eqs. (5.1a)–(5.4)),
- * whose sign is that of −f′ and which, unlike f′ = (1−2λ)·rᵀs −
- * λ(1−λ)·sᵀ(Q2−Q1)s, suffers no cancellation when one form is far larger
- * than the other (there f′'s terms cancel to 2^−750 of their size). False
- * when Q(λ) is singular in quad. */
-inline bool quad_f(quad lam, const quad r[3], const quad q1[6],
-                   const quad q2[6], quad *f, quad *w, quad m = -1) {
-  if (m < 0) m = 1 - lam;  // 1 − λ, unless given (near 1)
+/* s = Q⁻¹r for Q(λ) = m·Q1 + λ·Q2 by L·D·Lᵀ in quad (backward stable:
+ * relative error of order cond(Q)·2⁻¹¹³; the adjugate would square the
+ * condition number of a needle's minors), and κ̄ = tr(Q)·tr(Q⁻¹) ≥
+ * cond(Q) if cond is not null. False when a pivot is not > 0. */
+inline bool quad_solve(quad lam, quad m, const quad r[3], const quad q1[6],
+                       const quad q2[6], quad s[3], quad *cond) {
   quad q[6];
   for (int k = 0; k < 6; ++k) q[k] = m * q1[k] + lam * q2[k];
-  /* s = Q⁻¹r by L·D·Lᵀ (backward stable: relative error of order
-   * cond(Q)·2⁻¹¹³; the adjugate would square the condition number of a
-   * needle's minors) */
   quad const d0 = q[0];
   if (!(d0 > 0)) return false;
   quad const l10 = q[1] / d0, l20 = q[2] / d0;
@@ -45,10 +39,28 @@ inline bool quad_f(quad lam, const quad r[3], const quad q1[6],
   quad const d2 = q[5] - l20 * q[2] - l21 * l21 * d1;
   if (!(d2 > 0)) return false;
   quad const z0 = r[0], z1 = r[1] - l10 * z0, z2 = r[2] - l20 * z0 - l21 * z1;
-  quad s[3];
   s[2] = z2 / d2;
   s[1] = z1 / d1 - l21 * s[2];
   s[0] = z0 / d0 - l10 * s[1] - l20 * s[2];
+  if (cond != nullptr) {
+    quad const m20 = l10 * l21 - l20;
+    *cond = (q[0] + q[3] + q[5]) *
+            (1 / d0 + (1 + l10 * l10) / d1 + (1 + l21 * l21 + m20 * m20) / d2);
+  }
+  return true;
+}
+
+/* f(λ) and, if w is not null, w = μ2² − μ1² = λ²·P2 − (1−λ)²·P1 with
+ * Pᵢ = sᵀQᵢs, s = Q(λ)⁻¹r (docs/optimisation.rst, eqs. (5.1a)–(5.4)),
+ * whose sign is that of −f′ and which, unlike f′ = (1−2λ)·rᵀs −
+ * λ(1−λ)·sᵀ(Q2−Q1)s, suffers no cancellation when one form is far larger
+ * than the other (there f′'s terms cancel to 2^−750 of their size). False
+ * when Q(λ) is singular in quad. */
+inline bool quad_f(quad lam, const quad r[3], const quad q1[6],
+                   const quad q2[6], quad *f, quad *w, quad m = -1) {
+  if (m < 0) m = 1 - lam;  // 1 − λ, unless given (near 1)
+  quad s[3];
+  if (!quad_solve(lam, m, r, q1, q2, s, nullptr)) return false;
   quad const rs = r[0] * s[0] + r[1] * s[1] + r[2] * s[2];
   *f = lam * m * rs;
   if (w == nullptr) return true;
@@ -146,30 +158,13 @@ struct QuadGeometry {
 inline bool quad_geometry(quad lam, quad m, const double r12[3],
                           const double q1d[6], const double q2d[6],
                           QuadGeometry *g) {  // m = 1 − λ
-  quad r[3], q1[6], q2[6], q[6];
+  quad r[3], q1[6], q2[6], s[3];
   for (int i = 0; i < 3; ++i) r[i] = r12[i];
   for (int k = 0; k < 6; ++k) {
     q1[k] = q1d[k];
     q2[k] = q2d[k];
-    q[k] = m * q1[k] + lam * q2[k];
   }
-  quad const d0 = q[0];
-  if (!(d0 > 0)) return false;
-  quad const l10 = q[1] / d0, l20 = q[2] / d0;
-  quad const d1 = q[3] - l10 * q[1];
-  if (!(d1 > 0)) return false;
-  quad const l21 = (q[4] - l10 * q[2]) / d1;
-  quad const d2 = q[5] - l20 * q[2] - l21 * l21 * d1;
-  if (!(d2 > 0)) return false;
-  quad const z0 = r[0], z1 = r[1] - l10 * z0, z2 = r[2] - l20 * z0 - l21 * z1;
-  quad s[3];
-  s[2] = z2 / d2;
-  s[1] = z1 / d1 - l21 * s[2];
-  s[0] = z0 / d0 - l10 * s[1] - l20 * s[2];
-  quad const m20 = l10 * l21 - l20;
-  quad const tinv = 1 / d0 + (1 + l10 * l10) / d1 +
-                    (1 + l21 * l21 + m20 * m20) / d2;
-  g->cond = (q[0] + q[3] + q[5]) * tinv;
+  if (!quad_solve(lam, m, r, q1, q2, s, &g->cond)) return false;
   auto mul = [&](const quad a[6], quad out[3]) {
     out[0] = a[0] * s[0] + a[1] * s[1] + a[2] * s[2];
     out[1] = a[1] * s[0] + a[3] * s[1] + a[4] * s[2];
