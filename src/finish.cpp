@@ -3,6 +3,7 @@
 #include "finish.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "compensated.hpp"
@@ -39,7 +40,7 @@ struct Best {
   double lambda = 0.0;
   bool any = false;
   void see(double f_at, double lambda_at) noexcept {
-    if (!any || f_at > f) f = f_at, lambda = lambda_at;
+    if (!any || f_at >= f) f = f_at, lambda = lambda_at;
     any = true;
   }
 };
@@ -50,7 +51,16 @@ PW85_FMA_CLONES
 bool finish(Problem const &p, FinishStart const &start,
             Finished *out) noexcept {
   double lambda = start.lambda;
+  // The slope of the next step, and whether it is local: the start's plain
+  // ω′ (at or next to the start) is; a secant is where its two points lie
+  // within finish_local of each other (relative to the nearer end of
+  // [0, 1]) or within 4 steps. Only a local slope ends the iteration: a
+  // secant through a far point can be many times the slope at λ where ω
+  // bends (a flat maximum: ω′ 7.5e-4 at λ = 1.2e-4 and a secant of 350
+  // through λ/1024, on a fuzzing input), and its step then looks converged
+  // long before λ is.
   double domega = start.domega;
+  bool local = true;
   // The plain factors and solution at the current λ, where known: those
   // of the start, if given, until λ moves.
   LdlSolution const *plain = start.plain;
@@ -58,8 +68,15 @@ bool finish(Problem const &p, FinishStart const &start,
   double prev_lambda = 0.0, prev_omega = 0.0;
   // The root of the compensated ω lies in (lo, hi): narrowed by the sign of
   // every ω computed here, which is reliable (unlike that of the plain ω
-  // when Q(λ) is ill-conditioned).
-  double lo = 0.0, hi = 1.0;
+  // when Q(λ) is ill-conditioned) where |ω| exceeds its rounding; w_lo < 0
+  // and w_hi > 0 are ω at lo and hi once evaluated there (NaN before).
+  double lo = 0.0, hi = 1.0, w_lo = NAN, w_hi = NAN;
+  // The bracket's size (relative to the nearer end of [0, 1]; log-scale
+  // while its ends differ by more than a factor 4) and the step's length,
+  // one and two evaluations ago: where neither has halved in two
+  // evaluations (a secant of rounding noise crawling), a bisection.
+  double size_before[2] = {HUGE_VAL, HUGE_VAL};
+  double move_before[2] = {HUGE_VAL, HUGE_VAL};
   int fall = 10;  // the exponent of the next fallback step towards an end
   for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
     Compensated a;
@@ -68,20 +85,30 @@ bool finish(Problem const &p, FinishStart const &start,
       break;
     best.see(a.f, lambda);
     double const omega = omega_of(lambda, a);
-    if (omega < 0.0) lo = std::max(lo, lambda);
-    if (omega > 0.0) hi = std::min(hi, lambda);
-    // The slope: the secant through the previous point once there is one
-    // (and it is positive and finite, as ω′ is), else the plain ω′.
-    if (evaluations > 1 && lambda != prev_lambda && std::isfinite(omega)) {
-      double const secant = (omega - prev_omega) / (lambda - prev_lambda);
-      if (secant > 0.0 && secant < HUGE_VAL) domega = secant;
+    if (omega < 0.0) lo = std::max(lo, lambda), w_lo = omega;
+    if (omega > 0.0) hi = std::min(hi, lambda), w_hi = omega;
+    double const near = std::min(lambda, 1.0 - lambda);
+    // The slope: after the first evaluation, the secant through the
+    // previous point (positive and finite, as ω′ is), or none: a stale
+    // slope is not carried over.
+    if (evaluations > 1) {
+      domega = NAN;
+      if (lambda != prev_lambda && std::isfinite(omega)) {
+        double const secant = (omega - prev_omega) / (lambda - prev_lambda);
+        if (secant > 0.0 && secant < HUGE_VAL) {
+          domega = secant;
+          double const width = std::fabs(lambda - prev_lambda);
+          local = width <= finish_local * near ||
+                  width <= 4.0 * std::fabs(omega / secant);
+        }
+      }
     }
     // Newton's step (NaN without a usable slope).
     double const step =
         domega > 0.0 && domega < HUGE_VAL ? omega / domega : NAN;
     double next = lambda - step;
-    if (next > 0.0 && next < 1.0 &&
-        std::fabs(step) <= finish_accept * std::min(lambda, 1.0 - lambda)) {
+    if (local && next > 0.0 && next < 1.0 &&
+        std::fabs(step) <= finish_accept * near) {
       double const gain = model_gain(lambda, a, omega, step);
       if (gain >= 0.0 && gain <= max_model_gain * a.f) {
         out->lambda = next;
@@ -97,16 +124,37 @@ bool finish(Problem const &p, FinishStart const &start,
       // the next slope is a local secant.
       double const d = (omega > 0.0 ? -1.0 : 1.0) * 0x1p-20;
       next = lambda <= 0.5 ? lambda * (1.0 + d) : 1.0 - (1.0 - lambda) * (1.0 - d);
+    } else if (!(next > lo && next < hi) && w_lo < 0.0 && w_hi > 0.0) {
+      // Both ends evaluated: the secant through them (regula falsi), inside
+      // the bracket.
+      next = lo - w_lo * ((hi - lo) / (w_hi - w_lo));
     }
-    if (!(next > lo && next < hi)) {
+    // The bracket's size, log-scale where its ends differ by more than a
+    // factor 4 relative to the nearer end of [0, 1].
+    double const size = hi <= 0.5 && hi > 4.0 * lo   ? std::log2(hi / lo)
+                        : lo >= 0.5 && 1.0 - lo > 4.0 * (1.0 - hi)
+                            ? std::log2((1.0 - lo) / (1.0 - hi))
+                            : (hi - lo) / std::min(lo, 1.0 - hi);
+    double const move = std::fabs(next - lambda);
+    bool const stalled = evaluations > 2 && size < HUGE_VAL &&
+                         !(size <= 0.5 * size_before[0]) &&
+                         !(move <= 0.5 * move_before[0]);
+    size_before[0] = size_before[1];
+    size_before[1] = size;
+    move_before[0] = move_before[1];
+    move_before[1] = move;
+    if (!(next > lo && next < hi) || stalled) {
       // Newton's step leaves the bracket (a start far from the root, with
-      // a slope that rounding made meaningless): a step into the bracket
-      // instead, towards the end of [0, 1] it reaches by 2^−10, 2^−20,
-      // 2^−40, … (a root near an end may be 2^−1000 from it), or to its
-      // geometric middle relative to the nearer end while its ends differ
-      // by more than a factor 4, else to its middle.
+      // a slope that rounding made meaningless), or the bracket does not
+      // shrink: a step into the bracket instead, towards the end of [0, 1]
+      // it reaches by 2^−10, 2^−20, 2^−40, … (a root near an end may be
+      // 2^−1000 from it), or to its geometric middle relative to the
+      // nearer end while its ends differ by more than a factor 4, else to
+      // its middle.
+      // (Not below DBL_MIN: a λ* below it is not found to the accuracy
+      // pw85.h states.)
       if (lo == 0.0) {
-        next = times_pow2(hi, -fall);
+        next = std::max(times_pow2(hi, -fall), DBL_MIN);
       } else if (hi == 1.0) {
         next = 1.0 - times_pow2(1.0 - lo, -fall);
       } else if (hi <= 0.5 && hi > 4.0 * lo) {

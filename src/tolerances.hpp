@@ -78,6 +78,10 @@ constexpr int finish_iter = 40;
 // h ≤ finish_accept both are below the rounding of a double, so the step is
 // taken and the iteration stops.
 constexpr double finish_accept = 1e-7;
+// A secant of the finish is a local slope (one that may end it) where its
+// two points lie within finish_local of each other, relative to the nearer
+// end of [0, 1]: the probe of a start without a slope is 2⁻²⁰ away.
+constexpr double finish_local = 0x1p-19;
 // The quadratic model's gain ½·f′·Δλ is O(h²)·f ≤ 1e-14·f after such a
 // step for a smooth maximum; a gain above max_model_gain·f (or negative)
 // means the model does not hold there (a sharp maximum: end-on needles,

@@ -537,9 +537,11 @@ PW85_API int pw85_principal_axes_quaternion(double const q[PW85_SYM],
  * data/pw85_geometry_pairs.h5 (aspect ratios to 1e6, near tangency, λ
  * within 1e-8 of 0 and 1): relative to the norm of each vector, x − c1 and
  * n within 1.5·u·cond(Q(λ)) (u = 2⁻⁵³, cond the 2-norm condition number
- * of Q(λ) at the maximiser); λ within 1.5·u·cond(Q(λ))·min(λ, 1 − λ), to
- * the rounding of a double near 1. (tests: test-geometry-refs; the tests
- * hold them to 8·u·cond.) λ may differ from pw85_contact_function()'s in
+ * of Q(λ) at the maximiser); λ within 1.5·u·cond(Q(λ))·min(λ, 1 − λ) + u
+ * (the absolute u: λ may be computed as 1 − λ, near 1, where the sphere
+ * model (optimisation.rst, eq. (5.9)) misjudges its side of ½; 1e-13
+ * relative for a λ of 1e-3 on a fuzzing input). (tests:
+ * test-geometry-refs; the tests hold them to 8·u·cond.) λ may differ from pw85_contact_function()'s in
  * the last digits, being more accurate.
  * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
  * μ² (bit for bit), λ → 1 − λ (rounded), n → −n (exactly; a zero may

@@ -97,8 +97,9 @@ void check_geometry(const double r[3], const double q1[6],
       long double const lam_ref = (long double)ref.lambda;
       long double const near =
           std::fmin(lam_ref, (long double)ref.other);
+      // + u absolute: λ may be computed as 1 − λ near 1 (pw85.h).
       CHECK(std::fabs((long double)lambda - lam_ref) <=
-                tol * near + lam_ref * 0x1p-53L,
+                tol * near + lam_ref * 0x1p-53L + 0x1p-53L,
             "lambda %a, reference %La (tol %Lg)", lambda, lam_ref, tol);
       CHECK(rel(g + PW85_GEOM_POINT, qg.point, 0) <= tol + 2 * u,
             "x - c1 off by %Lg (tol %Lg)", rel(g + PW85_GEOM_POINT, qg.point, 0),
