@@ -96,6 +96,18 @@ PAIRS = {
         ["0x1.c6bc67a79783bp+85", "-0x1.673c203559208p+85",
          "-0x1.1301f4fead7fcp+82", "0x1.2283e8c8fb2aap+85",
          "-0x1.58f5602dbe81cp+82", "0x1.707fd7c7b6a8fp+86"]),
+    # fuzz-contact-raw: a flat maximum (ω′ = 5e-6 at λ* = 0.0075, cond(Qᵢ)
+    # near 1e15) where the finish's last secant ran through ω's rounding
+    # noise (14.6): the flatness test missed it, and λ was 3e-8 off.
+    "flat-secant": (
+        ["-0x1.0000100000000p-399", "0x1.747474f180000p+373",
+         "0x1.f474747474747p+124"],
+        ["0x1.7474747474747p+118", "0x1.7474747474747p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474747p+117",
+         "0x0.000000000f8f0p-1022", "0x1.7474747478100p+117"],
+        ["0x1.7474757475700p+117", "0x1.7474747474347p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474747p+117",
+         "0x1.7474747474747p+117", "0x1.7474747d84747p+117"]),
     # fuzz-geometry (a 1502 s campaign, seed 12): forms spanning the range
     # of a double, λ* far below 2^-60 or near 1 with a flat maximum. The
     # compensated finish stopped on a secant through a far point (μ² 3.5

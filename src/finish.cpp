@@ -112,7 +112,11 @@ bool finish(Problem const &p, FinishStart const &start,
       double const gain = model_gain(lambda, a, omega, step);
       if (gain >= 0.0 && gain <= max_model_gain * a.f) {
         out->lambda = next;
-        out->slope = domega;
+        // For the flatness test (contact.cpp, 7b): the smaller of this
+        // slope and the start's plain ω′. A secant through ω's rounding
+        // noise can exceed ω′ by orders of magnitude (14.6 against 5e-6
+        // on a fuzzing input), and hide a flat maximum.
+        out->slope = std::fmin(domega, start.domega);
         // The gain is added to f before f is rounded: it can reach an ulp.
         out->mu2 = std::max(a.f + (a.f_lo + gain), best.f);
         return true;

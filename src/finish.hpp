@@ -25,7 +25,8 @@ struct FinishStart {
 struct Finished {
   double lambda;
   double mu2;    // μ² of the problem
-  double slope;  // ω′ of the accepted Newton step (NaN if none was)
+  double slope;  // the smaller of ω′ of the accepted Newton step and the
+                 // start's plain ω′ (NaN if no step was accepted)
 };
 
 // Compensated Newton steps on ω (slope: start.domega first, then secants),

@@ -150,8 +150,9 @@ static void test_lambda_near_zero(void) {
 
 /* λ of the contact function at maxima flatter still (f″·λ²/μ² = −1.5e-9,
  * cond(Q1) = 9e15; and −5e-9 with cond(Q2) = 9.4e15;
- * fuzz-contact-structured): within the hard set's 6e-10·min(λ*, 1 − λ*)
- * (they were 1.8e-8 and 1.1e-8 off), μ² correctly rounded. */
+ * fuzz-contact-structured; and flat-secant, ω′ = 5e-6 at λ* = 0.0075,
+ * fuzz-contact-raw): within the hard set's 6e-10·min(λ*, 1 − λ*) (they
+ * were 1.8e-8, 1.1e-8 and 3e-8 off), μ² correctly rounded. */
 static void test_flat_lambda(gconstpointer name) {
   Pair const *p = pair(name);
   double out[2];
@@ -210,6 +211,8 @@ int main(int argc, char **argv) {
                        test_flat_lambda);
   g_test_add_data_func("/pw85/regressions/flat-lambda-ill-conditioned",
                        "flat-lambda-ill-conditioned", test_flat_lambda);
+  g_test_add_data_func("/pw85/regressions/flat-secant", "flat-secant",
+                       test_flat_lambda);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
   for (int i = 0; i < n_pairs; i++)
     if (strncmp(pairs[i].name, "finish-", 7) == 0) {
