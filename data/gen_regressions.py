@@ -108,6 +108,20 @@ PAIRS = {
         ["0x1.7474757475700p+117", "0x1.7474747474347p+117",
          "0x1.7474747474747p+117", "0x1.7474747474747p+117",
          "0x1.7474747474747p+117", "0x1.7474747d84747p+117"]),
+    # fuzz-contact-raw: λ* = 8.5e-66 (the lambda-near-zero family,
+    # cond(Q1) = 3.9e15), μ² 0.4996 ulp above a double: the finish met
+    # ω = 0 exactly and kept stepping in place, then returned the λ of
+    # the largest f, 0.9 % off; and the double-double factorisation's
+    # error (κ·2⁻¹⁰⁴, an ulp here) rounded μ² the wrong way.
+    "omega-zero": (
+        ["0x1.0fae96d8aac2cp+243", "0x1.b13afb32bd73ep+241",
+         "0x1.00ebe2d34a2fbp+18"],
+        ["0x1.007f2452c654bp+0", "0x1.1e53dd750701fp-4",
+         "-0x1.510198ef3735fp+21", "0x1.de34a019ca376p+25",
+         "-0x1.09d5af2c28577p+22", "0x1.bea3be3a6f023p+51"],
+        ["0x1.65904c278cb5cp+529", "-0x1.ec8c1164f2800p+527",
+         "0x1.406bb29c404c6p+529", "0x1.408c02a5875cep+530",
+         "0x1.deea291456860p+527", "0x1.778d8efa9f35ep+529"]),
     # fuzz-geometry (a 1502 s campaign, seed 12): forms spanning the range
     # of a double, λ* far below 2^-60 or near 1 with a flat maximum. The
     # compensated finish stopped on a secant through a far point (μ² 3.5

@@ -57,15 +57,85 @@ PW85_INLINE dd ldl_solve_quad_dd(LdlDd const &f, double const r[dim],
   return dd_add(dd_add(dd_mul(z0, y0), dd_mul(z1, y1)), dd_mul(z2, y2));
 }
 
+// Q = hi + lo factorised in double-double; false when a pivot is not > 0.
+PW85_INLINE bool factorise_dd(double const hi[sym], double const lo[sym],
+                              LdlDd *f) noexcept {
+  dd a[sym];
+  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
+  return ldl_decomp_dd(a, f);
+}
+
 // Q(λ) = hi + lo (combine_dd()) factorised in double-double; false when a
 // pivot is not > 0.
 PW85_INLINE bool factorise_q_dd(double lambda, double const q1[sym],
                                 double const q2[sym], LdlDd *f) noexcept {
   double hi[sym], lo[sym];
   combine_dd(lambda, q1, q2, hi, lo);
-  dd a[sym];
-  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
-  return ldl_decomp_dd(a, f);
+  return factorise_dd(hi, lo, f);
+}
+
+// The sum of t[0..n) (overwritten) as hi + lo, as accurate as if computed
+// in three times the working precision (SumK with K = 3: two error-free
+// passes of two_sum along the vector, then the plain sum; Ogita, Rump and
+// Oishi, "Accurate sum and dot product", SIAM J. Sci. Comput. 26, 2005,
+// Algorithm 4.8): error ε·|Σt| + O(n³ε³)·Σ|tᵢ|.
+PW85_INLINE dd sum3(double t[], int n) noexcept {
+  for (int pass = 0; pass < 2; ++pass)
+    for (int i = 1; i < n; ++i) {
+      dd const u = two_sum(t[i], t[i - 1]);
+      t[i] = u.hi;
+      t[i - 1] = u.lo;
+    }
+  double lo = 0.0;
+  for (int i = 0; i < n - 1; ++i) lo += t[i];
+  return two_sum(t[n - 1], lo);
+}
+
+// rᵀQ⁻¹r refined from s = s_hi + s_lo (the double-double solution): with
+// ρ = r − Q·s formed as in three times the working precision (Q(λ) =
+// hi + lo, r + r_lo, every product split exactly by two_prod),
+// rᵀs + sᵀρ = rᵀQ⁻¹r − eᵀQe (e = Q⁻¹r − s): the double-double solution's
+// error κ(Q)·2⁻¹⁰⁴, an ulp of f at κ near 4e15, enters squared. (Found by
+// fuzz-contact-raw: μ² 0.4996 ulp above a double, cond(Q1) = 3.9e15,
+// rounded the wrong way.)
+PW85_INLINE dd refined_quad(double const hi[sym], double const lo[sym],
+                            double const r[dim], double const *r_lo,
+                            double const s[dim],
+                            double const s_lo[dim]) noexcept {
+  double rho[dim];
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    double t[2 + 7 * dim];
+    int n = 0;
+    t[n++] = r[i];
+    if (r_lo != nullptr) t[n++] = r_lo[i];
+    PW85_UNROLL
+    for (int j = 0; j < dim; ++j) {
+      int const k = sym_index(i, j);
+      dd const a = two_prod(hi[k], s[j]);
+      dd const b = two_prod(hi[k], s_lo[j]);
+      dd const c = two_prod(lo[k], s[j]);
+      t[n++] = -a.hi;
+      t[n++] = -a.lo;
+      t[n++] = -b.hi;
+      t[n++] = -b.lo;
+      t[n++] = -c.hi;
+      t[n++] = -c.lo;
+      t[n++] = -(lo[k] * s_lo[j]);
+    }
+    rho[i] = sum3(t, n).hi;
+  }
+  Dot2 acc{0.0, 0.0};
+  double low = 0.0;
+  PW85_UNROLL
+  for (int i = 0; i < dim; ++i) {
+    acc.add_product(r[i], s[i]);
+    acc.add_product(r[i], s_lo[i]);
+    if (r_lo != nullptr) low += r_lo[i] * (s[i] + s_lo[i]);
+    low += (s[i] + s_lo[i]) * rho[i];
+  }
+  acc.err += low;
+  return two_sum(acc.sum, acc.err);
 }
 
 }  // namespace
@@ -78,10 +148,13 @@ bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
   // s = s_hi + s_lo: sᵀQs = s_hiᵀQs_hi + 2·(Q·s_hi)·s_lo to second order
   // in s_lo. (From s rounded to double, Pᵢ would be off by up to
   // ε·√cond(Qᵢ) relative, and λ by as much.)
+  double hi[sym], lo[sym];
+  combine_dd(lambda, q1, q2, hi, lo);
   LdlDd fdd;
-  if (!factorise_q_dd(lambda, q1, q2, &fdd)) return false;
+  if (!factorise_dd(hi, lo, &fdd)) return false;
   double s[dim], s_lo[dim];
-  dd const quad = ldl_solve_quad_dd(fdd, r, r_lo, s, s_lo);
+  ldl_solve_quad_dd(fdd, r, r_lo, s, s_lo);
+  dd const quad = refined_quad(hi, lo, r, r_lo, s, s_lo);
   dd const value = dd_mul(dd_mul(two_sum(1.0, -lambda), lambda), quad);
   out->f = value.hi;
   out->f_lo = value.lo;

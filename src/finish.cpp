@@ -34,13 +34,20 @@ PW85_INLINE double model_gain(double lambda, Compensated const &a,
   return 0.5 * scale * omega * step;
 }
 
-// The largest compensated f seen, and where.
+// What the finish returns when no step ends it: the largest compensated f
+// seen (each a lower bound of μ², to rounding), and the λ where the
+// compensated |ω| was smallest, the estimate of its root (not the λ of
+// that f: on a flat maximum the f differ by their rounding only, and the
+// largest may lie far from the root).
 struct Best {
   double f = 0.0;
   double lambda = 0.0;
+  double abs_omega = HUGE_VAL;
   bool any = false;
-  void see(double f_at, double lambda_at) noexcept {
-    if (!any || f_at >= f) f = f_at, lambda = lambda_at;
+  void see(double f_at, double lambda_at, double omega_at) noexcept {
+    if (!any || f_at > f) f = f_at;
+    if (!any || std::fabs(omega_at) < abs_omega)
+      lambda = lambda_at, abs_omega = std::fabs(omega_at);
     any = true;
   }
 };
@@ -83,8 +90,14 @@ bool finish(Problem const &p, FinishStart const &start,
     if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
                                     plain, &a, start.r_lo))
       break;
-    best.see(a.f, lambda);
     double const omega = omega_of(lambda, a);
+    best.see(a.f, lambda, omega);
+    if (omega == 0.0) {  // the root, to the resolution of doubles
+      out->lambda = lambda;
+      out->slope = std::fmin(domega, start.domega);
+      out->mu2 = std::max(a.f + a.f_lo, best.f);
+      return true;
+    }
     if (omega < 0.0) lo = std::max(lo, lambda), w_lo = omega;
     if (omega > 0.0) hi = std::min(hi, lambda), w_hi = omega;
     double const near = std::min(lambda, 1.0 - lambda);

@@ -150,9 +150,11 @@ static void test_lambda_near_zero(void) {
 
 /* λ of the contact function at maxima flatter still (f″·λ²/μ² = −1.5e-9,
  * cond(Q1) = 9e15; and −5e-9 with cond(Q2) = 9.4e15;
- * fuzz-contact-structured; and flat-secant, ω′ = 5e-6 at λ* = 0.0075,
+ * fuzz-contact-structured; flat-secant, ω′ = 5e-6 at λ* = 0.0075, and
+ * omega-zero, λ* = 8.5e-66 with μ² 0.4996 ulp above a double,
  * fuzz-contact-raw): within the hard set's 6e-10·min(λ*, 1 − λ*) (they
- * were 1.8e-8, 1.1e-8 and 3e-8 off), μ² correctly rounded. */
+ * were 1.8e-8, 1.1e-8, 3e-8 and 9e-3 off), μ² correctly rounded (it was
+ * an ulp off on omega-zero). */
 static void test_flat_lambda(gconstpointer name) {
   Pair const *p = pair(name);
   double out[2];
@@ -212,6 +214,8 @@ int main(int argc, char **argv) {
   g_test_add_data_func("/pw85/regressions/flat-lambda-ill-conditioned",
                        "flat-lambda-ill-conditioned", test_flat_lambda);
   g_test_add_data_func("/pw85/regressions/flat-secant", "flat-secant",
+                       test_flat_lambda);
+  g_test_add_data_func("/pw85/regressions/omega-zero", "omega-zero",
                        test_flat_lambda);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
   for (int i = 0; i < n_pairs; i++)
