@@ -21,9 +21,13 @@ namespace pw85::detail {
 template <bool Fast>
 Status solve(Problem const &p, double out[2], double const *r_lo) noexcept {
   // 3. Warm start (eq. (5.9)); 4. Newton on ω from there.
-  NewtonResult newton =
-      newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter);
+  return solve_after_newton<Fast>(
+      p, newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter), out, r_lo);
+}
 
+template <bool Fast>
+Status solve_after_newton(Problem const &p, NewtonResult newton, double out[2],
+                          double const *r_lo) noexcept {
   // 5. Brent's method certifies the maximum, about Newton's last point if
   // the estimate lies well inside the bracket there (f at that point is
   // then known), else about the estimate.
@@ -87,6 +91,10 @@ Status solve(Problem const &p, double out[2], double const *r_lo) noexcept {
 
 template Status solve<true>(Problem const &, double[2], double const *) noexcept;
 template Status solve<false>(Problem const &, double[2], double const *) noexcept;
+template Status solve_after_newton<true>(Problem const &, NewtonResult,
+                                         double[2], double const *) noexcept;
+template Status solve_after_newton<false>(Problem const &, NewtonResult,
+                                          double[2], double const *) noexcept;
 
 namespace {
 

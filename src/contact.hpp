@@ -4,6 +4,7 @@
 #ifndef PW85_SRC_CONTACT_HPP
 #define PW85_SRC_CONTACT_HPP
 
+#include "newton.hpp"
 #include "problem.hpp"
 #include "status.hpp"
 
@@ -52,6 +53,22 @@ extern template Status solve<true>(Problem const &, double[2],
                                    double const *) noexcept;
 extern template Status solve<false>(Problem const &, double[2],
                                     double const *) noexcept;
+
+// Steps 5 to 7, after step 4's Newton from the warm start (newton: its
+// result, as newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter)
+// returns it, or stopped earlier by a visitor): solve() is step 4, then
+// this. The overlap test runs step 4 itself with its filters as the
+// visitor, and continues here when they do not decide.
+template <bool Fast>
+Status solve_after_newton(Problem const &p, NewtonResult newton,
+                          double out[2], double const *r_lo) noexcept;
+
+extern template Status solve_after_newton<true>(Problem const &, NewtonResult,
+                                                double[2],
+                                                double const *) noexcept;
+extern template Status solve_after_newton<false>(Problem const &, NewtonResult,
+                                                 double[2],
+                                                 double const *) noexcept;
 
 }  // namespace pw85::detail
 

@@ -142,13 +142,24 @@ struct PlainBounds {
   double cond;    // κ̄(Q(λ)) = tr(Q)·tr(Q⁻¹) ≥ cond(Q(λ))
 };
 
-// Returns false when κ̄ is not finite.
-PW85_INLINE bool plain_bounds(PlainPoint const &pt, PlainBounds *b) noexcept {
+// μ1² and μ2² of *b.
+PW85_INLINE void plain_mu_sq(PlainPoint const &pt, PlainBounds *b) noexcept {
   double const lambda = pt.lambda, mu = 1.0 - lambda;
   b->mu1_sq = mu * mu * pt.p1;
   b->mu2_sq = lambda * lambda * pt.p2;
+}
+
+// κ̄ of *b (its margins' only cost, a trace of Q⁻¹ from the factors);
+// returns false when it is not finite.
+PW85_INLINE bool plain_cond(PlainPoint const &pt, PlainBounds *b) noexcept {
   b->cond = pt.trace_q * ldl_trace_inverse(pt.sol.fac);
   return std::isfinite(b->cond);
+}
+
+// All of *b; returns false when κ̄ is not finite.
+PW85_INLINE bool plain_bounds(PlainPoint const &pt, PlainBounds *b) noexcept {
+  plain_mu_sq(pt, b);
+  return plain_cond(pt, b);
 }
 
 }  // namespace pw85::detail

@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "evaluate.hpp"
 #include "ldl.hpp"
 #include "problem.hpp"
 #include "tolerances.hpp"
+#include "warm_start.hpp"
 #include "warm_start.hpp"
 
 namespace pw85::detail {
@@ -61,6 +63,7 @@ enum class NewtonStop {
   no_double_left,  // no double strictly inside the bracket
   step_limit,      // the allowed number of steps was taken
   not_evaluable,   // Q(λ) failed to factorise, or a term was not finite
+  visitor,         // the visitor stopped it
 };
 
 // The last point where ω was evaluated, with what the later stages reuse.
@@ -89,15 +92,78 @@ struct NewtonResult {
   }
 };
 
-// At most max_steps safeguarded Newton steps on ω from λ (eqs. (5.6)–(5.8)).
-template <bool Fast>
-NewtonResult newton_on_omega(Problem const &p, double lambda,
-                             int max_steps) noexcept;
+// Visits nothing (newton_on_omega()'s default).
+struct NoVisit {
+  bool operator()(PlainPoint const &, double) const noexcept { return false; }
+};
 
-extern template NewtonResult newton_on_omega<true>(Problem const &, double,
-                                                   int) noexcept;
-extern template NewtonResult newton_on_omega<false>(Problem const &, double,
-                                                    int) noexcept;
+// At most max_steps safeguarded Newton steps on ω from λ (eqs. (5.6)–(5.8)).
+// visit(pt, h) is called at every point evaluated, with h the relative
+// size of the step that led there (+∞ at the first): true stops the
+// iteration there (NewtonStop::visitor; the overlap test's filters, which
+// decide on the way). Without a visitor, the search's Newton.
+template <bool Fast, class Visit = NoVisit>
+NewtonResult newton_on_omega(Problem const &p, double lambda, int max_steps,
+                             Visit &&visit = Visit{}) noexcept {
+  // last.sol is left unset until a point is evaluated: it is read only
+  // after convergence (last_within()), never when the first point stops
+  // the iteration (not evaluable, or a visitor: the overlap test's common
+  // path, where setting it cost 22 instructions a call).
+  NewtonResult out;
+  out.lambda = lambda;
+  out.last.lambda = lambda;
+  out.last.f = 0.0;
+  out.last.domega = 0.0;
+  out.stop = NewtonStop::step_limit;
+  EndStepsTried tried;
+  auto const end_step = [&p](bool from_zero) {
+    return step_from_end(p, from_zero);
+  };
+  double h = HUGE_VAL;  // the relative size of the step to λ
+  for (int k = 0; k < max_steps; ++k) {
+    PlainPoint pt;
+    NewtonStep step;
+    if (!evaluate_plain<Fast>(lambda, p, &pt)) {
+      out.stop = NewtonStop::not_evaluable;
+      return out;
+    }
+    if (visit(pt, h)) {
+      out.stop = NewtonStop::visitor;
+      return out;
+    }
+    if (!newton_step(pt, &step)) {
+      out.stop = NewtonStop::not_evaluable;
+      return out;
+    }
+    out.last = LastPoint{lambda, pt.f, step.domega, pt.sol};
+    if (pt.omega == 0.0) {
+      out.stop = NewtonStop::root;
+      return out;
+    }
+    if (std::fabs(step.next - lambda) <=
+        newton_accept * std::min(lambda, 1.0 - lambda)) {
+      // Newton's convergence is quadratic: after a step this small, λ is
+      // within ~1e-10 relative, about the rounding noise of the plain ω,
+      // whose further steps (and the signs that set the bracket) would
+      // only jitter. The compensated finish takes over.
+      if (step.next > 0.0 && step.next < 1.0) out.lambda = step.next;
+      out.stop = NewtonStop::small_step;
+      return out;
+    }
+    double const next = safeguard(lambda, pt.omega, step.next, pt.rho,
+                                  &out.bracket, &tried, end_step);
+    if (std::isnan(next)) {
+      // λ, an end of the bracket inside (0, 1), is as close to the root as
+      // doubles allow.
+      out.stop = NewtonStop::no_double_left;
+      return out;
+    }
+    h = std::fabs(next - lambda) / std::min(lambda, 1.0 - lambda);
+    lambda = next;
+    out.lambda = lambda;
+  }
+  return out;
+}
 
 }  // namespace pw85::detail
 

@@ -6,12 +6,15 @@
 #include "overlap.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
+#include "compensated.hpp"
 #include "compiler.hpp"
 #include "contact.hpp"
 #include "evaluate.hpp"
 #include "ldl.hpp"
+#include "newton.hpp"
 #include "problem.hpp"
 #include "tolerances.hpp"
 #include "warm_start.hpp"
@@ -69,35 +72,81 @@ Decision bounds_filter(PlainPoint const &pt, PlainBounds const &b,
   return Decision::undecided;
 }
 
-// Filter 3 at the warm start (eq. (5.9)), then (rarely needed) one Newton
-// step on ω further.
-template <bool Fast>
-Decision bounds_filters(Filtering const &s) noexcept {
-  double lambda = warm_start(s.a1, s.a2);
-  for (int k = 0; k < 2; ++k) {
-    PlainPoint pt;
-    PlainBounds b;
-    if (!evaluate_plain<Fast>(lambda, s.p, &pt) || !plain_bounds(pt, &b))
-      break;
-    Decision const d = bounds_filter(pt, b, s);
-    if (d != Decision::undecided) return d;
-    NewtonStep step;
-    if (k == 1 || !newton_step(pt, &step)) break;
-    double next = step.next;
-    if (!(next > 0.0 && next < 1.0)) next = 1.0 / (1.0 + pt.rho);
-    if (!(next > 0.0 && next < 1.0)) break;
-    lambda = next;
+// Filter 4, near λ* (after a small Newton step), with bounds that hold for
+// any vector ŝ (here the plain s = Q(λ)⁻¹r) and need no condition number,
+// only the residual ρ = r − Q(λ)·ŝ computed as in twice the working
+// precision (compensated.hpp):
+//   lower: rᵀQ⁻¹r = max_y (2yᵀr − yᵀQy) ≥ 2ŝᵀr − ŝᵀQŝ = ŝᵀr + ŝᵀρ, so
+//          μ² ≥ f(λ) ≥ λ(1 − λ)·(ŝᵀr + ŝᵀρ);
+//   upper: x = c1 + (1 − λ)·Q1ŝ lies in ellipsoid 1 scaled by μ1 and in
+//          ellipsoid 2 scaled by μ2 with μ1² = (1 − λ)²·ŝᵀQ1ŝ and, as
+//          x − c2 = −(λQ2ŝ + ρ), μ2² = λ²·ŝᵀQ2ŝ + 2λ·ŝᵀρ + ρᵀQ2⁻¹ρ, so
+//          μ² ≤ max(μ1², μ2²) (the bound of filter 3 at the exact point
+//          of the computed ŝ), with ρᵀQ2⁻¹ρ ≤ ‖ρ‖²·tr(Q2⁻¹).
+// Their rounding is a few ε relative plus terms of order 2⁻¹⁰⁰ of
+// ‖ŝ‖₁·(|r| + tr Q·‖ŝ‖₁) (Q(λ) as hi + lo, the residual's and Dot2's
+// second-order errors; |Qᵢⱼ| ≤ tr Q for a definite Q), bounded with
+// margin below. The lower bound is f, second order in λ − λ*; the upper
+// one first order: after a Newton step of relative size h ≤
+// overlap_accurate_step, both lie within O(h²) of μ², and decide
+// |μ² − 1| down to a few ulps. Outside [1 − 5ε, 1 + 5ε] only: the
+// tangency band (tolerances.hpp) is the exact stage's.
+PW85_FMA_CLONES
+Decision accurate_filter(PlainPoint const &pt, Filtering const &s) noexcept {
+  constexpr double eps = DBL_EPSILON;  // 2u
+  constexpr double tiny = 0x1p-98;
+  Problem const &p = s.p;
+  double const lambda = pt.lambda;
+  double const *const sv = pt.sol.s;
+  double hi[sym], lo[sym], res[dim];
+  combine_dd(lambda, p.q1, p.q2, hi, lo);
+  compensated_residual(hi, lo, p.r, sv, res);
+  double s1 = 0.0, r_max = 0.0, abs_sr = 0.0, res2 = 0.0;
+  for (int i = 0; i < dim; ++i) {
+    if (s.r_lo != nullptr) res[i] += s.r_lo[i];
+    s1 += std::fabs(sv[i]);
+    r_max = std::max(r_max, std::fabs(p.r[i]));
+    abs_sr += std::fabs(sv[i] * res[i]);
+    res2 += res[i] * res[i];
   }
+  // ŝᵀr (+ ŝᵀr_lo) + ŝᵀρ, and the bound of its error beyond a few ε
+  // relative: the rounding of ŝᵀρ and of ρ (ε·|ρ|), ρ's second-order part
+  // and Q(λ)'s representation error (e_sq).
+  double const sr = dot(sv, res);
+  double low = sr, abs_low = abs_sr;
+  if (s.r_lo != nullptr) {
+    low += dot(s.r_lo, sv);
+    for (int i = 0; i < dim; ++i) abs_low += std::fabs(s.r_lo[i] * sv[i]);
+  }
+  double const e_sq = tiny * s1 * (r_max + pt.trace_q * s1);
+  double const rs = dd_add(dot_dd(p.r, sv), low).hi;
+  double const rs_err = 4.0 * eps * abs_low + e_sq;
+  dd const mu = two_sum(1.0, -lambda);  // 1 − λ = mu.hi + mu.lo, exactly
+  double const margin = 8.0 * eps;
+  double const lower = lambda * mu.hi * (rs - rs_err) * (1.0 - margin);
+  if (lower > s.one * (1.0 + 5.0 * eps)) return Decision::disjoint;
+  // Pᵢ = ŝᵀQᵢŝ as Dot2 sums: error ε·Pᵢ + tiny·tr Qᵢ·‖ŝ‖₁².
+  double const p1 =
+      quad_form_acc(p.q1, sv).value() + tiny * trace(p.q1) * s1 * s1;
+  double const p2 =
+      quad_form_acc(p.q2, sv).value() + tiny * trace(p.q2) * s1 * s1;
+  double const mu1_sq = mu.hi * mu.hi * p1 * (1.0 + margin);
+  double const cross = 2.0 * lambda * (sr + 4.0 * eps * abs_sr + e_sq);
+  double const mu2_sq =
+      (lambda * lambda * p2 + cross + 2.0 * p.tinv2 * res2) * (1.0 + margin);
+  if (std::max(mu1_sq, mu2_sq) < s.one * (1.0 - 5.0 * eps))
+    return Decision::overlap;
   return Decision::undecided;
 }
 
-// The last stage: the exact contact function, for nearly tangent pairs or
-// pairs too ill-conditioned for the plain bounds.
+// The last stage: the exact contact function (steps 5 to 7 after Newton's
+// result), for nearly tangent pairs or pairs too ill-conditioned for the
+// bounds.
 template <bool Fast>
-Status exact_decision(Problem const &p, double const *r_lo,
-                      Decision *d) noexcept {
+Status exact_decision(Problem const &p, NewtonResult const &newton,
+                      double const *r_lo, Decision *d) noexcept {
   double res[2];
-  Status const status = solve<Fast>(p, res, r_lo);
+  Status const status = solve_after_newton<Fast>(p, newton, res, r_lo);
   if (status != Status::success) return status;
   double const mu2 = std::ldexp(res[0], p.shift);
   *d = std::fabs(mu2 - 1.0) <= tangency
@@ -106,11 +155,64 @@ Status exact_decision(Problem const &p, double const *r_lo,
   return Status::success;
 }
 
+// Filters 3 and 4 at one plain point, reached by a step of relative size
+// h. Where the plain bounds would decide without their margins, filter 3
+// (its margins need κ̄(Q(λ)), a trace of Q⁻¹ from the factors), then, if
+// the margins are too wide (an ill-conditioned Q(λ) or Qᵢ), filter 4,
+// whose bounds are those of filter 3 to a few ulps. Elsewhere filter 4
+// only near λ* (h ≤ overlap_accurate_step), where the plain bounds are
+// within their rounding of 1.
+PW85_INLINE Decision point_filters(PlainPoint const &pt, double h,
+                                   Filtering const &s) noexcept {
+  PlainBounds b;
+  plain_mu_sq(pt, &b);
+  if (pt.f > s.one || std::max(b.mu1_sq, b.mu2_sq) < s.one) {
+    Decision const d = plain_cond(pt, &b) ? bounds_filter(pt, b, s)
+                                          : Decision::undecided;
+    return d != Decision::undecided ? d : accurate_filter(pt, s);
+  }
+  return h <= overlap_accurate_step ? accurate_filter(pt, s)
+                                    : Decision::undecided;
+}
+
+// The search's own Newton on ω from the warm start (step 4,
+// newton_on_omega()), with filters 3 and 4 at each of its points: the
+// bounds hold at every λ, so each point is certified as the first; the
+// intervals shrink onto μ² as λ → λ*, and the test decides as soon as one
+// excludes 1, near contact after a few steps, without the search's
+// certification and finish. Where Newton stops on a small step, up to
+// overlap_extra_steps more Newton points, where the accurate bounds are
+// tightest. Else the exact stage, continuing from Newton's result: its μ²
+// is the contact function's, bit for bit.
 template <bool Fast>
 Status decide(Filtering const &s, Decision *d) noexcept {
-  *d = bounds_filters<Fast>(s);
+  Problem const &p = s.p;
+  *d = Decision::undecided;
+  auto const visit = [&s, d](PlainPoint const &pt, double h) {
+    *d = point_filters(pt, h, s);
+    return *d != Decision::undecided;
+  };
+  NewtonResult const newton =
+      newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter, visit);
   if (*d != Decision::undecided) return Status::success;
-  return exact_decision<Fast>(s.p, s.r_lo, d);
+  if (newton.stop == NewtonStop::small_step) {
+    double lambda = newton.lambda;
+    double h = std::fabs(lambda - newton.last.lambda) /
+               std::min(newton.last.lambda, 1.0 - newton.last.lambda);
+    for (int k = 0; k < overlap_extra_steps; ++k) {
+      PlainPoint pt;
+      NewtonStep step;
+      if (!evaluate_plain<Fast>(lambda, p, &pt)) break;
+      *d = point_filters(pt, h, s);
+      if (*d != Decision::undecided) return Status::success;
+      if (!newton_step(pt, &step) || !(step.next > 0.0 && step.next < 1.0) ||
+          step.next == lambda)
+        break;
+      h = std::fabs(step.next - lambda) / std::min(lambda, 1.0 - lambda);
+      lambda = step.next;
+    }
+  }
+  return exact_decision<Fast>(p, newton, s.r_lo, d);
 }
 
 // overlap() of r + r_lo (r_lo: nullptr for 0).

@@ -32,6 +32,13 @@ constexpr double plain_form_margin = 32.0 * DBL_EPSILON;
 // A margin is used only while it is below margin_limit: beyond, the plain
 // bounds are not trusted at all and the exact μ² decides.
 constexpr double margin_limit = 0.5;
+// pw85_overlap applies the accurate bounds (overlap.cpp, filter 4) at a
+// point reached by a Newton step of at most this relative size h: λ is
+// then within O(h²) of λ*, and so are the bounds of μ².
+constexpr double overlap_accurate_step = 1e-5;
+// Where the search's Newton stops on a small step, pw85_overlap takes at
+// most this many more Newton points before its exact stage.
+constexpr int overlap_extra_steps = 2;
 // pw85_overlap reports tangency (0) within 4 ulps of 1.
 constexpr double tangency = 4.0 * DBL_EPSILON;
 

@@ -331,10 +331,12 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  *        computing μ².
  *
  * Decides the sign of μ² − 1 from bounds that hold at every λ,
- * f(λ) ≤ μ² ≤ max(μ1²(λ), μ2²(λ)), evaluated in double arithmetic with
- * rounding margins derived from the condition number of Q(λ); only nearly
- * tangent pairs fall back to the exact μ² of pw85_contact_function(), so
- * the answer never contradicts it.
+ * f(λ) ≤ μ² ≤ max(μ1²(λ), μ2²(λ)), evaluated with certified rounding
+ * margins at each of Newton's iterates towards λ* (the interval shrinks
+ * onto μ²; near λ* with a compensated residual, deciding |μ² − 1| down to
+ * a few ulps); only pairs within a few ulps of tangency (or beyond the
+ * bounds' reach) fall back to the exact μ² of pw85_contact_function(),
+ * so the answer never contradicts it.
  * @param[in] r12 the centre-to-centre vector c2 − c1.
  * @param[in] q1 the quadratic form of the first ellipsoid.
  * @param[in] q2 the quadratic form of the second ellipsoid.
