@@ -43,6 +43,8 @@ namespace {
 // region: on a loaded machine, a few milliseconds to gather the threads).
 constexpr std::size_t bulk_chunk = 1024;
 constexpr std::size_t bulk_per_thread = 4096;
+// Items prefetched ahead of the one being handled (passes 3, 6, 7).
+constexpr std::size_t prefetch_ahead = 8;
 
 // The range of exponents of frexp() on a positive finite double.
 constexpr int min_exponent = -1073, max_exponent = 1024;
@@ -101,11 +103,14 @@ class TouchedMap {
   std::size_t size() const noexcept { return slots_.size(); }
   Touched &operator[](std::size_t i) noexcept { return slots_[i]; }
 
+  void prefetch(std::uint64_t key) const noexcept {
+    PW85_PREFETCH(slots_.data() + (hash(key) & (slots_.size() - 1)));
+  }
   // Adds item i to the cell of that key (safe on several threads at once);
   // returns the cell's slot.
   std::uint32_t add(std::uint64_t key, std::uint32_t i) noexcept {
     std::size_t const mask = slots_.size() - 1;
-    std::size_t s = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+    std::size_t s = hash(key) & mask;
     for (;; s = (s + 1) & mask) {
       std::uint64_t k = __atomic_load_n(&slots_[s].key, __ATOMIC_RELAXED);
       if (k == empty) {
@@ -125,6 +130,10 @@ class TouchedMap {
   }
 
  private:
+  // Fibonacci hashing, as CellMap's.
+  static std::size_t hash(std::uint64_t key) noexcept {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20);
+  }
   Buffer<Touched> slots_;
 };
 
@@ -278,12 +287,18 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   }
   for_each_chunk(nt, chunks, [&](std::size_t k) {
     auto const [i0, i1] = items_of(k, n);
+    std::uint64_t keys[bulk_chunk];  // the chunk's keys, then their slots prefetched
     for (std::size_t i = i0; i < i1; ++i) {
       std::int32_t w[dim];
       std::uint64_t u[dim];
       wraps(c + dim * i, w);
       cell_coords(levels_[std::size_t(place[i])], c + dim * i, w, u);
-      slot_of[i] = maps[std::size_t(place[i])].add(Level::pack(u), std::uint32_t(i));
+      keys[i - i0] = Level::pack(u);
+    }
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (i + prefetch_ahead < i1)
+        maps[std::size_t(place[i + prefetch_ahead])].prefetch(keys[i + prefetch_ahead - i0]);
+      slot_of[i] = maps[std::size_t(place[i])].add(keys[i - i0], std::uint32_t(i));
     }
   });
 
@@ -425,6 +440,8 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   for_each_chunk(nt, chunks, [&](std::size_t k) {
     auto const [i0, i1] = items_of(k, n);
     for (std::size_t i = i0; i < i1; ++i) {
+      if (i + prefetch_ahead < i1)
+        PW85_PREFETCH(&maps[std::size_t(place[i + prefetch_ahead])][slot_of[i + prefetch_ahead]]);
       Touched &t = maps[std::size_t(place[i])][slot_of[i]];
       by_cell[t.start + __atomic_fetch_add(&t.first, 1u, __ATOMIC_RELAXED)] =
           std::uint32_t(i);
@@ -450,6 +467,14 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
         Cell &cell = lv.cells[t.cell];
         for (std::uint32_t r = 0; r < t.count; ++r) {
           std::size_t const i = run[r];
+          // The inputs of an item some way ahead in the list (the same
+          // items, sorted per run or not yet): items in cell order are
+          // scattered in the input arrays, each read a cache miss.
+          std::size_t const ahead = by_cell[std::min<std::size_t>(t.start + r + prefetch_ahead, n - 1)];
+          PW85_PREFETCH(c + dim * ahead);
+          PW85_PREFETCH(q + sym * ahead);
+          PW85_PREFETCH(q + sym * ahead + sym - 1);
+          PW85_PREFETCH(ids + ahead);
           Entry e;
           make_entry(ids[i], c + dim * i, q + sym * i, &e);
           for (int a = 0; a < dim; ++a) {
