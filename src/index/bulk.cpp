@@ -318,8 +318,11 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
       }
     });
   }
-  Buffer<std::size_t> rank;  // per chunk and level: the chunk's first rank
-  if (!rank.resize(chunks * nlevels)) {
+  // Per chunk and level: the chunk's first rank, in rows of whole cache
+  // lines (each row is written by the thread that runs its chunk).
+  std::size_t const row = (nlevels + 7) & ~std::size_t(7);
+  Buffer<std::size_t> rank;
+  if (!rank.resize(chunks * row)) {
     clear_marks();
     return Status::no_memory;
   }
@@ -330,7 +333,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   for_each_chunk(nt, chunks, [&](std::size_t k) {
     auto const [i0, i1] = items_of(k, n);
     for (std::size_t i = i0; i < i1; ++i)
-      if (is_new_founder(i)) ++rank[k * nlevels + std::size_t(place[i])];
+      if (is_new_founder(i)) ++rank[k * row + std::size_t(place[i])];
   });
   Buffer<std::size_t> new_cells;  // per level
   if (!new_cells.resize(nlevels)) {
@@ -340,8 +343,8 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   for (std::size_t l = 0; l < nlevels; ++l) {
     std::size_t at = levels_[l].cells.size();
     for (std::size_t k = 0; k < chunks; ++k) {
-      std::size_t const count = rank[k * nlevels + l];
-      rank[k * nlevels + l] = at;
+      std::size_t const count = rank[k * row + l];
+      rank[k * row + l] = at;
       at += count;
     }
     new_cells[l] = at - levels_[l].cells.size();
@@ -364,7 +367,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     for (std::size_t i = i0; i < i1; ++i) {
       if (!is_new_founder(i)) continue;
       std::size_t const l = std::size_t(place[i]);
-      std::size_t const p = rank[k * nlevels + l]++;
+      std::size_t const p = rank[k * row + l]++;
       Touched &t = maps[l][slot_of[i]];
       new_keys[l][p - levels_[l].cells.size()] = t.key;
       t.cell = std::uint32_t(p);  // read by is_new_founder() of this item only
@@ -457,8 +460,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     std::size_t const mchunks_l = (map.size() + bulk_chunk - 1) / bulk_chunk;
     for_each_chunk(nt, mchunks_l, [&](std::size_t k) {
       auto const [s0, s1] = items_of(k, map.size());
-      double *b = bounds.data() + 4 * k;
-      b[0] = b[1] = b[2] = b[3] = 0.0;
+      double b[4] = {0.0, 0.0, 0.0, 0.0};
       for (std::size_t s = s0; s < s1; ++s) {
         Touched const &t = map[s];
         if (t.key == TouchedMap::empty) continue;
@@ -486,6 +488,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
                                 static_cast<std::uint32_t>(cell.size() - 1)};
         }
       }
+      for (int a = 0; a < 4; ++a) bounds[4 * k + a] = b[a];
     });
     for (std::size_t k = 0; k < mchunks_l; ++k) {
       for (int a = 0; a < dim; ++a) lv.hmax[a] = std::max(lv.hmax[a], bounds[4 * k + a]);
