@@ -199,8 +199,10 @@ PW85_API int pw85_index_insert_many(pw85_index *index, size_t n,
  * insertion, bit for bit. At most n/4096 + 1 threads are started (none
  * for threads = 1). For n ≥ 1024 the ellipsoids are placed in passes over
  * the whole call (pw85_index_insert_many() takes the same path, on the
- * calling thread), which allocate, for the time of the call, about 16
- * bytes per ellipsoid and 48 per cell of the grid that they occupy.
+ * calling thread), which allocate, for the time of the call, 12 bytes per
+ * ellipsoid and a hash table of 48 to 96 bytes per cell that the
+ * ellipsoids of a level may occupy (as many as they are, or, in a
+ * periodic box, as the cells of the level's grid if fewer).
  * @param[in,out] index the index.
  * @param[in] n the number of ellipsoids (0 does nothing).
  * @param[in] ids their ids (n values, distinct, not in use).
