@@ -182,7 +182,8 @@ PW85_API int pw85_index_insert(pw85_index *index, size_t id,
  * @param[in] centres their centres (3·n doubles).
  * @param[in] q their quadratic forms (6·n doubles).
  * @return the statuses of pw85_index_insert() (the first error met, in the
- *         order of the arrays); the index is unchanged on error.
+ *         order of the arrays; for n ≥ 1024, PW85_ENOMEM only when every
+ *         ellipsoid is valid); the index is unchanged on error.
  * @since 2.2.0
  */
 PW85_API int pw85_index_insert_many(pw85_index *index, size_t n,
