@@ -100,6 +100,16 @@ int pw85_index_insert_many(pw85_index *index, size_t n, size_t const *ids,
   return to_code(index->index.insert_many(n, ids, centres, q));
 }
 
+int pw85_index_insert_many_threads(pw85_index *index, size_t n,
+                                   size_t const *ids, double const *centres,
+                                   double const *q, int threads) noexcept {
+  if (index == nullptr ||
+      (n > 0 && (ids == nullptr || centres == nullptr || q == nullptr)))
+    return PW85_EFAULT;
+  if (threads < 1) return PW85_EINVAL;
+  return to_code(index->index.insert_many(n, ids, centres, q, threads));
+}
+
 int pw85_index_update(pw85_index *index, size_t id,
                       double const centre[PW85_DIM],
                       double const q[PW85_SYM]) noexcept {

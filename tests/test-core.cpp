@@ -2,13 +2,16 @@
 // Kernels of the core that the public API does not expose on their own,
 // tested through the core's static library: the factorisations of Q(λ),
 // the bracket given to GSL's Brent minimiser, and the spatial index's
-// inscribed radius.
+// inscribed radius and bulk insertion.
 #include <glib.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
+#include <utility>
+#include <vector>
 
 #include "brent_certify.hpp"
 #include "index/deep.hpp"
@@ -216,6 +219,106 @@ void test_inscribed_radius() {
   g_rand_free(rng);
 }
 
+
+// The whole state of two indexes, field by field: levels (in order), their
+// cells (in order) and entries (in order, every field), the slots of the
+// ids below cap, the counts and the coordinate bound. Capacities are not
+// state.
+bool same_state(pw85::detail::Index const &a, pw85::detail::Index const &b,
+                std::size_t cap) {
+  using namespace pw85::detail;
+  if (a.count() != b.count() || a.coordinate_bound() != b.coordinate_bound() ||
+      a.levels().size() != b.levels().size())
+    return false;
+  for (std::size_t l = 0; l < a.levels().size(); ++l) {
+    Level const &x = a.levels()[l], &y = b.levels()[l];
+    if (x.exponent != y.exponent || x.count != y.count ||
+        x.cells.size() != y.cells.size() || x.dense.size() != y.dense.size())
+      return false;
+    for (int k = 0; k < dim; ++k)
+      if (x.hmax[k] != y.hmax[k] || x.side[k] != y.side[k]) return false;
+    for (std::size_t d = 0; d < x.dense.size(); ++d)
+      if (x.dense[d] != y.dense[d]) return false;
+    for (std::size_t ci = 0; ci < x.cells.size(); ++ci) {
+      Cell const &u = x.cells[ci], &v = y.cells[ci];
+      if (u.size() != v.size()) return false;
+      for (std::size_t e = 0; e < u.size(); ++e) {
+        Entry const &p = u[e], &q = v[e];
+        if (p.id != q.id || std::memcmp(p.wrap, q.wrap, sizeof p.wrap) != 0 ||
+            std::memcmp(p.c, q.c, sizeof p.c) != 0 ||
+            std::memcmp(p.h, q.h, sizeof p.h) != 0 ||
+            std::memcmp(p.q, q.q, sizeof p.q) != 0 ||
+            std::memcmp(&p.rho, &q.rho, sizeof p.rho) != 0)
+          return false;
+      }
+    }
+  }
+  for (std::size_t id = 0; id < cap; ++id) {
+    Slot const s = a.slot(id), t = b.slot(id);
+    if (s.level != t.level || s.cell != t.cell || s.index != t.index) return false;
+  }
+  return true;
+}
+
+// Index::insert_many() on 1, 2 and 8 threads (the bulk path, index.hpp:
+// bulk_min) leaves the state that the loop of insert() leaves, field by
+// field, into an empty index and into one that holds some already
+// (periodic, several levels; open); a call that fails leaves the state as
+// it was, the free slots of the id table included (the bulk path marks
+// them for its test of repeated ids).
+void test_bulk_insert() {
+  using namespace pw85::detail;
+  GRand *rng = g_rand_new_with_seed(26);
+  std::size_t const n = 9000, first = 2000;
+  std::vector<std::size_t> ids(n);
+  std::vector<double> c(3 * n), q(6 * n);
+  for (std::size_t i = 0; i < n; ++i) ids[i] = i;
+  for (std::size_t i = n - 1; i > 0; --i)
+    std::swap(ids[i], ids[std::size_t(g_rand_int_range(rng, 0, gint32(i + 1)))]);
+  double const side = 30.;
+  for (std::size_t i = 0; i < n; ++i) {
+    double const s = std::pow(10., g_rand_double(rng) * 0.8);  // 3 levels or more
+    double const e[3] = {s * s * .04, s * s * .25, s * s};
+    random_form_with_eigenvalues(rng, e, &q[6 * i]);
+    for (int k = 0; k < 3; ++k) c[3 * i + k] = g_rand_double_range(rng, -side, 2 * side);
+  }
+  double const box[3] = {side, side * 1.25, side * .75};
+  for (double const *b : {box, static_cast<double const *>(nullptr)}) {
+    Index ref(b);
+    for (std::size_t i = 0; i < n; ++i)
+      g_assert_true(ref.insert(ids[i], &c[3 * i], &q[6 * i]) == Status::success);
+    g_assert_cmpuint(ref.levels().size(), >=, 3);
+    for (int threads : {1, 2, 8}) {
+      for (std::size_t start : {std::size_t(0), first}) {
+        Index ix(b);
+        for (std::size_t i = 0; i < start; ++i)
+          g_assert_true(ix.insert(ids[i], &c[3 * i], &q[6 * i]) == Status::success);
+        // a failing call first: a repeated id near the end
+        std::vector<std::size_t> bad(ids.begin() + long(start), ids.end());
+        bad[bad.size() - 3] = bad[5];
+        Index before(b);
+        for (std::size_t i = 0; i < start; ++i)
+          g_assert_true(before.insert(ids[i], &c[3 * i], &q[6 * i]) == Status::success);
+        g_assert_true(ix.insert_many(n - start, bad.data(), &c[3 * start], &q[6 * start],
+                                     threads) == Status::invalid_argument);
+        if (!same_state(before, ix, n)) {
+          g_test_message("threads %d, start %zu: a failed call changed the index",
+                         threads, start);
+          g_test_fail();
+        }
+        g_assert_true(ix.insert_many(n - start, &ids[start], &c[3 * start], &q[6 * start],
+                                     threads) == Status::success);
+        if (!same_state(ref, ix, n)) {
+          g_test_message("threads %d, start %zu: not the state of insert()",
+                         threads, start);
+          g_test_fail();
+        }
+      }
+    }
+  }
+  g_rand_free(rng);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -224,5 +327,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/core/ldl/backward-error", test_ldl_backward_error);
   g_test_add_func("/pw85/core/golden-bracket", test_golden_bracket);
   g_test_add_func("/pw85/core/index/inscribed-radius", test_inscribed_radius);
+  g_test_add_func("/pw85/core/index/bulk-insert", test_bulk_insert);
   return g_test_run();
 }

@@ -229,6 +229,22 @@ void twin_configuration(bool periodic) {
                                          centres.data(), forms.data()),
                   ==, PW85_SUCCESS);
   same_answers(ix, c, rng, n + 5);
+  {  // insert_many() on threads (pw85_index_insert_many_threads()): the same
+    pw85::Index t;
+    g_assert_cmpint(
+        periodic ? pw85::Index::periodic(box, t) : pw85::Index::open(t), ==,
+        PW85_SUCCESS);
+    for (std::size_t id = 1; id < n; id += 2) {
+      double cc[3], qq[6];
+      g_assert_cmpint(pw85_index_get(c, id, cc, qq), ==, PW85_SUCCESS);
+      g_assert_cmpint(t.insert(id, cc, qq), ==, PW85_SUCCESS);
+    }
+    g_assert_cmpint(t.insert_many(ids.size(), ids.data(), centres.data(),
+                                  forms.data(), 0), ==, PW85_EINVAL);
+    g_assert_cmpint(t.insert_many(ids.size(), ids.data(), centres.data(),
+                                  forms.data(), 2), ==, PW85_SUCCESS);
+    same_answers(t, c, rng, n + 5);
+  }
   // Overlaps there are, else the comparisons of the pairs prove little.
   Overlaps overlaps;
   g_assert_cmpint(ix.overlapping_pairs(1, overlaps), ==, PW85_SUCCESS);

@@ -5,8 +5,9 @@
  * polydisperse, needles, discs, dense and dilute, centres straddling the
  * faces and corners of the box or outside it, boxes small enough for
  * several images), after random sequences of insert, update and remove;
- * the all-pairs queries on 1, 2 and 8 threads, bit for bit; every bad
- * input. PW85_TEST_SMALL (set for the sanitizer and valgrind runs) makes
+ * the all-pairs queries on 1, 2 and 8 threads, bit for bit;
+ * pw85_index_insert_many_threads() on 1, 2 and 8 threads against a loop of
+ * pw85_index_insert(); every bad input. PW85_TEST_SMALL (set for the sanitizer and valgrind runs) makes
  * the configurations smaller. */
 #include <pw85/pw85_index.h>
 #include <stdint.h>
@@ -514,6 +515,206 @@ static Config const large_configs[] = {
     {"mono-periodic", MONO, 1, 20000, .4, 0},
     {"mono-open", MONO, 0, 20000, 2., 0}, /* centres over 8 times the cube */
     {"poly-periodic", POLY, 1, 20000, .3, 0},
+};
+
+/* ---- insert_many on threads ------------------------------------------- */
+
+/* The observable state of an index: every id's centre and form; both
+ * overlapping pairs; and, for probes (every
+ * 7th stored ellipsoid, 2.5 times larger, itself excluded),
+ * pw85_index_overlap_any()'s result and id (which one, among the several
+ * that a large probe meets, depends on the order in which the index
+ * stores them: a check of that order) and pw85_index_within() (μ² < 1.5,
+ * its first 16 results). Two indexes that should be the same are compared
+ * through it. */
+typedef struct {
+  size_t cap, count;
+  double *c, *q; /* NaN where absent */
+  Pairs overlapping;
+  int *any;       /* status, result, per probe */
+  size_t *any_id; /* per probe */
+  size_t *n_near;    /* per probe */
+  size_t *near_ids;  /* 16 per probe */
+  double *near_mu2;  /* 32 per probe */
+} State;
+
+enum { near_room = 16 };
+
+static State state_of(pw85_index const *ix, size_t cap) {
+  State st = {cap, 0, g_new(double, 3 * cap), g_new(double, 6 * cap),
+              {0, NULL, NULL, NULL, NULL}, NULL, NULL, NULL, NULL, NULL};
+  g_assert_cmpint(pw85_index_count(ix, &st.count), ==, PW85_SUCCESS);
+  for (size_t id = 0; id < cap; id++)
+    if (pw85_index_get(ix, id, st.c + 3 * id, st.q + 6 * id) != PW85_SUCCESS) {
+      for (int k = 0; k < 3; k++) st.c[3 * id + k] = NAN;
+      for (int k = 0; k < 6; k++) st.q[6 * id + k] = NAN;
+    }
+  st.overlapping = index_pairs(ix, FALSE, 1., 1);
+  size_t const probes = (cap + 6) / 7;
+  st.any = g_new0(int, 2 * probes);
+  st.any_id = g_new0(size_t, probes);
+  st.n_near = g_new0(size_t, probes);
+  st.near_ids = g_new0(size_t, near_room * probes);
+  st.near_mu2 = g_new0(double, 2 * near_room * probes);
+  for (size_t p = 0; p < probes; p++) {
+    size_t const id = 7 * p;
+    double c[3], q[6];
+    if (pw85_index_get(ix, id, c, q) != PW85_SUCCESS) continue;
+    for (int k = 0; k < 6; k++) q[k] *= 6.25;
+    st.any[2 * p] = pw85_index_overlap_any(ix, c, q, id, &st.any[2 * p + 1], &st.any_id[p]);
+    int shifts[3 * near_room];
+    g_assert_cmpint(pw85_index_within(ix, c, q, 1.5, PW85_INDEX_NO_ID, near_room,
+                                      st.near_ids + near_room * p, shifts,
+                                      st.near_mu2 + 2 * near_room * p, &st.n_near[p]),
+                    ==, PW85_SUCCESS);
+  }
+  return st;
+}
+
+static void state_clear(State *st) {
+  g_free(st->c), g_free(st->q), g_free(st->any), g_free(st->any_id);
+  g_free(st->n_near), g_free(st->near_ids), g_free(st->near_mu2);
+  pairs_clear(&st->overlapping);
+}
+
+static void assert_same_state(State const *a, pw85_index const *ix, char const *what) {
+  State b = state_of(ix, a->cap);
+  size_t const probes = (a->cap + 6) / 7;
+  if (b.count != a->count) test_mismatch("%s: %zu ellipsoids, expected %zu", what, b.count, a->count);
+  if (memcmp(a->c, b.c, 3 * a->cap * sizeof(double)) != 0 ||
+      memcmp(a->q, b.q, 6 * a->cap * sizeof(double)) != 0)
+    test_mismatch("%s: the stored centres or forms differ", what);
+  if (!pairs_equal(&a->overlapping, &b.overlapping))
+    test_mismatch("%s: overlapping_pairs differ", what);
+  if (memcmp(a->any, b.any, 2 * probes * sizeof(int)) != 0 ||
+      memcmp(a->any_id, b.any_id, probes * sizeof(size_t)) != 0)
+    test_mismatch("%s: overlap_any differs", what);
+  if (memcmp(a->n_near, b.n_near, probes * sizeof(size_t)) != 0 ||
+      memcmp(a->near_ids, b.near_ids, near_room * probes * sizeof(size_t)) != 0 ||
+      memcmp(a->near_mu2, b.near_mu2, 2 * near_room * probes * sizeof(double)) != 0)
+    test_mismatch("%s: within differs", what);
+  state_clear(&b);
+}
+
+/* pw85_index_insert_many_threads() on 1, 2 and 8 threads against the
+ * loop of pw85_index_insert() that it stands for (whose answers the
+ * brute-force tests above check), on a seeded configuration: a third
+ * inserted one at a time first (cells and levels that exist), the rest in
+ * one call (≥ 1024: the bulk path), ids shuffled. Then failing calls:
+ * the first error in the order of the arrays, and the index unchanged. */
+static void test_insert_many_threads(gconstpointer data) {
+  Config const *cf = data;
+  GRand *rng = g_rand_new_with_seed(g_str_hash(cf->name) ^ 0x1234u);
+  int const n = small_run() ? cf->n / 4 : cf->n;
+  double const side = cbrt(n * mean_volume(cf->shapes) / cf->fraction);
+  double const box[3] = {side, side * 1.1, side * .9};
+  size_t *ids = g_new(size_t, n);
+  double *c = g_new(double, 3 * n), *q = g_new(double, 6 * n);
+  for (int i = 0; i < n; i++) ids[i] = (size_t)i;
+  for (int i = n - 1; i > 0; i--) {
+    int const k = g_rand_int_range(rng, 0, i + 1);
+    size_t const x = ids[i];
+    ids[i] = ids[k], ids[k] = x;
+  }
+  for (int i = 0; i < n; i++) random_ellipsoid(rng, cf, side, c + 3 * i, q + 6 * i);
+  int const first = n / 3;
+
+  pw85_index *ref = NULL;
+  g_assert_cmpint(pw85_index_create(cf->periodic ? box : NULL, &ref), ==, PW85_SUCCESS);
+  for (int i = 0; i < n; i++)
+    g_assert_cmpint(pw85_index_insert(ref, ids[i], c + 3 * i, q + 6 * i), ==,
+                    PW85_SUCCESS);
+  State const expected = state_of(ref, (size_t)n);
+  size_t hits = 0;
+  for (size_t p = 0; p < ((size_t)n + 6) / 7; p++) hits += expected.any[2 * p + 1] < 0;
+  g_assert_cmpuint(hits, >, (size_t)n / 7 / 4); /* the probes do meet others */
+  g_assert_cmpuint(expected.overlapping.count, >, (size_t)n / 10);
+  int const counts[] = {1, 2, 8};
+  for (size_t t = 0; t < G_N_ELEMENTS(counts); t++) {
+    pw85_index *ix = NULL;
+    g_assert_cmpint(pw85_index_create(cf->periodic ? box : NULL, &ix), ==, PW85_SUCCESS);
+    for (int i = 0; i < first; i++)
+      g_assert_cmpint(pw85_index_insert(ix, ids[i], c + 3 * i, q + 6 * i), ==,
+                      PW85_SUCCESS);
+    g_assert_cmpint(pw85_index_insert_many_threads(ix, (size_t)(n - first), ids + first,
+                                                   c + 3 * first, q + 6 * first,
+                                                   counts[t]), ==, PW85_SUCCESS);
+    char *what = g_strdup_printf("%s, %d threads", cf->name, counts[t]);
+    assert_same_state(&expected, ix, what);
+    g_free(what);
+    pw85_index_destroy(ix);
+  }
+  /* From an empty index, and through pw85_index_insert_many(). */
+  pw85_index *all = NULL;
+  g_assert_cmpint(pw85_index_create(cf->periodic ? box : NULL, &all), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert_many(all, (size_t)n, ids, c, q), ==, PW85_SUCCESS);
+  assert_same_state(&expected, all, cf->name);
+  pw85_index_destroy(all);
+
+  /* Failing calls on an index holding the first third: the status of the
+   * first failing item, and nothing inserted. */
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(cf->periodic ? box : NULL, &ix), ==, PW85_SUCCESS);
+  pw85_index *part = NULL;
+  g_assert_cmpint(pw85_index_create(cf->periodic ? box : NULL, &part), ==, PW85_SUCCESS);
+  for (int i = 0; i < first; i++) {
+    g_assert_cmpint(pw85_index_insert(ix, ids[i], c + 3 * i, q + 6 * i), ==, PW85_SUCCESS);
+    g_assert_cmpint(pw85_index_insert(part, ids[i], c + 3 * i, q + 6 * i), ==, PW85_SUCCESS);
+  }
+  size_t const rest = (size_t)(n - first);
+  size_t *bad_ids = g_new(size_t, rest);
+  double *bad_q = g_new(double, 6 * rest);
+  double const indefinite[6] = {1., 2., 0., 1., 0., 1.};
+  struct {
+    size_t dup_at, dup_of;  /* ids[dup_at] = ids[dup_of] (dup_at = rest: none) */
+    size_t bad_at;          /* an indefinite form there (rest: none) */
+    size_t used_at;         /* an id in use there (rest: none) */
+    size_t huge_at;         /* PW85_INDEX_MAX_ID + 1 there (rest: none) */
+    int expected;
+  } const cases[] = {
+      {rest - 5, 100, rest, rest, rest, PW85_EINVAL},
+      {rest - 5, 100, rest / 2, rest, rest, PW85_ENOTPOSDEF},
+      {rest / 3, rest / 3 - 1, rest / 2, rest, rest, PW85_EINVAL},
+      {rest / 2, rest / 4, rest / 2, rest, rest, PW85_ENOTPOSDEF}, /* same item */
+      {rest, 0, rest - 1, rest / 2, rest, PW85_EINVAL},
+      {rest, 0, rest / 2, rest, rest / 3, PW85_EINVAL},
+      {rest, 0, rest / 3, rest, rest / 2, PW85_ENOTPOSDEF},
+  };
+  for (size_t k = 0; k < G_N_ELEMENTS(cases); k++) {
+    memcpy(bad_ids, ids + first, rest * sizeof(size_t));
+    memcpy(bad_q, q + 6 * first, 6 * rest * sizeof(double));
+    if (cases[k].dup_at < rest) bad_ids[cases[k].dup_at] = bad_ids[cases[k].dup_of];
+    if (cases[k].bad_at < rest) memcpy(bad_q + 6 * cases[k].bad_at, indefinite, sizeof indefinite);
+    if (cases[k].used_at < rest) bad_ids[cases[k].used_at] = ids[0];
+    if (cases[k].huge_at < rest) bad_ids[cases[k].huge_at] = PW85_INDEX_MAX_ID + 1;
+    g_assert_cmpint(pw85_index_insert_many_threads(ix, rest, bad_ids, c + 3 * first,
+                                                   bad_q, 1 + (int)k % 2), ==,
+                    cases[k].expected);
+  }
+  g_assert_cmpint(pw85_index_insert_many_threads(ix, rest, ids + first, c + 3 * first,
+                                                 q + 6 * first, 0), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_index_insert_many_threads(ix, rest, NULL, c, q, 2), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_index_insert_many_threads(NULL, 0, NULL, NULL, NULL, 2), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(pw85_index_insert_many_threads(ix, 0, NULL, NULL, NULL, 2), ==,
+                  PW85_SUCCESS);
+  State partial = state_of(part, (size_t)n);
+  assert_same_state(&partial, ix, "after the failing calls");
+  state_clear(&partial);
+  /* and the good call still gives the serial index */
+  g_assert_cmpint(pw85_index_insert_many_threads(ix, rest, ids + first, c + 3 * first,
+                                                 q + 6 * first, 2), ==, PW85_SUCCESS);
+  assert_same_state(&expected, ix, "after the failing calls, inserted");
+  state_clear((State *)&expected);
+  pw85_index_destroy(ix), pw85_index_destroy(part), pw85_index_destroy(ref);
+  g_free(bad_ids), g_free(bad_q), g_free(ids), g_free(c), g_free(q);
+  g_rand_free(rng);
+}
+
+static Config const insert_configs[] = {
+    {"mono-periodic", MONO, 1, 8000, .4, 1},
+    {"mono-open", MONO, 0, 8000, 2., 0},
+    {"poly-periodic", POLY, 1, 8000, .3, 0},
 };
 
 /* ---- bad input ----------------------------------------------------------- */
@@ -1215,6 +1416,12 @@ int main(int argc, char **argv) {
   for (size_t k = 0; k < G_N_ELEMENTS(large_configs); k++) {
     char *path = g_strdup_printf("/pw85/index/threads-large/%s", large_configs[k].name);
     g_test_add_data_func(path, &large_configs[k], test_threads_large);
+    g_free(path);
+  }
+  for (size_t k = 0; k < G_N_ELEMENTS(insert_configs); k++) {
+    char *path = g_strdup_printf("/pw85/index/threads-large/insert-many-%s",
+                                 insert_configs[k].name);
+    g_test_add_data_func(path, &insert_configs[k], test_insert_many_threads);
     g_free(path);
   }
   return g_test_run();

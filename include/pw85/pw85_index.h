@@ -61,16 +61,17 @@
  * that changes nothing but speed). Calls that modify
  * an index (insert, update, remove, destroy) need exclusive access to it;
  * queries only read it and may run concurrently with each other from
- * several threads. The all-pairs queries and
- * pw85_index_overlap_any_batch() start `threads` OpenMP threads when
- * libpw85 was built with OpenMP (see pw85_index_openmp()), and run
- * serially otherwise; their output is the same, bit for bit, for any
+ * several threads. The all-pairs queries,
+ * pw85_index_overlap_any_batch() and pw85_index_insert_many_threads()
+ * start `threads` OpenMP threads when libpw85 was built with OpenMP (see
+ * pw85_index_openmp()), and run serially otherwise; their output (the
+ * index they leave, for the last) is the same, bit for bit, for any
  * number of threads. No other function starts a thread.
  *
  * PW85_EINVAL, the status of a finite argument outside its domain, has
  * these causes, each documented with its function: a box side not > 0
  * (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
- * call (insert, insert_many); an id not stored (update, remove, get); in
+ * call (insert, insert_many, insert_many_threads); an id not stored (update, remove, get); in
  * a periodic box, an ellipsoid not narrower than the box,
  * 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k, or a centre with |c_k| > 2²⁹·L_k (insert,
  * insert_many, update; the centre rule also for the queries on a
@@ -181,12 +182,46 @@ PW85_API int pw85_index_insert(pw85_index *index, size_t id,
  * @param[in] centres their centres (3·n doubles).
  * @param[in] q their quadratic forms (6·n doubles).
  * @return the statuses of pw85_index_insert() (the first error met, in the
- *         order of the arrays); the index is unchanged on error.
+ *         order of the arrays; for n ≥ 1024, PW85_ENOMEM only when every
+ *         ellipsoid is valid); the index is unchanged on error.
  * @since 2.2.0
  */
 PW85_API int pw85_index_insert_many(pw85_index *index, size_t n,
                                     size_t const *ids, double const *centres,
                                     double const *q) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_index_insert_many() on `threads` threads.
+ *
+ * The same index, status and all-or-none rule as pw85_index_insert_many()
+ * (and as n calls of pw85_index_insert(), in order), whatever the number
+ * of threads: the same stored order, so that every later query, and the
+ * id returned by pw85_index_overlap_any(), are those of a serial
+ * insertion, bit for bit. At most n/4096 + 1 threads are started (none
+ * for threads = 1). For n ≥ 1024 the ellipsoids are placed in passes over
+ * the whole call (pw85_index_insert_many() takes the same path, on the
+ * calling thread), which allocate, for the time of the call, 12 bytes per
+ * ellipsoid and a hash table of 48 to 96 bytes per cell that the
+ * ellipsoids of a level may occupy (as many as they are, or, in a
+ * periodic box, as the cells of the level's grid if fewer).
+ * @param[in,out] index the index.
+ * @param[in] n the number of ellipsoids (0 does nothing).
+ * @param[in] ids their ids (n values, distinct, not in use).
+ * @param[in] centres their centres (3·n doubles).
+ * @param[in] q their quadratic forms (6·n doubles).
+ * @param[in] threads the number of threads (≥ 1; see the file
+ *            description).
+ * @return the statuses of pw85_index_insert_many(); PW85_EINVAL also if
+ *         threads < 1. PW85_ENOMEM only when every ellipsoid is valid.
+ *         The index is unchanged on error (but for the spare capacity of
+ *         its tables).
+ * @since 2.3.0
+ */
+PW85_API int pw85_index_insert_many_threads(pw85_index *index, size_t n,
+                                            size_t const *ids,
+                                            double const *centres,
+                                            double const *q,
+                                            int threads) PW85_NOEXCEPT;
 
 /**
  * @brief Move or reshape a stored ellipsoid (O(1) amortised).

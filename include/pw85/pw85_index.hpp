@@ -205,6 +205,23 @@ class Index {
   }
 
   /**
+   * @brief insert_many() on `threads` threads, with the same result for
+   *        any count (pw85_index_insert_many_threads()).
+   * @param[in] n their number (0 does nothing).
+   * @param[in] ids n distinct ids, not in use.
+   * @param[in] centres 3·n doubles, centre i at centres[3·i].
+   * @param[in] q 6·n doubles, form i at q[6·i].
+   * @param[in] threads the number of threads (≥ 1).
+   * @return the statuses of insert_many(); PW85_EINVAL also if
+   *         threads < 1.
+   * @since 2.3.0
+   */
+  int insert_many(std::size_t n, std::size_t const *ids, double const *centres,
+                  double const *q, int threads) noexcept {
+    return pw85_index_insert_many_threads(handle_, n, ids, centres, q, threads);
+  }
+
+  /**
    * @brief Moves or reshapes a stored ellipsoid, O(1) amortised
    *        (pw85_index_update()).
    * @param[in] id the id of a stored ellipsoid.

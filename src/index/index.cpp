@@ -39,21 +39,21 @@ Status Index::check_ellipsoid(double const c[dim], double const q[sym]) const
   return check_centre(c);
 }
 
+void Index::wraps(double const c[dim], std::int32_t w[dim]) const noexcept {
+  for (int k = 0; k < dim; ++k)
+    w[k] = periodic_ ? static_cast<std::int32_t>(std::floor(c[k] / box_[k]))
+                     : 0;
+}
+
 int Index::make_entry(std::size_t id, double const c[dim],
                       double const q[sym], Entry *e) const noexcept {
-  for (int k = 0; k < dim; ++k) {
-    e->c[k] = c[k];
-    e->wrap[k] = periodic_
-                     ? static_cast<std::int32_t>(std::floor(c[k] / box_[k]))
-                     : 0;
-  }
+  for (int k = 0; k < dim; ++k) e->c[k] = c[k];
+  wraps(c, e->wrap);
   for (int k = 0; k < sym; ++k) e->q[k] = q[k];
   half_widths(q, e->h);
   e->rho = inscribed_radius(q);
   e->id = static_cast<std::uint32_t>(id);
-  int exponent = 0;
-  std::frexp(std::max(std::max(e->h[0], e->h[1]), e->h[2]), &exponent);
-  return exponent;
+  return level_exponent(e->h);
 }
 
 void Index::init_level(Level *lv, int exponent) const noexcept {
@@ -88,17 +88,18 @@ double clamp_open(double m) noexcept {
 
 }  // namespace
 
-void Index::cell_coords(Level const &lv, Entry const &e,
+void Index::cell_coords(Level const &lv, double const c[dim],
+                        std::int32_t const wrap[dim],
                         std::uint64_t u[dim]) const noexcept {
   for (int k = 0; k < dim; ++k) {
     if (periodic_) {
-      double const w = e.c[k] - e.wrap[k] * box_[k];
+      double const w = c[k] - wrap[k] * box_[k];
       double const m = std::min(std::max(std::floor(w * lv.inv[k]), 0.0),
                                 double(lv.n[k] - 1));
       u[k] = static_cast<std::uint64_t>(m);
     } else {
       u[k] = static_cast<std::uint64_t>(
-          clamp_open(std::floor(e.c[k] * lv.inv[k])) + open_half);
+          clamp_open(std::floor(c[k] * lv.inv[k])) + open_half);
     }
   }
 }
@@ -122,7 +123,7 @@ bool Index::reserve_for(Entry const &e, int exponent) noexcept {
   if (l == int(levels_.size()) && !add_level(exponent)) return false;
   Level &lv = levels_[l];
   std::uint64_t u[dim];
-  cell_coords(lv, e, u);
+  cell_coords(lv, e.c, e.wrap, u);
   std::uint32_t c = lv.find(u);
   if (c == CellMap::absent) {
     // A new empty cell is a valid state: it is registered at once.
@@ -144,7 +145,7 @@ void Index::insert_entry(Entry const &e, int exponent) noexcept {
   int const l = level_of(exponent);
   Level &lv = levels_[l];
   std::uint64_t u[dim];
-  cell_coords(lv, e, u);
+  cell_coords(lv, e.c, e.wrap, u);
   std::uint32_t const c = lv.find(u);
   Cell &cell = lv.cells[c];
   Entry copy = e;
@@ -190,7 +191,9 @@ Status Index::insert(std::size_t id, double const c[dim],
 }
 
 Status Index::insert_many(std::size_t n, std::size_t const *ids,
-                          double const *c, double const *q) noexcept {
+                          double const *c, double const *q,
+                          int threads) noexcept {
+  if (n >= bulk_min && n < no_id) return insert_bulk(n, ids, c, q, threads);
   std::size_t top = 0;
   for (std::size_t i = 0; i < n; ++i) top = std::max(top, ids[i]);
   if (n > 0 && top <= max_id && top >= slots_.size() &&

@@ -20,6 +20,7 @@
 #ifndef PW85_SRC_INDEX_INDEX_HPP
 #define PW85_SRC_INDEX_INDEX_HPP
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -44,6 +45,11 @@ namespace pw85::detail {
 // snapshot is best at 2^e (1 : 0.5 : 0.2 at packing fractions 0.2 to 0.4).
 constexpr int hash_cell_octaves = 1;
 constexpr int snapshot_cell_octaves = 0;
+
+// insert_many() of at least this many ellipsoids takes the bulk path
+// (bulk.cpp: passes over the whole call, on threads), fewer the loop of
+// insert(); both leave the same index (but for spare capacity).
+constexpr std::size_t bulk_min = 1024;
 
 // A stored ellipsoid, as its cell holds it. What the broad phase reads
 // (id, wrap, centre, half-widths) fills the first cache line; the form,
@@ -126,8 +132,12 @@ class Index {
   // The statuses of pw85_index.h; pointers are checked by the caller.
   Status insert(std::size_t id, double const c[dim],
                 double const q[sym]) noexcept;
+  // As n calls of insert(), in order, all or none; on `threads` OpenMP
+  // threads (≥ 1, checked by the caller) for n ≥ bulk_min (bulk.cpp),
+  // with the same resulting index for any count.
   Status insert_many(std::size_t n, std::size_t const *ids,
-                     double const *c, double const *q) noexcept;
+                     double const *c, double const *q,
+                     int threads = 1) noexcept;
   Status update(std::size_t id, double const c[dim],
                 double const q[sym]) noexcept;
   Status remove(std::size_t id) noexcept;
@@ -147,6 +157,10 @@ class Index {
 
   // For pairs.cpp.
   double const *box() const noexcept { return box_; }
+  // Where id is stored (for the tests of the core).
+  Slot slot(std::size_t id) const noexcept {
+    return id < slots_.size() ? slots_[id] : Slot{};
+  }
   Buffer<Level> const &levels() const noexcept { return levels_; }
   double coordinate_bound() const noexcept { return cmax_; }
 
@@ -163,8 +177,14 @@ class Index {
   // The position in levels_ of the level of that exponent, or
   // levels_.size() when there is none yet.
   int level_of(int exponent) const noexcept;
-  void cell_coords(Level const &lv, Entry const &e, std::uint64_t u[dim]) const
+  // ⌊c_k/L_k⌋ (periodic), else 0: Entry::wrap.
+  void wraps(double const c[dim], std::int32_t w[dim]) const noexcept;
+  void cell_coords(Level const &lv, double const c[dim],
+                   std::int32_t const wrap[dim], std::uint64_t u[dim]) const
       noexcept;
+  // insert_many() of n ≥ bulk_min ellipsoids (bulk.cpp).
+  Status insert_bulk(std::size_t n, std::size_t const *ids, double const *c,
+                     double const *q, int threads) noexcept;
   // Every allocation insert_entry(e, exponent) needs; false on failure
   // (the index is unchanged but for spare capacity, or an empty new
   // level).
@@ -206,6 +226,14 @@ class Index {
   Buffer<Slot> slots_;  // by id
   Buffer<Level> levels_;
 };
+
+// The exponent e of the level of an ellipsoid of AABB half-widths h:
+// H = max_k h_k ≤ 2^e (index.hpp, "Grid").
+inline int level_exponent(double const h[dim]) noexcept {
+  int exponent = 0;
+  std::frexp(std::max(std::max(h[0], h[1]), h[2]), &exponent);
+  return exponent;
+}
 
 // ⌊a / b⌋ for b > 0.
 inline std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {

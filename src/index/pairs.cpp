@@ -244,9 +244,9 @@ struct LevelSort {
 };
 
 // The snapshot of every non-empty level; false when an allocation fails.
-// The cells of the entries (`where`) are computed on `threads` threads;
-// the counting sort itself is serial (in the order of the level's cells,
-// so that the snapshot does not depend on the number of threads).
+// Each level's counting sort runs on `threads` threads (LevelSort), in an
+// order that does not depend on their number; the loops over the level's
+// cells here (offsets, and the bounds of an open domain) are serial.
 bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
   Buffer<Level> const &levels = index.levels();
   double const *box = index.box();

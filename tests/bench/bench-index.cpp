@@ -15,11 +15,14 @@
 // libfcl-dev), with the pairs each misses. Ratios matter, not absolute
 // times: the machines are shared.
 //
+// Also insert_many of each monodisperse set on 1 and 2 threads, and the
+// total a user waits (insert, then all overlapping pairs).
+//
 // Usage: bench-index [quick | rsa | rsa-row [threads] | saturation |
 // profile N [threads]] ("quick": the largest N left out; "rsa": random
 // sequential addition only; "rsa-row": its row of record only;
 // "saturation": how far random sequential addition of 1e4 gets;
-// "profile": one all-pairs query, for a profiler).
+// "profile": insert_many and one all-pairs query, for a profiler).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -153,14 +156,37 @@ Run all_pairs(pw85::detail::Index const &index, int threads, int reps,
   return best;
 }
 
-void fill(pw85::detail::Index *index, Set const &s) {
+// insert_many of the whole set (ids 0 .. N−1) on `threads` threads; its
+// time in seconds.
+double fill(pw85::detail::Index *index, Set const &s, int threads = 1) {
   std::vector<std::size_t> ids(s.size());
   for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = i;
-  if (index->insert_many(ids.size(), ids.data(), s.c.data(), s.q.data()) !=
+  auto const t0 = Clock::now();
+  if (index->insert_many(ids.size(), ids.data(), s.c.data(), s.q.data(), threads) !=
       pw85::detail::Status::success) {
     std::printf("insert failed\n");
     std::exit(1);
   }
+  return seconds_since(t0);
+}
+
+// insert_many into a fresh index, best of `reps`; *cores (if not null):
+// the process's CPU time over the wall-clock time of the best run, the
+// number of cores the run had (below 2 on 2 threads: the machine did not
+// give them, and a ratio of times on 2 and 1 threads shows its load, not
+// the code's scaling).
+double insert_time(Set const &s, double const box[3], int threads, int reps,
+                   double *cores = nullptr) {
+  double best = 1e300;
+  for (int r = 0; r < reps; ++r) {
+    pw85::detail::Index index(box);
+    std::clock_t const c0 = std::clock();
+    double const t = fill(&index, s, threads);
+    double const cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+    if (t < best && cores != nullptr) *cores = cpu / t;
+    best = std::min(best, t);
+  }
+  return best;
 }
 
 void row(char const *what, std::size_t n, Run const &one, Run const &two) {
@@ -371,9 +397,7 @@ int main(int argc, char **argv) {
     int const threads = argc > 3 ? std::atoi(argv[3]) : 1;
     double const box[3] = {s.side, s.side, s.side};
     pw85::detail::Index index(box);
-    auto const t0 = Clock::now();
-    fill(&index, s);
-    std::printf("fill: %.3f s\n", seconds_since(t0));
+    std::printf("insert_many (%d threads): %.3f s\n", threads, fill(&index, s, threads));
     for (int rep = 0; rep < 3; ++rep) {
       std::clock_t const c0 = std::clock();
       Run const r = all_pairs(index, threads, 1);
@@ -400,6 +424,10 @@ int main(int argc, char **argv) {
     rsa(10000, flat, .5, 0);
     return 0;
   }
+  // bench-index total [N]: the rows of N (default 1e6) ellipsoids at a
+  // packing fraction of 0.4 only (insert_many and all overlapping pairs,
+  // on 1 and 2 threads).
+  bool const total = argc > 1 && std::strcmp(argv[1], "total") == 0;
   bool const quick = argc > 1 && std::strcmp(argv[1], "quick") == 0;
   bool const rsa_only = argc > 1 && std::strcmp(argv[1], "rsa") == 0;
   std::printf("pw85 %s index benchmark (OpenMP: %s; ratios are the result, "
@@ -412,22 +440,55 @@ int main(int argc, char **argv) {
   std::vector<std::size_t> sizes = {10000, 100000};
   if (rsa_only) sizes.clear();
   if (!quick && !rsa_only) sizes.push_back(1000000);
+  if (total) sizes = {argc > 2 ? std::size_t(std::strtoul(argv[2], nullptr, 10)) : 1000000};
   double per_ell_small = 0., per_ell_large = 0.;
+  struct InsertRow {
+    double fraction;
+    std::size_t n;
+    double one, two, pairs_one, pairs_two, cores;
+  };
+  std::vector<InsertRow> inserts;
   for (double fraction : {0.2, 0.4}) {
+    if (total && fraction != 0.4) continue;
     for (std::size_t n : sizes) {
       Set const s = make_set(n, fraction, Shapes::triaxial, 7 + unsigned(n));
       double const box[3] = {s.side, s.side, s.side};
-      pw85::detail::Index index(box);
-      fill(&index, s);
       int const reps = n >= 1000000 ? 2 : 3;
+      // insert_many (issue 26, item 3): on 1 and 2 threads, alternated.
+      double ins_one = 1e300, ins_two = 1e300, cores = 0.;
+      for (int r = 0; r < reps; ++r) {
+        ins_one = std::min(ins_one, insert_time(s, box, 1, 1));
+        double c = 0.;
+        double const t = insert_time(s, box, 2, 1, &c);
+        if (t < ins_two) ins_two = t, cores = c;
+      }
+      pw85::detail::Index index(box);
+      fill(&index, s, 2);
       Run const one = all_pairs(index, 1, reps), two = all_pairs(index, 2, reps);
       char what[64];
       std::snprintf(what, sizeof what, "1 : 0.5 : 0.2, fraction %.1f", fraction);
       row(what, n, one, two);
+      inserts.push_back({fraction, n, ins_one, ins_two, one.seconds, two.seconds, cores});
       if (fraction == 0.4 && n == sizes.front()) per_ell_small = two.seconds / double(n);
       if (fraction == 0.4 && n == sizes.back()) per_ell_large = two.seconds / double(n);
     }
   }
+  if (!inserts.empty()) {
+    std::printf("\ninsert_many, then all overlapping pairs: what a user waits "
+                "(seconds, best of 3, of 2 at N = 1e6; cores: CPU time over wall "
+                "time of the best insert on 2 threads, below 2 when the machine "
+                "did not give 2 cores)\n");
+    std::printf("  %-26s %8s %9s %9s %6s %6s %11s %11s %6s\n", "set", "N", "ins. 1thr",
+                "ins. 2thr", "x2thr", "cores", "total 1thr", "total 2thr", "x2thr");
+    for (InsertRow const &r : inserts) {
+      char what[64];
+      std::snprintf(what, sizeof what, "1 : 0.5 : 0.2, fraction %.1f", r.fraction);
+      std::printf("  %-26s %8zu %9.3f %9.3f %6.2f %6.2f %11.3f %11.3f %6.2f\n", what, r.n,
+                  r.one, r.two, r.one / r.two, r.cores, r.one + r.pairs_one,
+                  r.two + r.pairs_two, (r.one + r.pairs_one) / (r.two + r.pairs_two));
+    }
+  }
+  if (total) return 0;
   if (!rsa_only) {
   std::printf("  time per ellipsoid, N = %zu over N = %zu (fraction 0.4, 2 threads): %.2f\n",
               sizes.back(), sizes.front(), per_ell_large / per_ell_small);

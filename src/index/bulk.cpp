@@ -1,0 +1,503 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// insert_many() of many ellipsoids (index.hpp, bulk_min): the index that n
+// calls of insert() would leave, in passes over the whole call, each on
+// `threads` OpenMP threads, and the same for any count.
+//
+// What the loop of insert() decides, and how each pass finds it without
+// depending on the schedule:
+// - the status: that of the first item (in the call's order) that fails.
+//   Pass 1 checks every item alone (the tests of insert(), an id in use
+//   before the call counted as in use); a repeated id is found by an atomic
+//   minimum of the item's position in its (free) slot of the id table
+//   (pass 2); the first failure is the least position of either kind. An
+//   allocation that fails reports PW85_ENOMEM when every item is valid.
+// - a new level per new exponent, in the order of the first item of each
+//   (a serial pass over one int per item: about 1 ms per 1e6 items);
+// - a new cell per cell that no item finds, in the order of the first item
+//   in each: the cells the call touches are keys of a temporary hash map
+//   per level (lock-free insertion, atomic minimum of the first item and
+//   count of the items), and a new cell's position is the level's count of
+//   cells plus the rank of its first item among the first items of new
+//   cells (per chunk of items, then a prefix sum);
+// - the entries of a cell in the order of the items: the items are
+//   scattered to their cell's run of a list of positions (atomic cursors),
+//   each run is sorted, and each cell is then filled from its run by one
+//   thread.
+// Largest bounds (hmax, cmax) are maxima: any order gives them. Every
+// allocation is made before the index changes; on failure the index is as
+// it was but for spare capacity and empty cells, as after insert().
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "checks.hpp"
+#include "index.hpp"
+
+namespace pw85::detail {
+
+namespace {
+
+// Items (and slots of the maps) are handed to threads in chunks of this
+// many; per-chunk results are combined in chunk order. A thread is
+// started per bulk_per_thread items at most (each pass is a parallel
+// region: on a loaded machine, a few milliseconds to gather the threads).
+constexpr std::size_t bulk_chunk = 1024;
+constexpr std::size_t bulk_per_thread = 4096;
+// Items prefetched ahead of the one being handled (passes 3, 6, 7).
+constexpr std::size_t prefetch_ahead = 8;
+
+// The range of exponents of frexp() on a positive finite double.
+constexpr int min_exponent = -1073, max_exponent = 1024;
+constexpr std::uint32_t none = 0xFFFFFFFFu;
+
+// Runs f(k) for k in [0, count), on nt threads when nt > 1 (none started
+// otherwise); the work of each k must not depend on the schedule.
+template <typename F>
+void for_each_chunk(int nt, std::size_t count, F &&f) noexcept {
+#if defined(PW85_OPENMP)
+  if (nt > 1 && count > 1) {
+    long long const m = static_cast<long long>(count);
+#pragma omp parallel for num_threads(nt) schedule(dynamic, 1)
+    for (long long k = 0; k < m; ++k) f(std::size_t(k));
+    return;
+  }
+#endif
+  (void)nt;
+  for (std::size_t k = 0; k < count; ++k) f(k);
+}
+
+// *p = min(*p, v), atomically.
+void atomic_min(std::uint32_t *p, std::uint32_t v) noexcept {
+  std::uint32_t old = __atomic_load_n(p, __ATOMIC_RELAXED);
+  while (v < old && !__atomic_compare_exchange_n(p, &old, v, true, __ATOMIC_RELAXED,
+                                                 __ATOMIC_RELAXED)) {
+  }
+}
+
+// A cell that the call touches: its key (Level::pack of its coordinates),
+// the first item in it, the number of items, its position in the level's
+// cells (none until known), and the start of its run in the list of items
+// by cell.
+struct Touched {
+  std::uint64_t key;
+  std::uint32_t first;  // then the cursor of the scatter
+  std::uint32_t count;
+  std::uint32_t cell;
+  std::uint32_t start;
+};
+
+// An insert-only hash map of the cells a level's items touch, filled
+// concurrently: open addressing, linear probing, at most half full.
+class TouchedMap {
+ public:
+  static constexpr std::uint64_t empty = ~std::uint64_t{0};
+
+  // Room for `keys` keys; false when the allocation fails.
+  bool init(std::size_t keys) noexcept {
+    std::size_t n = 16;
+    while (n < 2 * keys) n *= 2;
+    if (!slots_.resize_uninitialised(n)) return false;
+    for (std::size_t i = 0; i < n; ++i) slots_[i] = Touched{empty, none, 0, none, 0};
+    return true;
+  }
+  std::size_t size() const noexcept { return slots_.size(); }
+  Touched &operator[](std::size_t i) noexcept { return slots_[i]; }
+
+  void prefetch(std::uint64_t key) const noexcept {
+    PW85_PREFETCH(slots_.data() + (hash(key) & (slots_.size() - 1)));
+  }
+  // Adds item i to the cell of that key (safe on several threads at once);
+  // returns the cell's slot.
+  std::uint32_t add(std::uint64_t key, std::uint32_t i) noexcept {
+    std::size_t const mask = slots_.size() - 1;
+    std::size_t s = hash(key) & mask;
+    for (;; s = (s + 1) & mask) {
+      std::uint64_t k = __atomic_load_n(&slots_[s].key, __ATOMIC_RELAXED);
+      if (k == empty) {
+        std::uint64_t expected = empty;
+        if (__atomic_compare_exchange_n(&slots_[s].key, &expected, key, false,
+                                        __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+          k = key;
+        else
+          k = expected;
+      }
+      if (k == key) {
+        atomic_min(&slots_[s].first, i);
+        __atomic_fetch_add(&slots_[s].count, 1u, __ATOMIC_RELAXED);
+        return static_cast<std::uint32_t>(s);
+      }
+    }
+  }
+
+ private:
+  // Fibonacci hashing, as CellMap's.
+  static std::size_t hash(std::uint64_t key) noexcept {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20);
+  }
+  Buffer<Touched> slots_;
+};
+
+// What a pass over a chunk of items found: its first failing item (n if
+// none) and that item's status.
+struct ChunkStatus {
+  std::size_t at;
+  Status status;
+};
+
+// The first failure over the chunks, in the order of the items.
+ChunkStatus first_failure(Buffer<ChunkStatus> const &chunks, std::size_t n) noexcept {
+  ChunkStatus first{n, Status::success};
+  for (std::size_t k = 0; k < chunks.size(); ++k)
+    if (chunks[k].at < first.at) first = chunks[k];
+  return first;
+}
+
+}  // namespace
+
+Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
+                          double const *c, double const *q,
+                          int threads) noexcept {
+#if !defined(PW85_OPENMP)
+  threads = 1;
+#endif
+  std::size_t const chunks = (n + bulk_chunk - 1) / bulk_chunk;
+  int const nt = int(std::min<std::size_t>(std::size_t(threads), n / bulk_per_thread + 1));
+  auto items_of = [&](std::size_t k, std::size_t end) {
+    return std::pair<std::size_t, std::size_t>{k * bulk_chunk,
+                                               std::min(end, (k + 1) * bulk_chunk)};
+  };
+
+  // Pass 1: each item alone (insert()'s tests, in its order); its level's
+  // exponent into `place` (then the level's position).
+  Buffer<std::int32_t> place;  // per item
+  Buffer<ChunkStatus> status;  // per chunk
+  if (!place.resize_uninitialised(n) || !status.resize_uninitialised(chunks))
+    return Status::no_memory;
+  for_each_chunk(nt, chunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, n);
+    status[k] = ChunkStatus{n, Status::success};
+    for (std::size_t i = i0; i < i1; ++i) {
+      double const *ci = c + dim * i, *qi = q + sym * i;
+      Status s = check_ellipsoid(ci, qi);
+      std::size_t const id = ids[i];
+      double h[dim];
+      if (s == Status::success) {
+        if (id > max_id || (id < slots_.size() && slots_[id].level >= 0)) {
+          s = Status::invalid_argument;
+        } else {
+          half_widths(qi, h);
+          if (!fits_box(h)) s = Status::invalid_argument;
+        }
+      }
+      if (s != Status::success) {
+        status[k] = ChunkStatus{i, s};
+        return;
+      }
+      place[i] = level_exponent(h);
+    }
+  });
+  ChunkStatus failed = first_failure(status, n);
+  std::size_t const m = failed.at;  // items [0, m) are valid alone
+
+  // Pass 2: a repeated id among items [0, m), in the free slots of the id
+  // table (restored by clear_marks() unless the insertion succeeds).
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < m; ++i) top = std::max(top, ids[i]);
+  if (m > 0 && top >= slots_.size() && !slots_.resize(top + 1))
+    return Status::no_memory;
+  std::size_t const mchunks = (m + bulk_chunk - 1) / bulk_chunk;
+  for_each_chunk(nt, mchunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, m);
+    for (std::size_t i = i0; i < i1; ++i)
+      __atomic_store_n(&slots_[ids[i]].index, none, __ATOMIC_RELAXED);
+  });
+  for_each_chunk(nt, mchunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, m);
+    for (std::size_t i = i0; i < i1; ++i)
+      atomic_min(&slots_[ids[i]].index, std::uint32_t(i));
+  });
+  for_each_chunk(nt, mchunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, m);
+    status[k] = ChunkStatus{n, Status::success};
+    for (std::size_t i = i0; i < i1; ++i)
+      if (slots_[ids[i]].index != i) {
+        status[k] = ChunkStatus{i, Status::invalid_argument};
+        return;
+      }
+  });
+  for (std::size_t k = mchunks; k < chunks; ++k) status[k] = ChunkStatus{n, Status::success};
+  ChunkStatus const repeated = first_failure(status, n);
+  if (repeated.at < failed.at) failed = repeated;
+  auto clear_marks = [&]() {
+    for_each_chunk(nt, mchunks, [&](std::size_t k) {
+      auto const [i0, i1] = items_of(k, m);
+      for (std::size_t i = i0; i < i1; ++i) slots_[ids[i]] = Slot{};
+    });
+  };
+  if (failed.at < n) {
+    clear_marks();
+    return failed.status;
+  }
+
+  // The levels, new ones in the order of their first item; the number of
+  // items per level.
+  Buffer<std::int32_t> level_at;  // by exponent − min_exponent
+  Buffer<std::size_t> items_in;   // by level
+  if (!level_at.resize_uninitialised(max_exponent - min_exponent + 1)) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  for (std::size_t e = 0; e < level_at.size(); ++e) level_at[e] = -1;
+  for (std::size_t l = 0; l < levels_.size(); ++l)
+    level_at[levels_[l].exponent - min_exponent] = std::int32_t(l);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::int32_t &l = level_at[place[i] - min_exponent];
+    if (l < 0) {
+      if (!add_level(place[i])) {
+        clear_marks();
+        return Status::no_memory;
+      }
+      l = std::int32_t(levels_.size() - 1);
+    }
+    place[i] = l;
+  }
+  std::size_t const nlevels = levels_.size();
+  if (!items_in.resize(nlevels)) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  for (std::size_t i = 0; i < n; ++i) ++items_in[std::size_t(place[i])];
+
+  // Pass 3: the cells touched, per level, with their first item and count.
+  Buffer<TouchedMap> maps;
+  Buffer<std::uint32_t> slot_of;  // per item: its cell's slot in its map
+  bool ok = maps.resize(nlevels) && slot_of.resize_uninitialised(n);
+  for (std::size_t l = 0; ok && l < nlevels; ++l) {
+    if (items_in[l] == 0) continue;
+    std::size_t keys = items_in[l];
+    Level const &lv = levels_[l];
+    if (periodic_)
+      keys = std::size_t(std::min(double(keys), double(lv.n[0]) * double(lv.n[1]) *
+                                                    double(lv.n[2])));
+    ok = maps[l].init(keys);
+  }
+  if (!ok) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  for_each_chunk(nt, chunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, n);
+    std::uint64_t keys[bulk_chunk];  // the chunk's keys, then their slots prefetched
+    for (std::size_t i = i0; i < i1; ++i) {
+      std::int32_t w[dim];
+      std::uint64_t u[dim];
+      wraps(c + dim * i, w);
+      cell_coords(levels_[std::size_t(place[i])], c + dim * i, w, u);
+      keys[i - i0] = Level::pack(u);
+    }
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (i + prefetch_ahead < i1)
+        maps[std::size_t(place[i + prefetch_ahead])].prefetch(keys[i + prefetch_ahead - i0]);
+      slot_of[i] = maps[std::size_t(place[i])].add(keys[i - i0], std::uint32_t(i));
+    }
+  });
+
+  // Pass 4: the touched cells that exist, then the positions of the new
+  // ones (ranks of their first items per level: counts per chunk and
+  // level, then prefix sums from the level's count of cells).
+  for (std::size_t l = 0; l < nlevels; ++l) {
+    TouchedMap &map = maps[l];
+    Level const &lv = levels_[l];
+    for_each_chunk(nt, (map.size() + bulk_chunk - 1) / bulk_chunk, [&](std::size_t k) {
+      auto const [s0, s1] = items_of(k, map.size());
+      for (std::size_t s = s0; s < s1; ++s) {
+        std::uint64_t const key = map[s].key;
+        if (key == TouchedMap::empty) continue;
+        std::uint64_t const u[dim] = {key >> 42, (key >> 21) & 0x1FFFFF, key & 0x1FFFFF};
+        map[s].cell = lv.find(u);
+      }
+    });
+  }
+  // Per chunk and level: the chunk's first rank, in rows of whole cache
+  // lines (each row is written by the thread that runs its chunk).
+  std::size_t const row = (nlevels + 7) & ~std::size_t(7);
+  Buffer<std::size_t> rank;
+  if (!rank.resize(chunks * row)) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  auto is_new_founder = [&](std::size_t i) {
+    Touched const &t = maps[std::size_t(place[i])][slot_of[i]];
+    return t.first == i && t.cell == CellMap::absent;
+  };
+  for_each_chunk(nt, chunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, n);
+    for (std::size_t i = i0; i < i1; ++i)
+      if (is_new_founder(i)) ++rank[k * row + std::size_t(place[i])];
+  });
+  Buffer<std::size_t> new_cells;  // per level
+  if (!new_cells.resize(nlevels)) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  for (std::size_t l = 0; l < nlevels; ++l) {
+    std::size_t at = levels_[l].cells.size();
+    for (std::size_t k = 0; k < chunks; ++k) {
+      std::size_t const count = rank[k * row + l];
+      rank[k * row + l] = at;
+      at += count;
+    }
+    new_cells[l] = at - levels_[l].cells.size();
+    if (at >= no_id) {  // as reserve_for()
+      clear_marks();
+      return Status::no_memory;
+    }
+  }
+  Buffer<Buffer<std::uint64_t>> new_keys;  // per level, by new position
+  ok = new_keys.resize(nlevels);
+  for (std::size_t l = 0; ok && l < nlevels; ++l)
+    ok = new_keys[l].resize_uninitialised(new_cells[l]) &&
+         levels_[l].cells.reserve(levels_[l].cells.size() + new_cells[l]);
+  if (!ok) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  for_each_chunk(nt, chunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, n);
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (!is_new_founder(i)) continue;
+      std::size_t const l = std::size_t(place[i]);
+      std::size_t const p = rank[k * row + l]++;
+      Touched &t = maps[l][slot_of[i]];
+      new_keys[l][p - levels_[l].cells.size()] = t.key;
+      t.cell = std::uint32_t(p);  // read by is_new_founder() of this item only
+    }
+  });
+  // is_new_founder() is false from here on.
+
+  // The new cells, registered in order (as reserve_for() registers them).
+  for (std::size_t l = 0; l < nlevels; ++l) {
+    Level &lv = levels_[l];
+    for (std::size_t p = 0; p < new_cells[l]; ++p) {
+      std::uint64_t const key = new_keys[l][p];
+      if (lv.dense.empty() && !lv.map.reserve_one()) {
+        clear_marks();
+        return Status::no_memory;
+      }
+      std::uint32_t const at = static_cast<std::uint32_t>(lv.cells.size());
+      lv.cells.push_back_reserved(Cell{});
+      if (lv.dense.empty()) {
+        lv.map.insert_reserved(key, at);
+      } else {
+        std::uint64_t const u[dim] = {key >> 42, (key >> 21) & 0x1FFFFF, key & 0x1FFFFF};
+        lv.dense[lv.dense_index(u)] = at;
+      }
+    }
+  }
+
+  // Pass 5: room in every touched cell, and the runs of the list of items
+  // by cell (prefix sums of the counts, in the order of the maps' slots).
+  std::size_t most = chunks;  // chunks of items or of a map's slots
+  for (std::size_t l = 0; l < nlevels; ++l)
+    most = std::max(most, (maps[l].size() + bulk_chunk - 1) / bulk_chunk);
+  Buffer<std::uint32_t> by_cell;  // items, by cell
+  Buffer<double> bounds;          // per chunk of slots: max h_k, max |c_k|
+  ok = by_cell.resize_uninitialised(n) && bounds.resize_uninitialised(4 * most) &&
+       (most <= status.size() || status.resize_uninitialised(most));
+  std::size_t at = 0;
+  for (std::size_t l = 0; ok && l < nlevels; ++l) {
+    TouchedMap &map = maps[l];
+    for (std::size_t s = 0; s < map.size(); ++s) {
+      if (map[s].key == TouchedMap::empty) continue;
+      map[s].start = std::uint32_t(at);
+      map[s].first = 0;
+      at += map[s].count;
+    }
+  }
+  for (std::size_t l = 0; ok && l < nlevels; ++l) {
+    TouchedMap &map = maps[l];
+    Level &lv = levels_[l];
+    std::size_t const mchunks_l = (map.size() + bulk_chunk - 1) / bulk_chunk;
+    for_each_chunk(nt, mchunks_l, [&](std::size_t k) {
+      auto const [s0, s1] = items_of(k, map.size());
+      status[k] = ChunkStatus{n, Status::success};
+      for (std::size_t s = s0; s < s1; ++s) {
+        if (map[s].key == TouchedMap::empty) continue;
+        Cell &cell = lv.cells[map[s].cell];
+        if (!cell.reserve(cell.size() + map[s].count)) {
+          status[k] = ChunkStatus{s, Status::no_memory};
+          return;
+        }
+      }
+    });
+    for (std::size_t k = 0; k < mchunks_l; ++k)
+      if (status[k].status != Status::success) ok = false;
+  }
+  if (!ok) {
+    clear_marks();
+    return Status::no_memory;
+  }
+  // Nothing fails from here on.
+
+  // Pass 6: the items into their cells' runs, each run sorted.
+  for_each_chunk(nt, chunks, [&](std::size_t k) {
+    auto const [i0, i1] = items_of(k, n);
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (i + prefetch_ahead < i1)
+        PW85_PREFETCH(&maps[std::size_t(place[i + prefetch_ahead])][slot_of[i + prefetch_ahead]]);
+      Touched &t = maps[std::size_t(place[i])][slot_of[i]];
+      by_cell[t.start + __atomic_fetch_add(&t.first, 1u, __ATOMIC_RELAXED)] =
+          std::uint32_t(i);
+    }
+  });
+
+  // Pass 7: each touched cell filled from its run, in the items' order;
+  // the ids' slots; the levels' bounds (maxima, in any order).
+  for (std::size_t l = 0; l < nlevels; ++l) {
+    TouchedMap &map = maps[l];
+    Level &lv = levels_[l];
+    if (items_in[l] == 0) continue;
+    std::size_t const mchunks_l = (map.size() + bulk_chunk - 1) / bulk_chunk;
+    for_each_chunk(nt, mchunks_l, [&](std::size_t k) {
+      auto const [s0, s1] = items_of(k, map.size());
+      double b[4] = {0.0, 0.0, 0.0, 0.0};
+      for (std::size_t s = s0; s < s1; ++s) {
+        Touched const &t = map[s];
+        if (t.key == TouchedMap::empty) continue;
+        std::uint32_t *run = by_cell.data() + t.start;
+        std::sort(run, run + t.count);
+        Cell &cell = lv.cells[t.cell];
+        for (std::uint32_t r = 0; r < t.count; ++r) {
+          std::size_t const i = run[r];
+          // The inputs of an item some way ahead in the list (the same
+          // items, sorted per run or not yet): items in cell order are
+          // scattered in the input arrays, each read a cache miss.
+          std::size_t const ahead = by_cell[std::min<std::size_t>(t.start + r + prefetch_ahead, n - 1)];
+          PW85_PREFETCH(c + dim * ahead);
+          PW85_PREFETCH(q + sym * ahead);
+          PW85_PREFETCH(q + sym * ahead + sym - 1);
+          PW85_PREFETCH(ids + ahead);
+          Entry e;
+          make_entry(ids[i], c + dim * i, q + sym * i, &e);
+          for (int a = 0; a < dim; ++a) {
+            b[a] = std::max(b[a], e.h[a]);
+            b[3] = std::max(b[3], std::fabs(e.c[a]));
+          }
+          cell.push_back_reserved(static_cast<Entry &&>(e));
+          slots_[ids[i]] = Slot{std::int32_t(l), t.cell,
+                                static_cast<std::uint32_t>(cell.size() - 1)};
+        }
+      }
+      for (int a = 0; a < 4; ++a) bounds[4 * k + a] = b[a];
+    });
+    for (std::size_t k = 0; k < mchunks_l; ++k) {
+      for (int a = 0; a < dim; ++a) lv.hmax[a] = std::max(lv.hmax[a], bounds[4 * k + a]);
+      cmax_ = std::max(cmax_, bounds[4 * k + 3]);
+    }
+    lv.count += items_in[l];
+    count_ += items_in[l];
+  }
+  return Status::success;
+}
+
+}  // namespace pw85::detail
