@@ -4,7 +4,8 @@
 // For a pair (i, j, n), r = (c_j + n∘L) − c_i, the derivatives of μ²
 // (pw85.h, pw85_contact_derivatives(); docs/geometry.rst): g = ∂μ²/∂r,
 // and ∂μ²/∂ω_i, ∂μ²/∂ω_j for rotations of each ellipsoid about its
-// centre. With U′ = dU/dμ²: force on j −U′·g, on i +U′·g; torque on i
+// centre, computed from the maximiser λ of the all-pairs query (one search
+// per pair). With U′ = dU/dμ²: force on j −U′·g, on i +U′·g; torque on i
 // −U′·∂μ²/∂ω_i, on j −U′·∂μ²/∂ω_j. Overlap energy (docs/packing.rst):
 // U = ε(1 − μ)² for μ < 1, 0 beyond, so U′ = dU/dμ·dμ/dμ² = −ε(1 − μ)/μ;
 // at μ = 0 (r = 0, coincident centres) every derivative of μ² is 0 and
@@ -17,6 +18,7 @@
 
 #include "broad.hpp"
 #include "geometry.hpp"
+#include "ldl.hpp"
 
 #if defined(PW85_OPENMP)
 #include <omp.h>
@@ -38,43 +40,87 @@ struct PairTerm {
 // order (bounded memory whatever the number of pairs).
 constexpr std::size_t block_pairs = std::size_t(1) << 16;
 
-// The pair term of a pair (i, j, n) given its U and U′ (μ² from `mu2`, or
-// from the derivatives when kind is overlap).
-Status pair_term(Index const &index, PairHit const &p, EnergySpec const &spec,
-                 double u_user, double du_user, PairTerm *out) noexcept {
+// The derivatives of μ² from the maximiser λ of the pair's search
+// (pw85.h, pw85_contact_derivatives(), by the envelope theorem), with
+// s = Q(λ)⁻¹·r solved in double on Q(λ) scaled by a power of two:
+// g = 2λ(1 − λ)·s, ∂μ²/∂ω1 = 2λ(1 − λ)²·s × (Q1·s),
+// ∂μ²/∂ω2 = 2λ²(1 − λ)·s × (Q2·s). False when Q(λ) does not factorise
+// or a result is not finite (the caller then takes the full
+// contact_geometry()).
+bool derivatives_at(double const r[dim], double const q1[sym],
+                    double const q2[sym], double lambda, double g[dim],
+                    double w1[dim], double w2[dim]) noexcept {
+  double q[sym];
+  for (int k = 0; k < sym; ++k) q[k] = (1.0 - lambda) * q1[k] + lambda * q2[k];
+  double const tr = q[0] + q[3] + q[5];
+  if (!(tr > 0.0) || !std::isfinite(tr)) return false;
+  int const e = -std::ilogb(tr);
+  for (int k = 0; k < sym; ++k) q[k] = std::ldexp(q[k], e);
+  Ldl f;
+  if (!ldl_decomp(q, &f)) return false;
+  double sv[dim];
+  ldl_solve(f, r, sv);
+  for (int k = 0; k < dim; ++k) sv[k] = std::ldexp(sv[k], e);
+  double t1[dim], t2[dim];
+  sym_mul(q1, sv, t1);
+  sym_mul(q2, sv, t2);
+  double const a = 2.0 * lambda * (1.0 - lambda);
+  double const b1 = a * (1.0 - lambda), b2 = a * lambda;
+  for (int k = 0; k < dim; ++k) {
+    int const j = (k + 1) % dim, l = (k + 2) % dim;
+    g[k] = a * sv[k];
+    w1[k] = b1 * (sv[j] * t1[l] - sv[l] * t1[j]);
+    w2[k] = b2 * (sv[j] * t2[l] - sv[l] * t2[j]);
+  }
+  for (int k = 0; k < dim; ++k)
+    if (!std::isfinite(g[k]) || !std::isfinite(w1[k]) || !std::isfinite(w2[k]))
+      return false;
+  return true;
+}
+
+// The pair term of a pair (i, j, n) of μ² and λ from the all-pairs query,
+// given U and U′.
+Status pair_term(Index const &index, PairHit const &p, double u, double du,
+                 PairTerm *out) noexcept {
+  out->u = u;
+  for (int k = 0; k < dim; ++k) out->f[k] = out->ti[k] = out->tj[k] = 0.0;
+  if (du == 0.0 || p.mu2 == 0.0) return Status::success;  // no force
   double ci[dim], cj[dim], qi[sym], qj[sym];
   Status st = index.get(p.i, ci, qi);
   if (st == Status::success) st = index.get(p.j, cj, qj);
   if (st != Status::success) return st;
   ImageVector v;
   image_vector_exact(ci, cj, p.shift, index.box(), &v);
-  // The derivatives at r rounded to doubles (v.r): exact where r is a
-  // double (pw85_index.h, "Images"), else within 2⁻⁵³ relative.
-  double geometry[geom::size], d[deriv::size];
-  st = contact_geometry(v.r, qi, qj, geometry, d);
-  if (st != Status::success) return st;
-  double u, du;
-  if (spec.kind == EnergyKind::overlap) {
-    double const mu2 = geometry[geom::mu2];
-    double const mu = std::sqrt(mu2);
-    if (!(mu < 1.0)) {
-      u = 0.0;
-      du = 0.0;
-    } else {
-      u = spec.param * (1.0 - mu) * (1.0 - mu);
-      du = mu > 0.0 ? -spec.param * (1.0 - mu) / mu : 0.0;
+  // r rounded to doubles (v.r): exact where r is a double (pw85_index.h,
+  // "Images"), else within 2⁻⁵³ relative.
+  double g[dim], w1[dim], w2[dim];
+  if (!derivatives_at(v.r, qi, qj, p.lambda, g, w1, w2)) {
+    double geometry[geom::size], d[deriv::size];
+    st = contact_geometry(v.r, qi, qj, geometry, d);
+    if (st != Status::success) return st;
+    for (int k = 0; k < dim; ++k) {
+      g[k] = d[deriv::r12 + k];
+      w1[k] = d[deriv::rot1 + k];
+      w2[k] = d[deriv::rot2 + k];
     }
-  } else {
-    u = u_user;
-    du = du_user;
   }
-  out->u = u;
   for (int k = 0; k < dim; ++k) {
-    out->f[k] = du == 0.0 ? 0.0 : -du * d[deriv::r12 + k];
-    out->ti[k] = du == 0.0 ? 0.0 : -du * d[deriv::rot1 + k];
-    out->tj[k] = du == 0.0 ? 0.0 : -du * d[deriv::rot2 + k];
+    out->f[k] = -du * g[k];
+    out->ti[k] = -du * w1[k];
+    out->tj[k] = -du * w2[k];
   }
   return Status::success;
+}
+
+// U and U′ of the overlap energy at μ².
+void overlap_energy(double eps, double mu2, double *u, double *du) noexcept {
+  double const mu = std::sqrt(mu2);
+  if (!(mu < 1.0)) {
+    *u = *du = 0.0;
+  } else {
+    *u = eps * (1.0 - mu) * (1.0 - mu);
+    *du = mu > 0.0 ? -eps * (1.0 - mu) / mu : 0.0;
+  }
 }
 
 // The largest stored id plus one (0 when empty).
@@ -89,7 +135,8 @@ std::size_t ids_in_use(Index const &index) noexcept {
 
 Status assembly_energy(Index const &index, EnergySpec const &spec,
                        int threads, std::size_t n, double *energy,
-                       double *forces, double *torques) noexcept {
+                       double *forces, double *torques,
+                       std::size_t *npairs) noexcept {
   if (!std::isfinite(spec.param)) return Status::not_finite;
   if ((spec.kind != EnergyKind::overlap && spec.kind != EnergyKind::user) ||
       !(spec.param > 0.0) ||
@@ -99,26 +146,28 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
 #if !defined(PW85_OPENMP)
   threads = 1;
 #endif
-  // The pairs: overlapping or tangent ones for the overlap energy (the
-  // others have U = 0), those with μ² < t for a caller's energy.
+  // The pairs with μ² < t (t = 1 for the overlap energy: the others have
+  // U = 0), with μ² and λ: one search per pair.
   Buffer<PairHit> pairs;
   bool const user = spec.kind == EnergyKind::user;
-  Status st = index.pairs(user, user ? spec.param : 1.0, threads, &pairs,
+  Status st = index.pairs(true, user ? spec.param : 1.0, threads, &pairs,
                           nullptr);
   if (st != Status::success) return st;
-  // U and U′ of a caller's energy, at the μ² of the query, in pair order,
-  // in the calling thread.
+  // U and U′ at the μ² of the query; a caller's in pair order, in the
+  // calling thread.
   Buffer<double> uu;
-  if (user) {
-    if (!uu.resize_uninitialised(2 * pairs.size())) return Status::no_memory;
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-      double out[2] = {NAN, NAN};
-      if (spec.fn(pairs[k].mu2, spec.data, out) != 0) return Status::cancelled;
-      if (!std::isfinite(out[0]) || !std::isfinite(out[1]))
-        return Status::not_finite;
-      uu[2 * k] = out[0];
-      uu[2 * k + 1] = out[1];
+  if (!uu.resize_uninitialised(2 * pairs.size())) return Status::no_memory;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (!user) {
+      overlap_energy(spec.param, pairs[k].mu2, &uu[2 * k], &uu[2 * k + 1]);
+      continue;
     }
+    double out[2] = {NAN, NAN};
+    if (spec.fn(pairs[k].mu2, spec.data, out) != 0) return Status::cancelled;
+    if (!std::isfinite(out[0]) || !std::isfinite(out[1]))
+      return Status::not_finite;
+    uu[2 * k] = out[0];
+    uu[2 * k + 1] = out[1];
   }
   bool const want = forces != nullptr || torques != nullptr;
   Buffer<double> f, t;
@@ -134,8 +183,7 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
     Status failure = Status::success;
     auto one = [&](std::size_t k) -> Status {
       std::size_t const p = b0 + k;
-      return pair_term(index, pairs[p], spec, user ? uu[2 * p] : 0.0,
-                       user ? uu[2 * p + 1] : 0.0, &terms[k]);
+      return pair_term(index, pairs[p], uu[2 * p], uu[2 * p + 1], &terms[k]);
     };
     int const nt = int(std::min<std::size_t>(std::size_t(threads), m / 256 + 1));
     if (nt <= 1) {
@@ -178,6 +226,7 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
     }
   }
   *energy = sum;
+  if (npairs != nullptr) *npairs = pairs.size();
   if (forces != nullptr && n > 0)
     std::memcpy(forces, f.data(), 3 * n * sizeof(double));
   if (torques != nullptr && n > 0)

@@ -36,10 +36,12 @@ struct EnergySpec {
 // invalid_argument for an unknown kind, ε or t ≤ 0, a user kind without
 // a function, threads < 1, n ≤ the largest stored id; not_finite for a
 // parameter, or a value returned by the function, not finite; cancelled
-// when the function returns non-zero.
+// when the function returns non-zero. *npairs, when not null: the number
+// of pairs summed.
 Status assembly_energy(Index const &index, EnergySpec const &spec,
                        int threads, std::size_t n, double *energy,
-                       double *forces, double *torques) noexcept;
+                       double *forces, double *torques,
+                       std::size_t *npairs = nullptr) noexcept;
 
 }  // namespace pw85::detail
 
