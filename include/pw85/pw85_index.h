@@ -418,9 +418,11 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  *        force and torque on every ellipsoid.
  *
  * The pairs are those of pw85_index_pairs_within() with t = `param`
- * (PW85_ENERGY_USER), or with t = 1 (PW85_ENERGY_OVERLAP: the other
- * pairs have U = 0); each pair and
- * image (i, j, n) once, with μ² and its maximiser λ from that query. For
+ * (PW85_ENERGY_USER), or those of pw85_index_overlapping_pairs()
+ * (PW85_ENERGY_OVERLAP: the other pairs have U = 0), each pair and image
+ * (i, j, n) once, with μ² and its maximiser λ from the search of
+ * pw85_contact_function() on the exact image vector (the μ² and λ that
+ * pw85_index_pairs_within() reports, bit for bit). For
  * each, with r = (c_j + n∘L) − c_i rounded to doubles (exact where the
  * centres and sides lie on a common grid, see "Images"), the derivatives
  * of μ² that pw85_contact_derivatives() documents, computed from λ by the
@@ -439,8 +441,10 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  * Units: energy in the unit of U (ε), forces in that unit per length,
  * torques in that unit (per radian). The sums are made in the order
  * (i, j, n): the outputs are the same, bit for bit, for any number of
- * threads. Cost: one all-pairs query with μ² (one search per pair), then
- * a 3×3 solve per pair, on `threads` threads. Accuracy: forces and
+ * threads. Cost: one all-pairs query, one search per pair reported (of
+ * the query itself for PW85_ENERGY_USER, after it for the overlap
+ * energy, whose query decides most pairs by cheaper filters), then a 3×3
+ * solve per pair, on `threads` threads. Accuracy: forces and
  * torques agree with central differences of the energy to 1.2e-9
  * relative (tests/test-energy.c).
  *

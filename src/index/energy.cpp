@@ -78,23 +78,46 @@ bool derivatives_at(double const r[dim], double const q1[sym],
   return true;
 }
 
-// The pair term of a pair (i, j, n) of μ² and λ from the all-pairs query,
-// given U and U′.
-Status pair_term(Index const &index, PairHit const &p, double u, double du,
-                 PairTerm *out) noexcept {
-  out->u = u;
-  for (int k = 0; k < dim; ++k) out->f[k] = out->ti[k] = out->tj[k] = 0.0;
-  if (du == 0.0 || p.mu2 == 0.0) return Status::success;  // no force
+// U and U′ of the overlap energy at μ².
+void overlap_energy(double eps, double mu2, double *u, double *du) noexcept {
+  double const mu = std::sqrt(mu2);
+  if (!(mu < 1.0)) {
+    *u = *du = 0.0;
+  } else {
+    *u = eps * (1.0 - mu) * (1.0 - mu);
+    *du = mu > 0.0 ? -eps * (1.0 - mu) / mu : 0.0;
+  }
+}
+
+// The pair term of a pair (i, j, n): U and U′ given (a caller's energy,
+// μ² and λ from the query), or, for the overlap energy (overlap ≥ 0: ε),
+// μ² and λ from the search of pw85_contact_function() on the exact image
+// vector, as the query with μ² would have found them (broad.hpp,
+// image_contact()).
+Status pair_term(Index const &index, PairHit const &p, double overlap,
+                 double u, double du, PairTerm *out) noexcept {
   double ci[dim], cj[dim], qi[sym], qj[sym];
   Status st = index.get(p.i, ci, qi);
   if (st == Status::success) st = index.get(p.j, cj, qj);
   if (st != Status::success) return st;
   ImageVector v;
   image_vector_exact(ci, cj, p.shift, index.box(), &v);
+  double mu2 = p.mu2, lambda = p.lambda;
+  if (overlap >= 0.0) {
+    double ml[2] = {NAN, NAN};
+    st = image_contact(v, qi, qj, ml);
+    if (st != Status::success) return st;
+    mu2 = ml[0];
+    lambda = ml[1];
+    overlap_energy(overlap, mu2, &u, &du);
+  }
+  out->u = u;
+  for (int k = 0; k < dim; ++k) out->f[k] = out->ti[k] = out->tj[k] = 0.0;
+  if (du == 0.0 || mu2 == 0.0) return Status::success;  // no force
   // r rounded to doubles (v.r): exact where r is a double (pw85_index.h,
   // "Images"), else within 2⁻⁵³ relative.
   double g[dim], w1[dim], w2[dim];
-  if (!derivatives_at(v.r, qi, qj, p.lambda, g, w1, w2)) {
+  if (!derivatives_at(v.r, qi, qj, lambda, g, w1, w2)) {
     double geometry[geom::size], d[deriv::size];
     st = contact_geometry(v.r, qi, qj, geometry, d);
     if (st != Status::success) return st;
@@ -110,17 +133,6 @@ Status pair_term(Index const &index, PairHit const &p, double u, double du,
     out->tj[k] = -du * w2[k];
   }
   return Status::success;
-}
-
-// U and U′ of the overlap energy at μ².
-void overlap_energy(double eps, double mu2, double *u, double *du) noexcept {
-  double const mu = std::sqrt(mu2);
-  if (!(mu < 1.0)) {
-    *u = *du = 0.0;
-  } else {
-    *u = eps * (1.0 - mu) * (1.0 - mu);
-    *du = mu > 0.0 ? -eps * (1.0 - mu) / mu : 0.0;
-  }
 }
 
 // The largest stored id plus one (0 when empty).
@@ -146,22 +158,21 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
 #if !defined(PW85_OPENMP)
   threads = 1;
 #endif
-  // The pairs with μ² < t (t = 1 for the overlap energy: the others have
-  // U = 0), with μ² and λ: one search per pair.
+  // The pairs: for a caller's energy, those with μ² < t, with μ² and λ;
+  // for the overlap energy, the overlapping or tangent ones (the others
+  // have U = 0), decided by the filters of pw85_overlap(), then searched
+  // (μ², λ) in pair_term(): one search per pair that has a force.
   Buffer<PairHit> pairs;
   bool const user = spec.kind == EnergyKind::user;
-  Status st = index.pairs(true, user ? spec.param : 1.0, threads, &pairs,
+  Status st = index.pairs(user, user ? spec.param : 1.0, threads, &pairs,
                           nullptr);
   if (st != Status::success) return st;
-  // U and U′ at the μ² of the query; a caller's in pair order, in the
-  // calling thread.
+  // U and U′ of a caller's energy at the μ² of the query, in pair order,
+  // in the calling thread.
   Buffer<double> uu;
-  if (!uu.resize_uninitialised(2 * pairs.size())) return Status::no_memory;
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    if (!user) {
-      overlap_energy(spec.param, pairs[k].mu2, &uu[2 * k], &uu[2 * k + 1]);
-      continue;
-    }
+  if (user && !uu.resize_uninitialised(2 * pairs.size()))
+    return Status::no_memory;
+  for (std::size_t k = 0; user && k < pairs.size(); ++k) {
     double out[2] = {NAN, NAN};
     if (spec.fn(pairs[k].mu2, spec.data, out) != 0) return Status::cancelled;
     if (!std::isfinite(out[0]) || !std::isfinite(out[1]))
@@ -183,7 +194,9 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
     Status failure = Status::success;
     auto one = [&](std::size_t k) -> Status {
       std::size_t const p = b0 + k;
-      return pair_term(index, pairs[p], uu[2 * p], uu[2 * p + 1], &terms[k]);
+      return user ? pair_term(index, pairs[p], -1.0, uu[2 * p], uu[2 * p + 1],
+                              &terms[k])
+                  : pair_term(index, pairs[p], spec.param, 0.0, 0.0, &terms[k]);
     };
     int const nt = int(std::min<std::size_t>(std::size_t(threads), m / 256 + 1));
     if (nt <= 1) {

@@ -13,8 +13,10 @@
 //    smallest semi-axis, ℓ the smallest of all; inertia m·a²,
 //    a its largest), until the energy is exactly 0: the jamming protocol
 //    of O'Hern, Silbert, Liu and Nagel (PRE 68, 011306, 2003).
-// 3. Where the energy stalls above 0, the box grows, then bisection
-//    between the densest certified and the least jammed fraction.
+// 3. Where the energy stalls above 0, the configuration grown to contact
+//    is certified (a lower bound of the jamming fraction), and the box
+//    grows to the midpoint: bisection between the densest certified and
+//    the least jammed fraction.
 // 4. A configuration of zero energy is certified by the all-pairs overlap
 //    query on the real shapes (never trusted from the inflation alone);
 //    any configuration is certified by scaling box and centres by
@@ -54,7 +56,7 @@ constexpr double max_move = 0.1;
 constexpr std::size_t stall_window = 1000;
 constexpr double stall_drop = 0.05;
 constexpr double bisect_tol = 1e-3;
-// Decompression after a stall with nothing certified above.
+// The largest decompression after a stall.
 constexpr double backoff = 0.98;
 
 std::uint64_t splitmix64(std::uint64_t x) noexcept {
@@ -463,6 +465,10 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
       }
     }
     bool stalled = false;
+    if (!zero && window_energy == HUGE_VAL) {  // the phase's first step
+      window_energy = energy_;
+      window_start = steps_;
+    }
     if (!zero && steps_ - window_start >= stall_window) {
       stalled = energy_ > (1.0 - stall_drop) * window_energy;
       window_energy = energy_;
@@ -487,8 +493,16 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
       }
       next = std::min(prm_.target, 0.5 * (phi_lo + phi_hi));
     } else {
+      // Stalled: the configuration grown to contact is certified, and a
+      // lower bound of the jamming fraction of the run; bisect above it.
       phi_hi = phi_;
-      next = phi_lo > 0.0 ? 0.5 * (phi_lo + phi_hi) : phi_hi * backoff;
+      s = certify_current(&cf, true);
+      if (s != Status::success) break;
+      if (cf.set) phi_lo = std::max(phi_lo, cf.phi);
+      if (cf.set && cf.phi > best_.phi) best_ = static_cast<Config &&>(cf);
+      // (at most `backoff` at a time: the grown configuration may be far
+      // below, held apart by a few deep overlaps)
+      next = std::max(0.5 * (phi_lo + phi_hi), phi_hi * backoff);
     }
     if (phi_lo > 0.0 && phi_hi - phi_lo <= bisect_tol * phi_hi) {
       result = PackOutcome::jammed;
