@@ -88,6 +88,12 @@ static void check_packing(Packing const *s) {
   }
 }
 
+/* Fewer ellipsoids in sanitizer builds and under valgrind
+ * (tests/meson.build sets PW85_TEST_SMALL there). */
+static size_t size_of_case(size_t n) {
+  return g_getenv("PW85_TEST_SMALL") ? n / 3 : n;
+}
+
 static double *triaxial(size_t n, double b, double c, int poly) {
   double *a = g_new(double, 3 * n);
   for (size_t i = 0; i < n; i++) {
@@ -114,7 +120,7 @@ static void test_targets(void) {
       {0.5, 0.2, 0.45, 1, 0, {1.5, 1, 1}},
   };
   for (size_t k = 0; k < G_N_ELEMENTS(cases); k++) {
-    size_t const n = 300;
+    size_t const n = size_of_case(300);
     double *a = triaxial(n, cases[k].b, cases[k].c, cases[k].poly);
     pw85_pack_options o;
     pw85_pack_options_init(&o);
@@ -137,7 +143,7 @@ static void test_targets(void) {
 /* The same inputs give the same outputs, bit for bit: twice, and on 1 and
  * 2 threads; another seed gives another packing. */
 static void test_determinism(void) {
-  size_t const n = 400;
+  size_t const n = size_of_case(400);
   double *a = triaxial(n, 0.5, 0.2, 1);
   pw85_pack_options o;
   pw85_pack_options_init(&o);
@@ -179,7 +185,7 @@ static int cancel_at_third(pw85_pack_progress const *p, void *data) {
  * the target; a target beyond jamming returns JAMMED, certified, below
  * it. */
 static void test_outcomes(void) {
-  size_t const n = 200;
+  size_t const n = size_of_case(200);
   double *a = triaxial(n, 1.0, 1.0, 0);
   pw85_pack_options o;
   pw85_pack_options_init(&o);
@@ -223,7 +229,7 @@ static void test_outcomes(void) {
 /* PW85_PACK_ALIGNED: the largest semi-axis along the axis, after the
  * packing too (rotations only about the axis). */
 static void test_aligned(void) {
-  size_t const n = 200;
+  size_t const n = size_of_case(200);
   double *a = triaxial(n, 0.4, 0.25, 0);
   for (size_t i = 0; i < n; i += 2) { /* the largest one second, for some */
     double const t = a[3 * i];
