@@ -15,13 +15,14 @@
  * then the overlap energy of pw85_index_energy(), U = Σ(1 − μ)² over the
  * pairs with μ < 1, is minimised over centres and orientations by FIRE
  * (Bitzek et al., Phys. Rev. Lett. 97, 170201, 2006), the shapes inflated
- * by 1 + 2⁻¹⁰, until no inflated pair overlaps: the jamming protocol of
- * O'Hern et al. (Phys. Rev. E 68, 011306, 2003), with the contact
- * function of Perram and Wertheim as the overlap measure of ellipsoids
- * (as Donev et al. and Schreck and O'Hern use it). Where the energy stops
- * decreasing above zero (the target is beyond jamming for this protocol),
- * the box is expanded and compressed again by bisection between the
- * densest certified and the least jammed packing fraction. At any time, a
+ * by 1 + 2⁻¹⁰, until √U < 2⁻¹¹ (no real pair can then overlap): the
+ * jamming protocol of O'Hern et al. (Phys. Rev. E 68, 011306, 2003), with
+ * the contact function of Perram and Wertheim as the overlap measure of
+ * ellipsoids (Zeravcic et al., EPL 87, 26001, 2009). Where the energy
+ * falls by less than 5% in 1000 steps (the target is beyond jamming for
+ * this protocol), the box grows (by 2% at most) and bisection proceeds
+ * between the densest certified and the least jammed packing fraction,
+ * until they are within 0.1%. At any time, a
  * configuration is made certified by scaling the box and centres by
  * 1/min μ (times 1 + 2⁻²⁰): μ of a pair scales with the distance of the
  * centres, so the smallest μ over the pairs is the largest uniform growth
