@@ -28,6 +28,8 @@ namespace pw85 {
 /** pw85_pack_options with the defaults of pw85_pack_options_init().
  *  @since 2.4.0 */
 struct PackOptions : pw85_pack_options {
+  /** The defaults of pw85_pack_options_init(); set the members that
+   *  differ. */
   PackOptions() noexcept : pw85_pack_options() {
     pw85_pack_options_init(this);
   }
@@ -45,6 +47,8 @@ struct Packing {
   int outcome = PW85_PACK_LIMIT;  ///< PW85_PACK_TARGET, ..._LIMIT, ...
 };
 
+/// @cond PW85_INTERNAL
+// The implementation of pack() (not part of the API).
 namespace detail_pack {
 
 template <typename T>
@@ -77,29 +81,32 @@ int call_progress(pw85_pack_progress const *p, void *data) noexcept {
 #endif
 }
 
-inline int run(std::vector<double> const &semi_axes,
-               pw85_pack_options const &options, Packing &out) noexcept {
-  if (semi_axes.size() % 3 != 0) return PW85_EINVAL;
-  std::size_t const n = semi_axes.size() / 3;
-  Packing r;
-  int status = resize(r.centres, 3 * n);
-  if (status == PW85_SUCCESS) status = resize(r.quaternions, 4 * n);
-  if (status == PW85_SUCCESS) status = resize(r.forms, 6 * n);
-  if (status != PW85_SUCCESS) return status;
-  status = pw85_pack(n, semi_axes.data(), &options, r.box.data(),
-                     r.centres.data(), r.quaternions.data(), r.forms.data(),
-                     &r.phi, &r.outcome);
-  if (status != PW85_SUCCESS) return status;
-  out.box = r.box;
-  out.centres.swap(r.centres);
-  out.quaternions.swap(r.quaternions);
-  out.forms.swap(r.forms);
-  out.phi = r.phi;
-  out.outcome = r.outcome;
-  return PW85_SUCCESS;
-}
+struct Run {
+  static int call(std::vector<double> const &semi_axes,
+                  pw85_pack_options const &options, Packing &out) noexcept {
+    if (semi_axes.size() % 3 != 0) return PW85_EINVAL;
+    std::size_t const n = semi_axes.size() / 3;
+    Packing r;
+    int status = resize(r.centres, 3 * n);
+    if (status == PW85_SUCCESS) status = resize(r.quaternions, 4 * n);
+    if (status == PW85_SUCCESS) status = resize(r.forms, 6 * n);
+    if (status != PW85_SUCCESS) return status;
+    status = pw85_pack(n, semi_axes.data(), &options, r.box.data(),
+                       r.centres.data(), r.quaternions.data(), r.forms.data(),
+                       &r.phi, &r.outcome);
+    if (status != PW85_SUCCESS) return status;
+    out.box = r.box;
+    out.centres.swap(r.centres);
+    out.quaternions.swap(r.quaternions);
+    out.forms.swap(r.forms);
+    out.phi = r.phi;
+    out.outcome = r.outcome;
+    return PW85_SUCCESS;
+  }
+};
 
 }  // namespace detail_pack
+/// @endcond
 
 /**
  * @brief Pack the ellipsoids of `semi_axes` (3 per ellipsoid) with the
@@ -112,7 +119,7 @@ inline int run(std::vector<double> const &semi_axes,
  */
 inline int pack(std::vector<double> const &semi_axes,
                 PackOptions const &options, Packing &out) noexcept {
-  return detail_pack::run(semi_axes, options, out);
+  return detail_pack::Run::call(semi_axes, options, out);
 }
 
 /**
@@ -129,7 +136,7 @@ int pack(std::vector<double> const &semi_axes, PackOptions const &options,
   pw85_pack_options o = options;
   o.progress = &detail_pack::call_progress<G>;
   o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
-  return detail_pack::run(semi_axes, o, out);
+  return detail_pack::Run::call(semi_axes, o, out);
 }
 
 }  // namespace pw85
