@@ -19,7 +19,7 @@
  * jamming protocol of O'Hern et al. (Phys. Rev. E 68, 011306, 2003), with
  * the contact function of Perram and Wertheim as the overlap measure of
  * ellipsoids (Zeravcic et al., EPL 87, 26001, 2009). Where the energy
- * falls by less than 5% in 1000 steps (the target is beyond jamming for
+ * falls by less than half in 500 steps (the target is beyond jamming for
  * this protocol), the box grows (by 2% at most) and bisection proceeds
  * between the densest certified and the least jammed packing fraction,
  * until they are within 0.1%. At any time, a
