@@ -32,6 +32,8 @@ inline int to_code(pw85::detail::Status status) noexcept {
       return PW85_ENOCONV;
     case Status::invalid_argument:
       return PW85_EINVAL;
+    case Status::cancelled:
+      return PW85_ECANCELLED;
   }
   return PW85_ENOMEM;  // not reached: every Status is mapped above
 }

@@ -136,6 +136,8 @@ const char *pw85_strerror(int status) noexcept {
       return "the method did not converge";
     case PW85_EINVAL:
       return "an argument is outside its documented domain";
+    case PW85_ECANCELLED:
+      return "cancelled by a function of the caller";
     default:
       return "unknown pw85 status";
   }

@@ -8,6 +8,7 @@
 
 #include "checks.hpp"
 #include "facade.hpp"
+#include "index/energy.hpp"
 #include "index/index.hpp"
 
 namespace core = pw85::detail;
@@ -211,6 +212,21 @@ int pw85_index_pairs_within(pw85_index const *index, double t, int threads,
   }
   *count = pairs.size();
   return PW85_SUCCESS;
+}
+
+int pw85_index_energy(pw85_index const *index, int kind, double param,
+                      pw85_pair_energy fn, void *data, int threads, size_t n,
+                      double *energy, double *forces,
+                      double *torques) noexcept {
+  if (index == nullptr || energy == nullptr) return PW85_EFAULT;
+  if (kind != PW85_ENERGY_OVERLAP && kind != PW85_ENERGY_USER)
+    return PW85_EINVAL;
+  core::EnergySpec const spec{kind == PW85_ENERGY_OVERLAP
+                                  ? core::EnergyKind::overlap
+                                  : core::EnergyKind::user,
+                              param, fn, data};
+  return to_code(core::assembly_energy(index->index, spec, threads, n, energy,
+                                       forces, torques));
 }
 
 }  // extern "C"

@@ -17,6 +17,7 @@ enum class Status {
   no_memory,              // PW85_ENOMEM
   no_convergence,         // PW85_ENOCONV (legacy contact functions)
   invalid_argument,       // PW85_EINVAL
+  cancelled,              // PW85_ECANCELLED (a caller's function said stop)
 };
 
 }  // namespace pw85::detail

@@ -4,6 +4,8 @@
  * const arrays. */
 #include <pw85/pw85_index.h>
 #include <pw85/pw85_index.h>
+#include <pw85/pw85_pack.h>
+#include <pw85/pw85_pack.h>
 #include <pw85/pw85.h>
 #include <pw85/pw85.h>
 #include <pw85.h>

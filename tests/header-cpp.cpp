@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Compiled as C++ (-Werror -pedantic): pw85.h and pw85.hpp stand alone and
 // together, in either order; pw85_index.hpp first, standing alone.
+#include <pw85/pw85_pack.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
 #include <pw85/pw85.hpp>

@@ -32,7 +32,7 @@ module pw85
   !> Status codes (pw85.h): values never change.
   integer(c_int), parameter, public :: PW85_SUCCESS = 0, PW85_EFAULT = 1, &
     PW85_EDOM = 2, PW85_ENOTPOSDEF = 3, PW85_ERANGE = 4, PW85_ENOMEM = 5, &
-    PW85_ENOCONV = 6, PW85_EINVAL = 7
+    PW85_ENOCONV = 6, PW85_EINVAL = 7, PW85_ECANCELLED = 8
   !> Tolerance of the ellipsoid constructors (pw85.h, @since 2.2.0).
   real(c_double), parameter, public :: PW85_UNIT_TOL = 1e-6_c_double
   !> Offsets (from 0, as in C) into the outputs of pw85_contact_geometry

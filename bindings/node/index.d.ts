@@ -16,7 +16,7 @@ export const DERIV: Readonly<{ R12: 0; ROT1: 3; ROT2: 6; Q1: 9; Q2: 15;
   SIZE: 21 }>;
 export const status: Readonly<{
   PW85_SUCCESS: 0; PW85_EFAULT: 1; PW85_EDOM: 2; PW85_ENOTPOSDEF: 3;
-  PW85_ERANGE: 4; PW85_ENOMEM: 5; PW85_ENOCONV: 6; PW85_EINVAL: 7;
+  PW85_ERANGE: 4; PW85_ENOMEM: 5; PW85_ENOCONV: 6; PW85_EINVAL: 7; PW85_ECANCELLED: 8;
 }>;
 /** The path the library was loaded from (PW85_LIBRARY, or the soname). */
 export const libraryPath: string;

@@ -48,6 +48,7 @@ const status = Object.freeze({
   PW85_ENOMEM: 5,
   PW85_ENOCONV: 6,
   PW85_EINVAL: 7,
+  PW85_ECANCELLED: 8,
 });
 const statusNames = Object.fromEntries(
   Object.entries(status).map(([name, value]) => [value, name]));

@@ -125,6 +125,9 @@ extern "C" {
 #define PW85_EINVAL 7      /**< a finite argument is outside its documented
                                 domain (a semi-axis not > 0, a rotation not
                                 orthonormal, ...). @since 2.2.0 */
+#define PW85_ECANCELLED 8  /**< a function of the caller (a pair energy,
+                                a progress callback) returned non-zero:
+                                the call stopped. @since 2.4.0 */
 /** @} */
 
 /**

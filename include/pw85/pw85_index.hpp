@@ -393,8 +393,86 @@ class Index {
     });
   }
 
+  /**
+   * @brief The overlap energy ε·Σ(1 − μ)² over the pairs with μ < 1, the
+   *        force and torque on every ellipsoid (pw85_index_energy(),
+   *        PW85_ENERGY_OVERLAP).
+   * @param[in] eps ε (> 0 and finite).
+   * @param[in] threads the number of threads (≥ 1).
+   * @param[in] n the rows of forces and torques: above every stored id.
+   * @param[out] energy the total energy.
+   * @param[out] forces resized to 3·n: the force on id k at 3k..3k+2.
+   * @param[out] torques resized to 3·n, as forces.
+   * @return the statuses of pw85_index_energy(); nothing is changed on
+   *         error.
+   * @since 2.4.0
+   */
+  int overlap_energy(double eps, int threads, std::size_t n, double &energy,
+                     std::vector<double> &forces,
+                     std::vector<double> &torques) const noexcept {
+    return energy_of(PW85_ENERGY_OVERLAP, eps, nullptr, nullptr, threads, n,
+                     energy, forces, torques);
+  }
+
+  /**
+   * @brief A caller's pair energy over the pairs with μ² < t, the force
+   *        and torque on every ellipsoid (pw85_index_energy(),
+   *        PW85_ENERGY_USER).
+   * @param[in] t the threshold on μ² (> 0 and finite).
+   * @param[in] u a callable `bool u(double mu2, double &U, double &dU)`
+   *            setting U(μ²) and dU/dμ² and returning true to go on (false
+   *            stops: PW85_ECANCELLED); called in the calling thread, in
+   *            the order of the pairs. An exception it throws stops the
+   *            call (PW85_ECANCELLED) and is not rethrown.
+   * @param[in] threads, n, energy, forces, torques as overlap_energy().
+   * @return the statuses of pw85_index_energy(); nothing is changed on
+   *         error.
+   * @since 2.4.0
+   */
+  template <typename U>
+  int energy(double t, U &&u, int threads, std::size_t n, double &energy,
+             std::vector<double> &forces,
+             std::vector<double> &torques) const noexcept {
+    using F = typename std::remove_reference<U>::type;
+    return energy_of(PW85_ENERGY_USER, t, &call_energy<F>,
+                     const_cast<void *>(static_cast<void const *>(&u)),
+                     threads, n, energy, forces, torques);
+  }
+
  private:
   pw85_index *handle_ = nullptr;
+
+  template <typename F>
+  static int call_energy(double mu2, void *data, double out[2]) noexcept {
+    F &f = *static_cast<F *>(data);
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+    try {
+      return f(mu2, out[0], out[1]) ? 0 : 1;
+    } catch (...) {
+      return 1;
+    }
+#else
+    return f(mu2, out[0], out[1]) ? 0 : 1;
+#endif
+  }
+
+  int energy_of(int kind, double param, pw85_pair_energy fn, void *data,
+                int threads, std::size_t n, double &energy,
+                std::vector<double> &forces,
+                std::vector<double> &torques) const noexcept {
+    std::vector<double> f, t;
+    int status = resize(f, 3 * n);
+    if (status == PW85_SUCCESS) status = resize(t, 3 * n);
+    double e = 0.0;
+    if (status == PW85_SUCCESS)
+      status = pw85_index_energy(handle_, kind, param, fn, data, threads, n,
+                                 &e, f.data(), t.data());
+    if (status != PW85_SUCCESS) return status;
+    energy = e;
+    forces.swap(f);
+    torques.swap(t);
+    return PW85_SUCCESS;
+  }
 
   static int create(double const *box, Index &out) noexcept {
     pw85_index *created = nullptr;

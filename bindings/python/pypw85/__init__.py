@@ -114,6 +114,7 @@ from ._libpw85 import lib as _lib, version as _library_version
 from ._libpw85 import path as _library_path
 from ._loader import ABI_MAJOR as _ABI_MAJOR
 from .index import Index  # pw85_index.h: pypw85.index.Index
+from ._pack import pack, Packing  # pw85_pack.h
 
 __all__ = [
     "DIM", "SYM", "LAMBDA_ATOL", "MAX_ITER", "NR_ITER", "UNIT_TOL",
@@ -121,11 +122,12 @@ __all__ = [
     "DERIV_R12", "DERIV_ROT1", "DERIV_ROT2", "DERIV_Q1", "DERIV_Q2",
     "DERIV_SIZE",
     "SUCCESS", "EFAULT", "EDOM", "ENOTPOSDEF", "ERANGE", "ENOMEM", "ENOCONV",
-    "EINVAL",
+    "EINVAL", "ECANCELLED",
     "Error", "contact_function", "f", "f_neg", "overlap", "spheroid",
     "contact_geometry", "contact_derivatives", "ellipsoid_rotation",
     "ellipsoid_quaternion", "principal_axes", "principal_axes_quaternion",
     "pack_sym", "unpack_sym", "batch_threads", "Index",
+    "pack", "Packing",
 ]
 
 
@@ -195,6 +197,9 @@ ENOCONV = _constants.ENOCONV
 #: A finite argument is outside its documented domain (a semi-axis not
 #: > 0, a rotation not orthonormal, ...).
 EINVAL = _constants.EINVAL
+#: A function of the caller (a pair energy, a progress callback) asked to
+#: stop, or raised.
+ECANCELLED = _constants.ECANCELLED
 
 #: The version of the libpw85 actually loaded ("MAJOR.MINOR.PATCH", from
 #: its pw85_version()).

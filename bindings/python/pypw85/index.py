@@ -34,7 +34,7 @@ import typing
 import numpy as np
 
 if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
-    from typing import Iterator, Optional, Tuple, Union
+    from typing import Callable, Iterator, Optional, Tuple, Union
     from numpy.typing import ArrayLike, NDArray
     IdLike = Union[int, np.integer]  # an id: int or a NumPy integer
 
@@ -73,7 +73,12 @@ LIBPW85_INDEX = {
                                             _SIZE_P]),
     "pw85_index_pairs_within": (_INT, [_P, _DOUBLE, _INT, _SIZE, _P, _P, _P,
                                        _SIZE_P]),
+    # Since 2.4.0.
+    "pw85_index_energy": (_INT, [_P, _INT, _DOUBLE, _P, _P, _INT, _SIZE,
+                                 ctypes.POINTER(_DOUBLE), _P, _P]),
 }
+#: pw85_pair_energy: int (*)(double mu2, void *data, double out[2]).
+_PAIR_ENERGY = ctypes.CFUNCTYPE(_INT, _DOUBLE, _P, ctypes.POINTER(_DOUBLE))
 _declare(_lib, LIBPW85_INDEX)
 
 #: True when the all-pairs queries and `Index.overlap_any_many` can run on
@@ -546,6 +551,89 @@ class Index:
                 self._h(), t, threads, cap, ids, shifts, ml, count)
         return self._collect(call, 2, np.float64, "pairs_within",
                              8 * len(self) + 16)
+
+    def energy(self, eps: float = 1.0, *,
+               u: Optional[Callable[[float], Tuple[float, float]]] = None,
+               t: Optional[float] = None,
+               threads: int = 1, n: Optional[int] = None
+               ) -> Tuple[float, NDArray[np.float64], NDArray[np.float64]]:
+        """The energy summed over every pair (and image), the force and the
+        torque on every ellipsoid (``pw85_index_energy``).
+
+        By default the overlap energy ``eps·(1 − μ)²`` of the pairs with
+        μ < 1 (its minimisation removes overlaps). With ``u``, a function
+        ``u(mu2) -> (U, dU/dmu2)`` of the pairs with μ² < ``t``: it is
+        called from Python once per pair, in the order of the pairs (about
+        a microsecond each: slow for many pairs, where the overlap energy
+        is not); an exception it raises stops the call and is raised again.
+
+        ``n``: the rows of the outputs (default: the largest stored id
+        plus one). Returns ``(energy, forces, torques)``, the last two of
+        shape ``(n, 3)``, row k for the ellipsoid of id k (zeros for ids in
+        no pair or not stored). Forces are −∂U/∂c, torques −∂U/∂ω about
+        each centre; both sum to zero over the assembly, the torques with
+        the moments of the forces about the images' centres. The same
+        arrays, bit for bit, for any ``threads`` (≥ 1).
+        """
+        threads = _pair_threads("energy", threads)
+        if n is None:
+            n = max(self._stored) + 1 if self._stored else 0
+        if isinstance(n, (bool, np.bool_)) or \
+                not isinstance(n, (int, np.integer)) or n < 0:
+            raise TypeError("energy: n must be a non-negative int, got %r"
+                            % (n,))
+        n = int(n)
+        if self._stored and n <= max(self._stored):
+            raise Error(EINVAL, "energy", "n = %d is not above the largest "
+                        "stored id, %d" % (n, max(self._stored)))
+        forces = np.zeros((n, 3), dtype=np.float64)
+        torques = np.zeros((n, 3), dtype=np.float64)
+        e = _DOUBLE()
+        raised = []
+        if u is None:
+            if t is not None:
+                raise TypeError("energy: t is the threshold of a function "
+                                "u; the overlap energy takes eps only")
+            eps = float(eps)
+            if not eps > 0 or math.isinf(eps):
+                raise Error(EDOM if not math.isfinite(eps) else EINVAL,
+                            "energy", "eps = %s is not finite and > 0"
+                            % _fmt(eps))
+            code = _lib.pw85_index_energy(self._h(), 0, eps, None, None,
+                                          threads, n, ctypes.byref(e),
+                                          _ptr(forces), _ptr(torques))
+        else:
+            if not callable(u):
+                raise TypeError("energy: u must be callable, got %s"
+                                % type(u).__name__)
+            if t is None:
+                raise TypeError("energy: u needs its threshold t on mu2")
+            t = float(t)
+            if not t > 0 or math.isinf(t):
+                raise Error(EDOM if not math.isfinite(t) else EINVAL,
+                            "energy", "t = %s is not finite and > 0"
+                            % _fmt(t))
+
+            def call(mu2, data, out):
+                try:
+                    value, slope = u(mu2)
+                    out[0] = float(value)
+                    out[1] = float(slope)
+                    return 0
+                except BaseException as exc:  # raised again below
+                    raised.append(exc)
+                    return 1
+            fn = _PAIR_ENERGY(call)
+            code = _lib.pw85_index_energy(self._h(), 1, t, fn, None, threads,
+                                          n, ctypes.byref(e), _ptr(forces),
+                                          _ptr(torques))
+        if raised:
+            raise raised[0]
+        if code == EDOM and u is not None:
+            raise Error(code, "energy", "u returned a value that is not "
+                        "finite")
+        _check(code, "energy")
+        return e.value, forces, torques
 
     @staticmethod
     def _collect(call, ids_per_row, value_dtype, where, guess, error=None):

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The extern "C" facade of the packer (include/pw85/pw85_pack.h): check
+// the arguments, call the core (src/pack/), map statuses.
+#include "pw85_pack.h"
+
+#include <cmath>
+#include <cstddef>
+
+#include "checks.hpp"
+#include "facade.hpp"
+#include "pack/pack.hpp"
+
+namespace core = pw85::detail;
+using core::Status;
+using pw85::facade::to_code;
+
+namespace {
+
+// The caller's callback, called with the public struct.
+int call_progress(core::PackProgress const *pr, void *data) noexcept {
+  auto const *o = static_cast<pw85_pack_options const *>(data);
+  pw85_pack_progress const x{pr->phi,     pr->phi_trial, pr->energy,
+                             pr->elapsed, pr->steps,     pr->pairs};
+  return o->progress(&x, o->progress_data);
+}
+
+// The arguments of pw85_pack() in the order of its documented statuses;
+// *params filled on success.
+int check_arguments(size_t n, double const *a, pw85_pack_options const &o,
+                    core::PackParams *params) noexcept {
+  for (size_t k = 0; k < 3 * n; ++k)
+    if (!std::isfinite(a[k])) return PW85_EDOM;
+  if (!std::isfinite(o.target) || !core::all_finite<3>(o.aspect) ||
+      !core::all_finite<3>(o.axis) || !std::isfinite(o.time_limit))
+    return PW85_EDOM;
+  if (n == 0 || !(o.target > 0.0 && o.target < 1.0) ||
+      (o.orientation != PW85_PACK_ISOTROPIC &&
+       o.orientation != PW85_PACK_ALIGNED) ||
+      o.threads < 1 || o.time_limit < 0.0 || o.progress_every == 0)
+    return PW85_EINVAL;
+  double amin = HUGE_VAL, amax = 0.0;
+  for (size_t k = 0; k < 3 * n; ++k) {
+    if (!(a[k] > 0.0)) return PW85_EINVAL;
+    amin = std::fmin(amin, a[k]);
+    amax = std::fmax(amax, a[k]);
+  }
+  for (int k = 0; k < 3; ++k)
+    if (!(o.aspect[k] > 0.0)) return PW85_EINVAL;
+  double const norm = std::sqrt(o.axis[0] * o.axis[0] + o.axis[1] * o.axis[1] +
+                                o.axis[2] * o.axis[2]);
+  if (!(norm > 0.0)) return PW85_EINVAL;
+  if (!std::isfinite(norm)) return PW85_EDOM;
+  if (amax / amin > 0x1p40) return PW85_ERANGE;
+  core::PackParams &p = *params;
+  p.target = o.target;
+  p.seed = o.seed;
+  for (int k = 0; k < 3; ++k) {
+    p.aspect[k] = o.aspect[k];
+    p.axis[k] = o.axis[k] / norm;
+  }
+  p.aligned = o.orientation == PW85_PACK_ALIGNED;
+  p.threads = o.threads;
+  p.time_limit = o.time_limit;
+  p.step_limit = o.step_limit;
+  p.progress_every = o.progress_every;
+  p.callback = o.progress != nullptr ? call_progress : nullptr;
+  p.data = const_cast<pw85_pack_options *>(&o);
+  // The box at the target, and the side rule with the largest semi-axis.
+  double box[3];
+  if (!core::pack_box(n, a, p.aspect, p.target, box)) return PW85_ERANGE;
+  for (int k = 0; k < 3; ++k)
+    if (!(2.0 * amax * core::pack_side_margin < box[k])) return PW85_EINVAL;
+  return PW85_SUCCESS;
+}
+
+}  // namespace
+
+extern "C" {
+
+void pw85_pack_options_init(pw85_pack_options *options) noexcept {
+  if (options == nullptr) return;
+  *options = pw85_pack_options{};
+  options->size = sizeof(pw85_pack_options);
+  options->target = 0.5;
+  options->seed = 0;
+  for (int k = 0; k < 3; ++k) options->aspect[k] = 1.0;
+  options->orientation = PW85_PACK_ISOTROPIC;
+  options->axis[0] = options->axis[1] = 0.0;
+  options->axis[2] = 1.0;
+  options->threads = 1;
+  options->time_limit = 0.0;
+  options->step_limit = 0;
+  options->progress_every = 100;
+  options->progress = nullptr;
+  options->progress_data = nullptr;
+}
+
+int pw85_pack(size_t n, double const *semi_axes,
+              pw85_pack_options const *options, double box[PW85_DIM],
+              double *centres, double *quaternions, double *q, double *phi,
+              int *outcome) noexcept {
+  if (semi_axes == nullptr || box == nullptr || centres == nullptr ||
+      q == nullptr || phi == nullptr || outcome == nullptr)
+    return PW85_EFAULT;
+  pw85_pack_options defaults;
+  pw85_pack_options_init(&defaults);
+  if (options == nullptr) options = &defaults;
+  if (options->size < sizeof(pw85_pack_options)) return PW85_EINVAL;
+  core::PackParams params{};
+  int const code = check_arguments(n, semi_axes, *options, &params);
+  if (code != PW85_SUCCESS) return code;
+  core::PackOutcome result = core::PackOutcome::limit;
+  Status const s = core::pack(n, semi_axes, params, box, centres, quaternions,
+                              q, phi, &result);
+  if (s != Status::success) return to_code(s);
+  *outcome = static_cast<int>(result);
+  return PW85_SUCCESS;
+}
+
+}  // extern "C"
