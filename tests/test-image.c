@@ -276,6 +276,61 @@ static void test_brute_open(void) {
   g_free(img);
 }
 
+/* Voxel centres placed on surfaces to the last bit: for a random
+ * ellipsoid and a voxel centre m (dyadic: L = n, so m = i + ½), the centre
+ * c = m − v/√(vᵀQ⁻¹v) for a random direction v, rounded: m lies within an
+ * ulp or so of the surface, on either side, beyond what a floating-point
+ * test can decide. Every voxel of each image against the exact decision
+ * (GMP rationals) for every image of the ellipsoid. */
+static void test_surface_points(void) {
+  size_t const n[3] = {12, 12, 12};
+  double const L[3] = {12, 12, 12}, o[3] = {0, 0, 0};
+  int32_t img[12 * 12 * 12];
+  uint64_t s = 0x5eed;
+  size_t inside = 0, outside = 0, mismatches = 0, exact_calls = 0;
+  int const trials = g_test_slow() ? 2000 : 300;
+  for (int trial = 0; trial < trials; trial++) {
+    double const a[3] = {1 + 3 * uniform(&s), 0.7 + 2 * uniform(&s), 0.5 + 2 * uniform(&s)};
+    double q[6], qinv[6], c[3], v[3];
+    random_form(&s, a, q);
+    invert(q, qinv);
+    long const target[3] = {(long)(12 * uniform(&s)), (long)(12 * uniform(&s)),
+                            (long)(12 * uniform(&s))};
+    for (int k = 0; k < 3; k++) v[k] = 2 * uniform(&s) - 1;
+    double const norm = sqrt(qinv[0] * v[0] * v[0] + qinv[3] * v[1] * v[1] +
+                             qinv[5] * v[2] * v[2] +
+                             2 * (qinv[1] * v[0] * v[1] + qinv[2] * v[0] * v[2] +
+                                  qinv[4] * v[1] * v[2]));
+    for (int k = 0; k < 3; k++) c[k] = (double)target[k] + 0.5 - v[k] / norm;
+    g_assert_cmpint(pw85_image_voxels(1, c, q, NULL, L, 1, n, img, 1), ==,
+                    PW85_SUCCESS);
+    size_t const before = exact_calls;
+    for (long i = 0; i < 12; i++)
+      for (long j = 0; j < 12; j++)
+        for (long k = 0; k < 12; k++) {
+          int want = 0;
+          for (int t = 0; t < 27 && !want; t++) {
+            long const idx[3] = {i + 12 * (t % 3 - 1), j + 12 * (t / 3 % 3 - 1),
+                                 k + 12 * (t / 9 - 1)};
+            want = brute_inside(o, L, n, idx, c, qinv, q, &exact_calls);
+          }
+          int const got = img[(i * 12 + j) * 12 + k] == 0;
+          if (i == target[0] && j == target[1] && k == target[2])
+            want ? inside++ : outside++;
+          if (got != want && mismatches++ < 10)
+            g_test_message("trial %d, voxel (%ld, %ld, %ld): %d, expected %d",
+                           trial, i, j, k, got, want);
+        }
+    g_assert_cmpuint(exact_calls, >, before); /* the target at least */
+  }
+  g_test_message("targets: %zu inside, %zu outside; %zu exact decisions",
+                 inside, outside, exact_calls);
+  g_assert_cmpuint(mismatches, ==, 0);
+  /* both sides of the surface are met (by rounding, about half each) */
+  g_assert_cmpuint(inside, >, (size_t)trials / 5);
+  g_assert_cmpuint(outside, >, (size_t)trials / 5);
+}
+
 /* The same image for 1, 2 and 3 threads (and OpenMP's default). */
 static void test_threads(void) {
   size_t const n[3] = {48, 50, 52};
@@ -351,6 +406,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/image/lattice-surfaces", test_lattice);
   g_test_add_func("/pw85/image/brute-periodic-64", test_brute_periodic);
   g_test_add_func("/pw85/image/brute-open", test_brute_open);
+  g_test_add_func("/pw85/image/surface-points", test_surface_points);
   g_test_add_func("/pw85/image/threads", test_threads);
   g_test_add_func("/pw85/image/errors", test_errors);
   return g_test_run();
