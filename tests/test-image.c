@@ -132,6 +132,11 @@ static void invert(double const q[6], double b[6]) {
 
 static size_t voxels(size_t const n[3]) { return n[0] * n[1] * n[2]; }
 
+/* PW85_TEST_SMALL (sanitizer and valgrind runs; valgrind does not raise
+ * the floating-point flags, so that every voxel is decided exactly there):
+ * smaller images. */
+static gboolean small_run(void) { return g_getenv("PW85_TEST_SMALL") != NULL; }
+
 /* Lattice spheres and axis-aligned ellipsoids, periodic, box = n voxels of
  * side 1: centres at voxel centres (or faces), squared semi-axes integers;
  * inside iff Σ dx_k²/a_k² ≤ 1, i.e. Σ dx_k²·Π_{l≠k} a_l² ≤ Π a², with
@@ -204,7 +209,8 @@ static void random_config(uint64_t seed, size_t m, double const L[3],
 /* Every voxel of a 64³ periodic image against every ellipsoid and every
  * image (27 shifts: the ellipsoids are narrower than half the box). */
 static void test_brute_periodic(void) {
-  size_t const n[3] = {64, 64, 64};
+  size_t const side = small_run() ? 20 : 64;
+  size_t const n[3] = {side, side, side};
   double const L[3] = {7.5, 8.0, 8.25}, o[3] = {0, 0, 0};
   size_t const m = 80;
   double centres[3 * 80], q[6 * 80], qinv[6 * 80];
@@ -214,19 +220,20 @@ static void test_brute_periodic(void) {
   g_assert_cmpint(pw85_image_voxels(m, centres, q, NULL, L, 1, n, img, 2), ==,
                   PW85_SUCCESS);
   size_t mismatches = 0, exact_calls = 0, covered = 0;
-  for (long i = 0; i < 64; i++)
-    for (long j = 0; j < 64; j++)
-      for (long k = 0; k < 64; k++) {
+  long const s = (long)side;
+  for (long i = 0; i < s; i++)
+    for (long j = 0; j < s; j++)
+      for (long k = 0; k < s; k++) {
         int32_t want = -1;
         for (size_t p = 0; p < m && want < 0; p++)
           for (int t = 0; t < 27 && want < 0; t++) {
-            long const idx[3] = {i + 64 * (t % 3 - 1), j + 64 * (t / 3 % 3 - 1),
-                                 k + 64 * (t / 9 - 1)};
+            long const idx[3] = {i + s * (t % 3 - 1), j + s * (t / 3 % 3 - 1),
+                                 k + s * (t / 9 - 1)};
             if (brute_inside(o, L, n, idx, centres + 3 * p, qinv + 6 * p,
                              q + 6 * p, &exact_calls))
               want = (int32_t)p;
           }
-        int32_t const got = img[(i * 64 + j) * 64 + k];
+        int32_t const got = img[(i * s + j) * s + k];
         covered += want >= 0;
         if (got != want && mismatches++ < 10)
           g_test_message("voxel (%ld, %ld, %ld): %d, expected %d", i, j, k, got, want);
@@ -246,7 +253,7 @@ static void test_brute_periodic(void) {
 /* An open domain with an origin: only the ellipsoids themselves, clipped
  * to the box; every voxel against every ellipsoid. */
 static void test_brute_open(void) {
-  size_t const n[3] = {40, 33, 37};
+  size_t const n[3] = {small_run() ? 10 : 40, 33, 37};
   double const L[3] = {6.0, 5.0, 5.5}, o[3] = {-1.25, 0.375, 10.1};
   size_t const m = 30;
   double centres[3 * 30], q[6 * 30], qinv[6 * 30];
@@ -288,7 +295,7 @@ static void test_surface_points(void) {
   int32_t img[12 * 12 * 12];
   uint64_t s = 0x5eed;
   size_t inside = 0, outside = 0, mismatches = 0, exact_calls = 0;
-  int const trials = g_test_slow() ? 2000 : 300;
+  int const trials = g_test_slow() ? 2000 : small_run() ? 40 : 300;
   for (int trial = 0; trial < trials; trial++) {
     double const a[3] = {1 + 3 * uniform(&s), 0.7 + 2 * uniform(&s), 0.5 + 2 * uniform(&s)};
     double q[6], qinv[6], c[3], v[3];
@@ -331,9 +338,45 @@ static void test_surface_points(void) {
   g_assert_cmpuint(outside, >, (size_t)trials / 5);
 }
 
+/* Scale invariance through the exact path: the lattice configuration
+ * (voxel centres exactly on surfaces) with every length multiplied by 2^e
+ * (exact) has the same image; there the filter underflows or overflows,
+ * and the floating-point flags send the voxels to the exact integer
+ * computation. */
+static void test_extreme_scales(void) {
+  size_t const n[3] = {12, 10, 14};
+  double const L0[3] = {12, 10, 14};
+  double const c0[3][3] = {{0.5, 0.5, 0.5}, {6, 5.5, 7}, {11.5, 2, 13}};
+  double const q0[3][6] = {{9, 0, 0, 9, 0, 9},
+                           {4, 0.5, -1, 6.25, 0.75, 5},
+                           {2.25, -0.5, 0.25, 4, 0.5, 1}};
+  int32_t ref[12 * 10 * 14], img[12 * 10 * 14];
+  g_assert_cmpint(pw85_image_voxels(3, &c0[0][0], &q0[0][0], NULL, L0, 1, n, ref, 1),
+                  ==, PW85_SUCCESS);
+  size_t inside = 0;
+  for (size_t v = 0; v < 12 * 10 * 14; v++) inside += ref[v] >= 0;
+  g_assert_cmpuint(inside, >, 100);
+  /* −300, −500: everything underflows; −175 to −186: the terms of the
+   * predicate are subnormal, their rounding errors beyond the filter's
+   * relative bound (only the underflow flag tells); 300, 480: overflow */
+  int const exps[] = {-300, -500, -175, -178, -180, -182, -184, -186, 300, 480};
+  for (int e = 0; e < (int)(sizeof exps / sizeof *exps); e++) {
+    double L[3], c[3][3], q[3][6];
+    for (int k = 0; k < 3; k++) L[k] = ldexp(L0[k], exps[e]);
+    for (int p = 0; p < 3; p++) {
+      for (int k = 0; k < 3; k++) c[p][k] = ldexp(c0[p][k], exps[e]);
+      for (int k = 0; k < 6; k++) q[p][k] = ldexp(q0[p][k], 2 * exps[e]);
+    }
+    /* 2^-1000 and 2^960 are exact doubles: the scaled data are exact */
+    g_assert_cmpint(pw85_image_voxels(3, &c[0][0], &q[0][0], NULL, L, 1, n, img, 2), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpmem(img, sizeof img, ref, sizeof ref);
+  }
+}
+
 /* The same image for 1, 2 and 3 threads (and OpenMP's default). */
 static void test_threads(void) {
-  size_t const n[3] = {48, 50, 52};
+  size_t const n[3] = {small_run() ? 16 : 48, 50, 52};
   double const L[3] = {10, 10, 10};
   size_t const m = 300;
   double *centres = g_new(double, 3 * m), *q = g_new(double, 6 * m);
@@ -407,6 +450,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/image/brute-periodic-64", test_brute_periodic);
   g_test_add_func("/pw85/image/brute-open", test_brute_open);
   g_test_add_func("/pw85/image/surface-points", test_surface_points);
+  g_test_add_func("/pw85/image/extreme-scales", test_extreme_scales);
   g_test_add_func("/pw85/image/threads", test_threads);
   g_test_add_func("/pw85/image/errors", test_errors);
   return g_test_run();
