@@ -200,6 +200,19 @@ class Pack(unittest.TestCase):
                 np.testing.assert_array_equal(f[name][()], g[name][()], name)
             self.assertEqual(f.attrs["attempts"], g.attrs["attempts"])
 
+    def test_time_limit(self):
+        r = run(["--n", "200000", "--axes", "1,0.5,0.2", "--fraction", "0.25",
+                 "--time-limit", "0.3", "--out", "t.h5"], self.dir)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertIn("time limit reached", r.stderr)
+        with h5py.File(os.path.join(self.dir, "t.h5"), "r") as f:
+            count = f["centres"].shape[0]
+            self.assertTrue(0 < count < 200000, count)
+            self.assertEqual(f["quaternions"].shape, (count, 4))
+            side = (200000 * VOLUME / 0.25) ** (1 / 3)
+            self.assertAlmostEqual(f.attrs["packing_fraction"],
+                                   count * VOLUME / side**3, delta=1e-15)
+
     def test_progress_bar_in_tmux(self):
         tmux = shutil.which("tmux")
         if tmux is None:
