@@ -14,7 +14,7 @@
 // has the sign of G = A′₂₀e₀ + A′₂₁e₁ + A′₂₂e₂ (A′ = adj(Q′), A′₂₂ > 0),
 // also decided exactly (18 monomials).
 //
-// The filter (Shewchuk's pattern, as overlap.cpp): each predicate is first
+// The filter (Shewchuk's adaptive pattern): each predicate is first
 // evaluated in doubles, in the order written below, together with the same
 // expression on absolute values, M. The longest chain of rounded operations
 // has 11 of them (e: 3, A′: 3, A′·e·e: 5, the sum: 8, − det: 9; det: 6),
@@ -22,8 +22,10 @@
 // Accuracy and Stability, §3.1), without underflow nor overflow; the sign
 // of fl(P) is taken when |fl(P)| > 2⁻⁴⁶·fl(M) (8 times that bound) and no
 // underflow, overflow or invalid operation was flagged while the row was
-// evaluated; otherwise the row is evaluated again, exactly. The caller's
-// floating-point exception flags are restored.
+// evaluated; otherwise the row is evaluated again, exactly. (Where the
+// environment does not raise the underflow flag, flags_work(), every
+// predicate is exact.) The caller's floating-point exception flags are
+// restored.
 //
 // The row. By convexity, the indices k of a row whose point is inside form
 // an interval, contained in the ellipsoid's bounding box [kmin, kmax]
@@ -31,8 +33,8 @@
 // the first index of the box with G(k) ≥ 0 (kmax if none): P decreases
 // before k − 1 and increases after k, so the interval, if not empty,
 // contains k − 1 or k; its ends are then found by monotone steps from
-// floating-point guesses of the roots. Every voxel is therefore decided by
-// the exact predicate, the others by convexity.
+// floating-point guesses of the roots. The voxels tested are decided by the
+// certified predicates, the others by convexity.
 //
 // Threads. The planes i are cut into chunks; a thread draws into its
 // chunk's planes every ellipsoid (and image) that meets them, each voxel
