@@ -270,7 +270,12 @@ static double available_memory(void) {
   return pages > 0 && size > 0 ? (double)pages * (double)size : INFINITY;
 }
 
-int main(int argc, char **argv) {
+/* What main() allocates, freed by main() on every path. */
+static struct pack_state st;
+static char *xdmf;
+static int32_t *image;
+
+static int pack_main(int argc, char **argv) {
   struct options o;
   int const bad = parse(argc, argv, &o);
   if (bad) return bad;
@@ -280,7 +285,6 @@ int main(int argc, char **argv) {
   char err[1024];
   if (io_check_writable(o.out, err, sizeof err) != 0) return error("--out: %s", err);
   if (o.xyz && io_check_writable(o.xyz, err, sizeof err) != 0) return error("--xyz: %s", err);
-  char *xdmf = NULL;
   if (o.voxels) {
     size_t const len = strlen(o.out);
     xdmf = malloc(len + 6);
@@ -299,7 +303,6 @@ int main(int argc, char **argv) {
   }
 
   struct pack_config cf = {.threads = o.threads, .seed = o.seed};
-  struct pack_state st = {0};
   char method[32];
   snprintf(method, sizeof method, "%s", o.method ? o.method : methods[0].name);
   if (o.resume) {
@@ -344,7 +347,10 @@ int main(int argc, char **argv) {
       return bad_argument("--n: %zu is fewer than the %zu ellipsoids of %s", o.n, r.count,
                           o.resume);
     }
-    if (!alloc_state(&st, cf.target)) return error("out of memory");
+    if (!alloc_state(&st, cf.target)) {
+      io_free(&r);
+      return error("out of memory");
+    }
     memcpy(st.centres, r.centres, r.count * 3 * sizeof(double));
     memcpy(st.forms, r.forms, r.count * 6 * sizeof(double));
     memcpy(st.axes, r.axes, r.count * 3 * sizeof(double));
@@ -414,7 +420,6 @@ int main(int argc, char **argv) {
   m.packing_fraction = (double)st.count * unit_volume / box_volume;
   snprintf(m.method, sizeof m.method, "%s", method);
   snprintf(m.pw85_version, sizeof m.pw85_version, "%s", pw85_version());
-  int32_t *image = NULL;
   if (o.voxels) {
     size_t const n = o.voxels, dims[3] = {n, n, n};
     image = malloc(n * n * n * sizeof *image);
@@ -441,8 +446,13 @@ int main(int argc, char **argv) {
                         : "time limit reached";
   fprintf(stderr, "%s: %s: %zu of %zu ellipsoids, packing fraction %.6f, written to %s\n",
           prog, how, st.count, cf.target, m.packing_fraction, o.out);
-  free(image), free(xdmf);
-  free(st.centres), free(st.forms), free(st.axes), free(st.quaternions);
   if (interrupted) return 130;
   return outcome == PACK_DONE ? 0 : 3;
+}
+
+int main(int argc, char **argv) {
+  int const status = pack_main(argc, argv);
+  free(image), free(xdmf);
+  free(st.centres), free(st.forms), free(st.axes), free(st.quaternions);
+  return status;
 }
