@@ -38,7 +38,9 @@
  * Cost and memory. The work is proportional to the voxels of the
  * ellipsoids' bounding boxes (each row of voxels is decided by a few
  * certified tests at its ends, the voxels between by convexity), plus one
- * pass over the image; nothing is allocated: the memory is the caller's
+ * pass over the image; in a periodic box a bounding box wider than the box
+ * is walked whole (an ellipsoid k times as wide as the box costs k³ times
+ * the image); nothing is allocated: the memory is the caller's
  * image (4 bytes per voxel). Threads: `threads` OpenMP threads when
  * libpw85 was built with OpenMP (pw85_index_openmp()), 1 runs in the
  * calling thread, 0 is OpenMP's default; the image is the same, bit for
