@@ -200,6 +200,18 @@ class Pack(unittest.TestCase):
                 np.testing.assert_array_equal(f[name][()], g[name][()], name)
             self.assertEqual(f.attrs["attempts"], g.attrs["attempts"])
 
+    def test_help_and_version(self):
+        r = run(["--help"], self.dir)
+        self.assertEqual(r.returncode, 0)
+        for option in ("--n", "--axes", "--fraction", "--seed", "--threads",
+                       "--out", "--xyz", "--voxels", "--time-limit",
+                       "--resume", "--method"):
+            self.assertIn(option, r.stdout)
+        r = run(["--version"], self.dir)
+        self.assertEqual(r.returncode, 0)
+        self.assertEqual(r.stdout, "pw85-pack (pw85) %s\n" % VERSION)
+        self.assertEqual(os.listdir(self.dir), [])
+
     def test_time_limit(self):
         r = run(["--n", "200000", "--axes", "1,0.5,0.2", "--fraction", "0.25",
                  "--time-limit", "0.3", "--out", "t.h5"], self.dir)
