@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Compiled as C (several standards, -Werror -pedantic): pw85.h and
- * pw85_index.h stand alone, twice included, and their prototypes accept
+ * pw85_index.h (and pw85_image.h) stand alone, twice included, and their prototypes accept
  * const arrays. */
+#include <pw85/pw85_image.h>
+#include <pw85/pw85_image.h>
 #include <pw85/pw85_index.h>
 #include <pw85/pw85_index.h>
 #include <pw85/pw85_pack.h>
@@ -50,5 +52,10 @@ int main(void) {
   ok = ok && pw85_index_pairs_within(index, 1., 1, 0, NULL, NULL, NULL,
                                      &count) == PW85_SUCCESS && count == 0;
   pw85_index_destroy(index);
+  size_t const dims[PW85_DIM] = {2, 2, 2};
+  int32_t image[8];
+  ok = ok && pw85_image_voxels(1, r, q, NULL, a, 1, dims, image, 1) == PW85_SUCCESS;
+  ok = ok && pw85_image_fraction(dims, image, &count, NULL) == PW85_SUCCESS &&
+       count == 8;
   return ok ? 0 : 1;
 }

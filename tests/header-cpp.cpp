@@ -2,6 +2,7 @@
 // Compiled as C++ (-Werror -pedantic): pw85.h and pw85.hpp stand alone and
 // together, in either order; pw85_index.hpp first, standing alone.
 #include <pw85/pw85_pack.hpp>
+#include <pw85/pw85_image.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
 #include <pw85/pw85.hpp>
@@ -53,5 +54,13 @@ int main() {
   ok = ok && index.insert(0, r, q) == PW85_SUCCESS;
   ok = ok && index.pairs_within(1., 1, pairs) == PW85_SUCCESS && pairs.empty();
   ok = ok && index.count(n) == PW85_SUCCESS && n == 1;
+  std::vector<std::int32_t> image;
+  std::size_t voxels = 0;
+  double fraction = 0.;
+  ok = ok && pw85::image_voxels({0.5, 0.5, 0.5}, {0.25, 0., 0., 0.25, 0., 0.25},
+                                {0., 0., 0.}, {1., 1., 1.}, true, {2, 2, 2},
+                                image) == PW85_SUCCESS;
+  ok = ok && pw85::image_fraction({2, 2, 2}, image, voxels, fraction) ==
+                 PW85_SUCCESS && voxels == 8 && fraction == 1.;
   return ok ? 0 : 1;
 }

@@ -7,9 +7,12 @@
 # statically through `pkg-config --static`; the stand-alone CMake project
 # of tutorial/consumer-cmake through pw85Config.cmake, shared and static
 # (skipped without CMake). Each program must print the expected figures.
-# Usage: test-install.sh MESON SOURCE-DIR NM [CMAKE]
+# With PACK = yes (HDF5 found), pw85-pack from the prefix, without
+# LD_LIBRARY_PATH, writes files that h5py reads back (tests/pack/ checks
+# them in detail).
+# Usage: test-install.sh MESON SOURCE-DIR NM [CMAKE [PACK]]
 set -eu
-meson=$1 src=$2 nm=$3 cmake=${4:-}
+meson=$1 src=$2 nm=$3 cmake=${4:-} pack=${5:-no}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT INT TERM
 prefix=$tmp/prefix
@@ -91,6 +94,31 @@ uses "$tmp/tutorial-static" static
   $(pkg-config --cflags pw85_legacy) $(static_libs pw85_legacy)
 uses "$tmp/both-static" static
 "$tmp/both-static"
+
+step "pw85-pack from the installed copy"
+for f in include/pw85/pw85_image.h include/pw85/pw85_image.hpp; do
+  [ -e "$prefix/$f" ] || { echo "missing: $f"; exit 1; }
+done
+if [ "$pack" = yes ]; then
+  [ -x "$prefix/bin/pw85-pack" ] || { echo "missing: bin/pw85-pack"; exit 1; }
+  mkdir "$tmp/pack"
+  (cd "$tmp/pack" && env -u LD_LIBRARY_PATH "$prefix/bin/pw85-pack" --n 300 \
+     --axes 1,0.5,0.2 --fraction 0.2 --seed 9 --out pack.h5 --xyz pack.xyz \
+     --voxels 16)
+  /usr/bin/python3 - "$tmp/pack" <<'PY'
+import math, os, sys
+import h5py
+d = sys.argv[1]
+assert sorted(os.listdir(d)) == ["pack.h5", "pack.xdmf", "pack.xyz"], os.listdir(d)
+with h5py.File(os.path.join(d, "pack.h5"), "r") as f:
+    assert f["centres"].shape == (300, 3) and f["forms"].shape == (300, 6)
+    assert f["image"].shape == (16, 16, 16)
+    assert f.attrs["seed"] == 9 and f.attrs["method"] == "rsa"
+    v = 4 / 3 * math.pi * 0.1 * 300 / f["box"][()].prod()
+    assert abs(f.attrs["packing_fraction"] - v) < 1e-15, f.attrs["packing_fraction"]
+print("ok: pw85-pack from the prefix, files read back by h5py")
+PY
+fi
 
 if [ -z "$cmake" ]; then
   echo "cmake not found: the CMake package is not tested"

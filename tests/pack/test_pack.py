@@ -1,0 +1,341 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""pw85-pack (issue 28, item 2) as a user runs it: the files it writes read
+back by h5py, an XML parser and ASE's extended-XYZ reader with the
+documented values; the same files for 1 and 2 threads; Ctrl-C (SIGINT)
+leaving a valid file that --resume completes into the uninterrupted
+result; the progress bar seen in a tmux capture and absent without a
+terminal; every bad argument: one line naming it, a non-zero exit status,
+nothing written.
+
+Usage: test_pack.py PW85-PACK VERSION  (run by meson, /usr/bin/python3)
+Exit status 77 (a skip) when h5py or ASE is missing.
+"""
+
+import math
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+import xml.etree.ElementTree as ET
+from fractions import Fraction
+
+try:
+    import h5py
+    import numpy as np
+    import ase.io
+except ImportError as e:  # pragma: no cover
+    print("SKIP:", e)
+    sys.exit(77)
+
+TOOL = None
+VERSION = None
+VOLUME = 4.0 / 3.0 * math.pi * 1.0 * 0.5 * 0.2  # axes 1, 0.5, 0.2
+
+
+def run(args, cwd, **kw):
+    return subprocess.run([TOOL] + args, cwd=cwd, capture_output=True,
+                          text=True, timeout=300, **kw)
+
+
+def rotation(p):
+    w, x, y, z = p
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def exact_inside(point, c, q):
+    """(m − c)ᵀ Q⁻¹ (m − c) ≤ 1 in rationals: dᵀ adj(Q) d ≤ det Q."""
+    d = [point[k] - Fraction(c[k]) for k in range(3)]
+    Q = [[Fraction(q[0]), Fraction(q[1]), Fraction(q[2])],
+         [Fraction(q[1]), Fraction(q[3]), Fraction(q[4])],
+         [Fraction(q[2]), Fraction(q[4]), Fraction(q[5])]]
+    A = [[Q[(l + 1) % 3][(k + 1) % 3] * Q[(l + 2) % 3][(k + 2) % 3]
+          - Q[(l + 1) % 3][(k + 2) % 3] * Q[(l + 2) % 3][(k + 1) % 3]
+          for l in range(3)] for k in range(3)]
+    det = sum(Q[0][l] * A[l][0] for l in range(3))
+    lhs = sum(A[k][l] * d[k] * d[l] for k in range(3) for l in range(3))
+    return lhs <= det
+
+
+class Pack(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="pw85-pack-test-")
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def test_files(self):
+        n, phi, m = 400, 0.2, 24
+        r = run(["--n", str(n), "--axes", "1,0.5,0.2", "--fraction", str(phi),
+                 "--seed", "7", "--out", "pack.h5", "--xyz", "pack.xyz",
+                 "--voxels", str(m)], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        # no progress bar when stderr is not a terminal: one final line
+        self.assertNotIn("\r", r.stderr)
+        self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+        self.assertEqual(sorted(os.listdir(self.dir)),
+                         ["pack.h5", "pack.xdmf", "pack.xyz"])
+        side = (n * VOLUME / phi) ** (1 / 3)
+        with h5py.File(os.path.join(self.dir, "pack.h5"), "r") as f:
+            self.assertEqual(set(f.keys()), {"box", "centres", "forms", "axes",
+                                             "quaternions", "image"})
+            box = f["box"][()]
+            self.assertEqual(f["box"].dtype, np.float64)
+            np.testing.assert_allclose(box, [side] * 3, rtol=1e-15)
+            for name, width in (("centres", 3), ("forms", 6), ("axes", 3),
+                                ("quaternions", 4)):
+                self.assertEqual(f[name].shape, (n, width), name)
+                self.assertEqual(f[name].dtype, np.float64, name)
+            c, q, a, p = (f[k][()] for k in ("centres", "forms", "axes",
+                                              "quaternions"))
+            img = f["image"][()]
+            self.assertEqual(img.shape, (m, m, m))
+            self.assertEqual(img.dtype, np.int32)
+            attrs = dict(f.attrs)
+            self.assertEqual(f.attrs["seed"].dtype, np.uint64)
+        self.assertEqual(attrs["seed"], 7)
+        self.assertEqual(attrs["method"], "rsa")
+        self.assertEqual(attrs["pw85_version"], VERSION)
+        # Σ 4π/3·a0·a1·a2 / V, from the file's own axes and box
+        expected = sum(4 / 3 * math.pi * x * y * z for x, y, z in a) / box.prod()
+        self.assertAlmostEqual(attrs["packing_fraction"], expected, delta=1e-15)
+        self.assertAlmostEqual(attrs["packing_fraction"], phi, delta=1e-12)
+        np.testing.assert_array_equal(a, np.tile([1.0, 0.5, 0.2], (n, 1)))
+        self.assertTrue(((c >= 0) & (c < side)).all())
+        # unit quaternions (w, x, y, z); the forms are R·diag(a²)·Rᵀ (the
+        # library's constructor: errors of a few ulps of the largest a²)
+        np.testing.assert_allclose(np.linalg.norm(p, axis=1), 1, atol=1e-15)
+        for k in range(n):
+            R = rotation(p[k])
+            Q = R @ np.diag(a[k] ** 2) @ R.T
+            np.testing.assert_allclose(q[k], Q[np.triu_indices(3)], rtol=0,
+                                       atol=1e-15)
+        # the image: phase fraction, and voxels against an exact decision
+        self.assertEqual(attrs["image_fraction"], float(np.mean(img >= 0)))
+        rng = np.random.default_rng(28)
+        h = [Fraction(box[k]) / m for k in range(3)]
+        for ijk in rng.integers(0, m, size=(40, 3)):
+            point = [(int(ijk[k]) + Fraction(1, 2)) * h[k] for k in range(3)]
+            want = -1
+            for e in range(n):
+                if want >= 0:
+                    break
+                # images within one box (the ellipsoids are far smaller)
+                for shift in np.ndindex(3, 3, 3):
+                    cc = [c[e][k] + (shift[k] - 1) * box[k] for k in range(3)]
+                    if max(abs(float(point[k]) - cc[k]) for k in range(3)) > 1.01:
+                        continue
+                    if exact_inside(point, [Fraction(c[e][k]) + (shift[k] - 1)
+                                            * Fraction(box[k])
+                                            for k in range(3)], q[e]):
+                        want = e
+                        break
+            self.assertEqual(img[tuple(ijk)], want, tuple(ijk))
+        # XDMF: an XML document that points at the image
+        root = ET.parse(os.path.join(self.dir, "pack.xdmf")).getroot()
+        self.assertEqual(root.tag, "Xdmf")
+        topo = root.find("./Domain/Grid/Topology")
+        self.assertEqual(topo.get("TopologyType"), "3DCoRectMesh")
+        self.assertEqual(topo.get("Dimensions").split(), [str(m + 1)] * 3)
+        items = root.findall("./Domain/Grid/Geometry/DataItem")
+        self.assertEqual([float(v) for v in items[1].text.split()],
+                         [box[k] / m for k in range(3)])
+        data = root.find("./Domain/Grid/Attribute/DataItem")
+        self.assertEqual(data.text.strip(), "pack.h5:/image")
+        self.assertEqual(data.get("Dimensions").split(), [str(m)] * 3)
+        # extended XYZ, read by ASE: the same values, to the last bit
+        atoms = ase.io.read(os.path.join(self.dir, "pack.xyz"), format="extxyz")
+        self.assertEqual(len(atoms), n)
+        np.testing.assert_array_equal(atoms.cell.lengths(), box)
+        self.assertTrue(all(atoms.pbc))
+        np.testing.assert_array_equal(atoms.positions, c)
+        np.testing.assert_array_equal(atoms.arrays["aspherical_shape"], a)
+        # OVITO's order x, y, z, w
+        np.testing.assert_array_equal(atoms.arrays["orientation"],
+                                      p[:, [1, 2, 3, 0]])
+
+    def test_threads(self):
+        outs = []
+        for t in ("1", "2"):
+            r = run(["--n", "3000", "--axes", "1,0.5,0.2", "--fraction", "0.2",
+                     "--threads", t, "--out", "t%s.h5" % t], self.dir)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with h5py.File(os.path.join(self.dir, "t%s.h5" % t), "r") as f:
+                outs.append((f["centres"][()], f["forms"][()],
+                             f.attrs["attempts"]))
+        np.testing.assert_array_equal(outs[0][0], outs[1][0])
+        np.testing.assert_array_equal(outs[0][1], outs[1][1])
+        self.assertEqual(outs[0][2], outs[1][2])
+
+    def test_interrupt_and_resume(self):
+        args = ["--n", "12000", "--axes", "1,0.5,0.2", "--fraction", "0.25",
+                "--seed", "3"]
+        full = run(args + ["--out", "full.h5"], self.dir)
+        self.assertEqual(full.returncode, 0, full.stderr)
+        proc = subprocess.Popen([TOOL] + args + ["--out", "cut.h5"],
+                                cwd=self.dir, stderr=subprocess.PIPE, text=True)
+        time.sleep(0.3)
+        proc.send_signal(signal.SIGINT)
+        err = proc.communicate(timeout=120)[1]
+        self.assertEqual(proc.returncode, 130, err)
+        self.assertIn("interrupted", err)
+        with h5py.File(os.path.join(self.dir, "cut.h5"), "r") as f:
+            count = f["centres"].shape[0]
+            self.assertEqual(f["forms"].shape, (count, 6))
+            self.assertLess(count, 12000)
+            self.assertEqual(f.attrs["target_count"], 12000)
+        # no temporary file left
+        self.assertEqual(sorted(os.listdir(self.dir)), ["cut.h5", "full.h5"])
+        res = run(["--resume", "cut.h5", "--out", "resumed.h5"], self.dir)
+        self.assertEqual(res.returncode, 0, res.stderr)
+        with h5py.File(os.path.join(self.dir, "full.h5"), "r") as f, \
+                h5py.File(os.path.join(self.dir, "resumed.h5"), "r") as g:
+            for name in ("box", "centres", "forms", "axes", "quaternions"):
+                np.testing.assert_array_equal(f[name][()], g[name][()], name)
+            self.assertEqual(f.attrs["attempts"], g.attrs["attempts"])
+
+    def test_help_and_version(self):
+        r = run(["--help"], self.dir)
+        self.assertEqual(r.returncode, 0)
+        for option in ("--n", "--axes", "--fraction", "--seed", "--threads",
+                       "--out", "--xyz", "--voxels", "--time-limit",
+                       "--resume", "--method"):
+            self.assertIn(option, r.stdout)
+        r = run(["--version"], self.dir)
+        self.assertEqual(r.returncode, 0)
+        self.assertEqual(r.stdout, "pw85-pack (pw85) %s\n" % VERSION)
+        self.assertEqual(os.listdir(self.dir), [])
+
+    def test_time_limit(self):
+        r = run(["--n", "200000", "--axes", "1,0.5,0.2", "--fraction", "0.25",
+                 "--time-limit", "0.3", "--out", "t.h5"], self.dir)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertIn("time limit reached", r.stderr)
+        with h5py.File(os.path.join(self.dir, "t.h5"), "r") as f:
+            count = f["centres"].shape[0]
+            self.assertTrue(0 < count < 200000, count)
+            self.assertEqual(f["quaternions"].shape, (count, 4))
+            side = (200000 * VOLUME / 0.25) ** (1 / 3)
+            self.assertAlmostEqual(f.attrs["packing_fraction"],
+                                   count * VOLUME / side**3, delta=1e-15)
+
+    def test_progress_bar_in_tmux(self):
+        tmux = shutil.which("tmux")
+        if tmux is None:
+            self.skipTest("tmux not installed")
+        session = "pw85-pack-%d" % os.getpid()
+        env = dict(os.environ, TMUX="")
+        command = "%s --n 30000 --axes 1,0.5,0.2 --fraction 0.28 --out bar.h5; sleep 30" % TOOL
+        subprocess.run([tmux, "-L", session, "new-session", "-d", "-s", session,
+                        "-x", "160", "-y", "8", "-c", self.dir, command],
+                       check=True, env=env)
+        try:
+            screen = ""
+            for _ in range(200):
+                time.sleep(0.05)
+                screen = subprocess.run(
+                    [tmux, "-L", session, "capture-pane", "-p", "-t", session],
+                    capture_output=True, text=True, env=env).stdout
+                if "left" in screen and "fraction" in screen:
+                    break
+            self.assertRegex(screen, r"\[[#.]{30}\] +[0-9.]+% fraction [0-9.]+ "
+                                     r"of 0\.2800, [0-9]+/s, ")
+        finally:
+            subprocess.run([tmux, "-L", session, "kill-server"], env=env)
+
+    def test_bad_arguments(self):
+        base = {"--n": "100", "--fraction": "0.2", "--out": "x.h5"}
+        cases = [
+            ({"--n": "0"}, "--n"), ({"--n": "abc"}, "--n"), ({"--n": "-3"}, "--n"),
+            ({"--n": "1e3"}, "--n"), ({"--n": "100000001"}, "--n"),
+            ({"--n": "1", "--fraction": "0.6"}, "--n: 1 ellipsoids give a box"),
+            ({"--fraction": "0"}, "--fraction"), ({"--fraction": "1"}, "--fraction"),
+            ({"--fraction": "nan"}, "--fraction"), ({"--fraction": "x"}, "--fraction"),
+            ({"--axes": "1,2"}, "--axes"), ({"--axes": "1,2,0"}, "--axes"),
+            ({"--axes": "1,2,3,4"}, "--axes"), ({"--axes": "1,-1,1"}, "--axes"),
+            ({"--axes": "a,b,c"}, "--axes"),
+            ({"--seed": "-1"}, "--seed"), ({"--seed": "18446744073709551616"}, "--seed"),
+            ({"--threads": "0"}, "--threads"), ({"--threads": "1025"}, "--threads"),
+            ({"--voxels": "0"}, "--voxels"), ({"--voxels": "4097"}, "--voxels"),
+            ({"--voxels": "4096"}, "the image needs 256.0 GiB"),
+            ({"--time-limit": "0"}, "--time-limit"), ({"--time-limit": "-1"}, "--time-limit"),
+            ({"--method": "annealing"}, "--method"),
+            ({"--out": ""}, "--out"), ({"--xyz": ""}, "--xyz"),
+            ({"--bogus": "1"}, "unknown option '--bogus'"),
+        ]
+        for change, message in cases:
+            args = dict(base)
+            args.update(change)
+            argv = [x for kv in args.items() for x in kv]
+            with self.subTest(change=change):
+                r = run(argv, self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(os.listdir(self.dir), [])
+        for argv, message in [(["--fraction", "0.2", "--out", "x.h5"], "--n"),
+                              (["--n", "10", "--out", "x.h5"], "--fraction"),
+                              (["--n", "10", "--fraction", "0.2"], "--out"),
+                              (["--n"], "--n: a value is needed")]:
+            with self.subTest(argv=argv):
+                r = run(argv, self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(os.listdir(self.dir), [])
+
+    def test_bad_files(self):
+        ok = ["--n", "100", "--fraction", "0.2"]
+        # an output that cannot be written
+        r = run(ok + ["--out", "/nonexistent-dir/x.h5"], self.dir)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("cannot write /nonexistent-dir/x.h5", r.stderr)
+        self.assertEqual(len(r.stderr.splitlines()), 1)
+        # a good file, untouched by every failed run below
+        r = run(ok + ["--out", "good.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(self.dir, "good.h5"), "rb") as f:
+            good = f.read()
+        with open(os.path.join(self.dir, "text.h5"), "w") as f:
+            f.write("not HDF5\n")
+        with open(os.path.join(self.dir, "cut.h5"), "wb") as f:
+            f.write(good[:len(good) // 2])
+        with h5py.File(os.path.join(self.dir, "other.h5"), "w") as f:
+            f["box"] = [1.0, 2.0]
+        with h5py.File(os.path.join(self.dir, "nobox.h5"), "w") as f:
+            f["positions"] = np.zeros((3, 3))
+        overlapping = os.path.join(self.dir, "overlap.h5")
+        shutil.copy(os.path.join(self.dir, "good.h5"), overlapping)
+        with h5py.File(overlapping, "r+") as f:
+            f["centres"][1] = f["centres"][0]
+            f["forms"][1] = f["forms"][0]
+        for name, message in [("missing.h5", "cannot read"),
+                              ("text.h5", "not an HDF5 file"),
+                              ("cut.h5", "not an HDF5 file"),
+                              ("other.h5", "/box has not the documented type and shape"),
+                              ("nobox.h5", "no dataset /box"),
+                              ("overlap.h5", "pairs of ellipsoids overlap")]:
+            with self.subTest(resume=name):
+                r = run(["--resume", name, "--out", "good.h5"], self.dir)
+                self.assertEqual(r.returncode, 1, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                with open(os.path.join(self.dir, "good.h5"), "rb") as f:
+                    self.assertEqual(f.read(), good)
+        r = run(["--resume", "good.h5", "--seed", "5", "--out", "y.h5"], self.dir)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--seed: differs", r.stderr)
+        r = run(["--resume", "good.h5", "--n", "50", "--out", "y.h5"], self.dir)
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("--n: 50 is fewer", r.stderr)
+        self.assertFalse([x for x in os.listdir(self.dir) if x.startswith("y.h5")])
+
+
+if __name__ == "__main__":
+    TOOL, VERSION = os.path.abspath(sys.argv[1]), sys.argv[2]
+    unittest.main(argv=sys.argv[:1], verbosity=2)

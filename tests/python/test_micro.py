@@ -1,0 +1,225 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""pypw85.micro: the voxel image against exact decisions (Python
+fractions), and the files of pw85-pack read and written (h5py, XDMF, ASE's
+extended XYZ)."""
+
+import math
+import os
+import xml.etree.ElementTree as ET
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import pypw85
+from pypw85 import micro
+
+
+def rotation(p):
+    w, x, y, z = p
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def random_config(rng, n, box, scale=1.0):
+    a = np.column_stack([rng.uniform(0.6, 1.6, n), rng.uniform(0.4, 1.0, n),
+                         rng.uniform(0.3, 0.7, n)]) * scale
+    p = rng.normal(size=(n, 4))
+    p /= np.linalg.norm(p, axis=1)[:, None]
+    q = np.array([(rotation(p[k]) @ np.diag(a[k] ** 2) @ rotation(p[k]).T)
+                  [np.triu_indices(3)] for k in range(n)])
+    c = rng.uniform(0, 1, (n, 3)) * box
+    return c, q, a, p
+
+
+def exact_inside(point, c, q):
+    """dᵀ adj(Q) d ≤ det Q in rationals, d = point − c (exact values)."""
+    d = [point[k] - c[k] for k in range(3)]
+    Q = [[Fraction(q[0]), Fraction(q[1]), Fraction(q[2])],
+         [Fraction(q[1]), Fraction(q[3]), Fraction(q[4])],
+         [Fraction(q[2]), Fraction(q[4]), Fraction(q[5])]]
+    A = [[Q[(l + 1) % 3][(k + 1) % 3] * Q[(l + 2) % 3][(k + 2) % 3]
+          - Q[(l + 1) % 3][(k + 2) % 3] * Q[(l + 2) % 3][(k + 1) % 3]
+          for l in range(3)] for k in range(3)]
+    det = sum(Q[0][l] * A[l][0] for l in range(3))
+    return sum(A[k][l] * d[k] * d[l] for k in range(3) for l in range(3)) <= det
+
+
+def brute_image(c, q, box, dims, origin, periodic):
+    """Every voxel against every ellipsoid (and image): doubles far from the
+    surface (value of dᵀQ⁻¹d farther than 1e-9 from 1, its rounding error
+    being below 1e-14 here), Fractions near it."""
+    n = len(c)
+    img = np.full(dims, -1, dtype=np.int32)
+    grids = np.meshgrid(*[origin[k] + (np.arange(dims[k]) + 0.5) * box[k] / dims[k]
+                          for k in range(3)], indexing="ij")
+    m = np.stack(grids, axis=-1)
+    shifts = list(np.ndindex(3, 3, 3)) if periodic else [(1, 1, 1)]
+    for e in range(n - 1, -1, -1):  # lowest position written last
+        qinv = np.linalg.inv(micro_unpack(q[e]))
+        inside = np.zeros(dims, dtype=bool)
+        for s in shifts:
+            cc = c[e] + (np.array(s) - 1) * box
+            d = m - cc
+            v = np.einsum("...i,ij,...j->...", d, qinv, d)
+            inside |= v < 1 - 1e-9
+            for idx in zip(*np.nonzero(np.abs(v - 1) <= 1e-9)):
+                point = [Fraction(origin[k]) + (2 * int(idx[k]) + 1)
+                         * Fraction(box[k]) / (2 * dims[k]) for k in range(3)]
+                cf = [Fraction(c[e][k]) + (s[k] - 1) * Fraction(box[k])
+                      for k in range(3)]
+                if exact_inside(point, cf, q[e]):
+                    inside[idx] = True
+        img[inside] = e
+    return img
+
+
+def micro_unpack(q):
+    return np.array([[q[0], q[1], q[2]], [q[1], q[3], q[4]], [q[2], q[4], q[5]]])
+
+
+def test_image_periodic_brute_force():
+    rng = np.random.default_rng(2028)
+    box = np.array([6.0, 6.5, 7.0])
+    c, q, _, _ = random_config(rng, 25, box)
+    dims = (20, 22, 24)
+    img = micro.voxel_image(c, q, box, dims, threads=2)
+    assert img.dtype == np.int32 and img.shape == dims
+    np.testing.assert_array_equal(img, brute_image(c, q, box, dims, np.zeros(3), True))
+    assert micro.phase_fraction(img) == np.mean(img >= 0)
+    assert 0.1 < micro.phase_fraction(img) < 0.9
+    for t in (1, 3, 0):
+        np.testing.assert_array_equal(micro.voxel_image(c, q, box, dims, threads=t), img)
+
+
+def test_image_open_brute_force():
+    rng = np.random.default_rng(7)
+    box, origin = np.array([5.0, 4.0, 4.5]), np.array([-2.5, 1.0, 100.25])
+    c, q, _, _ = random_config(rng, 15, box)
+    c += origin
+    dims = (18, 15, 16)
+    img = micro.voxel_image(c, q, box, dims, origin=origin, periodic=False)
+    np.testing.assert_array_equal(img, brute_image(c, q, box, dims, origin, False))
+
+
+def test_surface_points_exact():
+    """Voxel centres on surfaces to the last bit: c = m − v/√(vᵀQ⁻¹v),
+    rounded, for a voxel centre m; the voxel's value against Fractions."""
+    rng = np.random.default_rng(99)
+    box, dims = np.array([8.0, 8.0, 8.0]), (8, 8, 8)
+    sides = {True: 0, False: 0}
+    for trial in range(120):
+        a = rng.uniform([0.8, 0.5, 0.3], [2.5, 1.5, 1.2])
+        p = rng.normal(size=4)
+        p /= np.linalg.norm(p)
+        q = pypw85.ellipsoid_quaternion(a, p)
+        idx = tuple(int(x) for x in rng.integers(0, 8, 3))
+        m = np.array(idx) + 0.5
+        v = rng.normal(size=3)
+        v /= math.sqrt(v @ np.linalg.inv(micro_unpack(q)) @ v)
+        c = m - v
+        img = micro.voxel_image(c[None, :], q[None, :], box, dims)
+        want = any(exact_inside([Fraction(x) for x in m],
+                                [Fraction(c[k]) + (s[k] - 1) * 8 for k in range(3)], q)
+                   for s in np.ndindex(3, 3, 3))
+        sides[want] += 1
+        assert (img[idx] == 0) == want, (trial, idx, c, q)
+    assert sides[True] > 20 and sides[False] > 20, sides
+
+
+def test_image_errors():
+    box = np.array([2.0, 2.0, 2.0])
+    c = np.array([[1.0, 1.0, 1.0], [0.5, 0.5, 0.5]])
+    q = np.array([[0.25, 0, 0, 0.25, 0, 0.25], [0.25, 0.5, 0, 0.25, 0, 0.25]])
+    with pytest.raises(pypw85.Error, match=r"q\[1\].*not positive definite") as e:
+        micro.voxel_image(c, q, box, 4)
+    assert e.value.status == pypw85.ENOTPOSDEF
+    with pytest.raises(pypw85.Error, match="dims") as e:
+        micro.voxel_image(c[:1], q[:1], box, (4, 0, 4))
+    assert e.value.status == pypw85.EINVAL
+    with pytest.raises(pypw85.Error, match="sides"):
+        micro.voxel_image(c[:1], q[:1], [2.0, -1.0, 2.0], 4)
+    with pytest.raises(pypw85.Error, match="not finite") as e:
+        micro.voxel_image([[np.nan, 0, 0]], q[:1], box, 4)
+    assert e.value.status == pypw85.EDOM
+    with pytest.raises(pypw85.Error, match="ellipsoid 0"):
+        micro.voxel_image([[0, 0, 2.0**31]], q[:1], box, 4)
+    with pytest.raises(ValueError, match="centres"):
+        micro.voxel_image([1.0, 2.0], q[:1], box, 4)
+    with pytest.raises(ValueError, match="threads"):
+        micro.voxel_image(c[:1], q[:1], box, 4, threads=-1)
+    assert (micro.voxel_image(np.empty((0, 3)), np.empty((0, 6)), box, 3) == -1).all()
+
+
+def configuration(n=50, seed=5):
+    rng = np.random.default_rng(seed)
+    box = np.array([10.0, 11.0, 12.0])
+    c, q, a, p = random_config(rng, n, box, scale=0.5)
+    return micro.Microstructure(box=box, centres=c, forms=q, axes=a,
+                                quaternions=p, seed=2**64 - 3, method="rsa")
+
+
+def test_hdf5_round_trip(tmp_path):
+    h5py = pytest.importorskip("h5py")
+    m = configuration()
+    m.image = micro.voxel_image(m.centres, m.forms, m.box, (10, 11, 12))
+    path = tmp_path / "m.h5"
+    micro.write_hdf5(path, m)
+    assert sorted(os.listdir(tmp_path)) == ["m.h5"]
+    with h5py.File(path, "r") as f:
+        assert f["quaternions"].shape == (50, 4) and f["image"].dtype == np.int32
+        assert f.attrs["seed"] == 2**64 - 3 and f.attrs["seed"].dtype == np.uint64
+        assert f.attrs["pw85_version"] == pypw85.__version__
+        expected = sum(4 / 3 * math.pi * x * y * z for x, y, z in m.axes) / m.box.prod()
+        assert f.attrs["packing_fraction"] == pytest.approx(expected, rel=1e-15)
+    r = micro.read_hdf5(path)
+    for name in ("box", "centres", "forms", "axes", "quaternions", "image"):
+        np.testing.assert_array_equal(getattr(r, name), getattr(m, name))
+    assert (r.seed, r.method) == (m.seed, "rsa")
+    # a failed write leaves the file as it was, and no temporary file
+    before = path.read_bytes()
+    bad = configuration()
+    bad.forms = bad.forms[:, :5]
+    with pytest.raises(ValueError, match="forms"):
+        micro.write_hdf5(path, bad)
+    bad = configuration()
+    bad.image = np.zeros((2, 2), dtype=np.int32)
+    with pytest.raises(ValueError, match="image"):
+        micro.write_hdf5(path, bad)
+    assert path.read_bytes() == before
+    assert sorted(os.listdir(tmp_path)) == ["m.h5"]
+    # another layout
+    with h5py.File(tmp_path / "other.h5", "w") as f:
+        f["box"] = [1.0, 2.0, 3.0]
+    with pytest.raises(ValueError, match="no dataset /centres"):
+        micro.read_hdf5(tmp_path / "other.h5")
+
+
+def test_xdmf(tmp_path):
+    micro.write_xdmf(tmp_path / "m.xdmf", tmp_path / "m.h5", (10, 11, 12),
+                     [10.0, 11.0, 12.0])
+    root = ET.parse(tmp_path / "m.xdmf").getroot()
+    assert root.find("./Domain/Grid/Topology").get("Dimensions") == "11 12 13"
+    spacing = root.findall("./Domain/Grid/Geometry/DataItem")[1].text.split()
+    assert [float(x) for x in spacing] == [1.0, 1.0, 1.0]
+    assert root.find("./Domain/Grid/Attribute/DataItem").text == "m.h5:/image"
+
+
+def test_xyz_round_trip(tmp_path):
+    m = configuration()
+    micro.write_xyz(tmp_path / "m.xyz", m)
+    r = micro.read_xyz(tmp_path / "m.xyz")
+    for name in ("box", "centres", "axes", "quaternions"):
+        np.testing.assert_array_equal(getattr(r, name), getattr(m, name))
+    # the forms rebuilt by pw85_ellipsoid_quaternion: a few ulps of a²
+    np.testing.assert_allclose(r.forms, m.forms, rtol=0, atol=1e-15)
+    assert (r.seed, r.method) == (m.seed, m.method)
+    ase_io = pytest.importorskip("ase.io")
+    atoms = ase_io.read(tmp_path / "m.xyz", format="extxyz")
+    np.testing.assert_array_equal(atoms.positions, m.centres)
+    np.testing.assert_array_equal(atoms.cell.lengths(), m.box)
+    np.testing.assert_array_equal(atoms.arrays["orientation"],
+                                  m.quaternions[:, [1, 2, 3, 0]])
+    np.testing.assert_array_equal(atoms.arrays["aspherical_shape"], m.axes)

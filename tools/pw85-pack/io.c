@@ -1,0 +1,401 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* pw85-pack's files (io.h): the HDF5 layout, its XDMF companion and the
+ * extended XYZ of docs/microstructures.rst, each written to a temporary
+ * file of the same directory, flushed, then renamed over the target: whole
+ * or not at all. */
+#define _POSIX_C_SOURCE 200809L
+#include "io.h"
+
+#include <errno.h>
+#include <hdf5.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+/* The temporary name beside path: path.tmp-PID-XXXXXX, created (mkstemp);
+ * its descriptor in *fd. NULL on failure (errno set). */
+static char *temp_beside(char const *path, int *fd) {
+  size_t const n = strlen(path) + 64;
+  char *t = malloc(n);
+  if (t == NULL) return NULL;
+  snprintf(t, n, "%s.tmp-%ld-XXXXXX", path, (long)getpid());
+  *fd = mkstemp(t);
+  if (*fd < 0) {
+    int const e = errno;
+    free(t);
+    errno = e;
+    return NULL;
+  }
+  /* mkstemp() makes it 0600: the mode of a file created by open(). */
+  mode_t const mask = umask(0);
+  umask(mask);
+  fchmod(*fd, 0666 & ~mask);
+  return t;
+}
+
+static void set_error(char *err, size_t size, char const *what,
+                      char const *path, char const *why) {
+  snprintf(err, size, "%s %s: %s", what, path, why);
+}
+
+/* fsync then rename, or unlink on failure. */
+static int commit(char *tmp, int fd, char const *path, char *err, size_t size) {
+  int ok = fsync(fd) == 0;
+  int e = errno;
+  ok = close(fd) == 0 && ok;
+  if (ok && rename(tmp, path) != 0) {
+    e = errno;
+    ok = 0;
+  }
+  if (!ok) {
+    unlink(tmp);
+    set_error(err, size, "cannot write", path, strerror(e));
+  }
+  free(tmp);
+  return ok ? 0 : -1;
+}
+
+int io_check_writable(char const *path, char *err, size_t size) {
+  int fd;
+  char *tmp = temp_beside(path, &fd);
+  if (tmp == NULL) {
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return -1;
+  }
+  close(fd);
+  unlink(tmp);
+  free(tmp);
+  return 0;
+}
+
+/* ---- HDF5 ---- */
+
+static herr_t write_dataset(hid_t file, char const *name, hid_t type, int rank,
+                            hsize_t const *dims, void const *data) {
+  hid_t const space = H5Screate_simple(rank, dims, NULL);
+  if (space < 0) return -1;
+  hid_t const set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT,
+                               H5P_DEFAULT);
+  herr_t st = set < 0 ? -1 : 0;
+  if (st == 0 && dims[0] > 0) st = H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  if (set >= 0) H5Dclose(set);
+  H5Sclose(space);
+  return st;
+}
+
+static herr_t write_attr(hid_t file, char const *name, hid_t type, void const *value) {
+  hid_t const space = H5Screate(H5S_SCALAR);
+  hid_t const attr = H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t const st = attr < 0 ? -1 : H5Awrite(attr, type, value);
+  if (attr >= 0) H5Aclose(attr);
+  H5Sclose(space);
+  return st;
+}
+
+static herr_t write_string_attr(hid_t file, char const *name, char const *value) {
+  hid_t const type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  herr_t const st = write_attr(file, name, type, &value);
+  H5Tclose(type);
+  return st;
+}
+
+int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t size) {
+  int fd;
+  char *tmp = temp_beside(path, &fd);
+  if (tmp == NULL) {
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return -1;
+  }
+  hid_t const file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  herr_t st = file < 0 ? -1 : 0;
+  hsize_t const d3[1] = {3};
+  hsize_t const n = m->count;
+  hsize_t dims[3];
+  if (st == 0) st = write_dataset(file, "box", H5T_NATIVE_DOUBLE, 1, d3, m->box);
+  dims[0] = n, dims[1] = 3;
+  if (st == 0) st = write_dataset(file, "centres", H5T_NATIVE_DOUBLE, 2, dims, m->centres);
+  dims[1] = 6;
+  if (st == 0) st = write_dataset(file, "forms", H5T_NATIVE_DOUBLE, 2, dims, m->forms);
+  dims[1] = 3;
+  if (st == 0) st = write_dataset(file, "axes", H5T_NATIVE_DOUBLE, 2, dims, m->axes);
+  dims[1] = 4;
+  if (st == 0)
+    st = write_dataset(file, "quaternions", H5T_NATIVE_DOUBLE, 2, dims, m->quaternions);
+  if (st == 0 && m->image != NULL) {
+    for (int k = 0; k < 3; k++) dims[k] = m->dims[k];
+    st = write_dataset(file, "image", H5T_NATIVE_INT32, 3, dims, m->image);
+  }
+  if (st == 0) st = write_attr(file, "packing_fraction", H5T_NATIVE_DOUBLE, &m->packing_fraction);
+  if (st == 0) st = write_attr(file, "seed", H5T_NATIVE_UINT64, &m->seed);
+  if (st == 0) st = write_string_attr(file, "pw85_version", m->pw85_version);
+  if (st == 0) st = write_string_attr(file, "method", m->method);
+  if (st == 0) st = write_attr(file, "attempts", H5T_NATIVE_UINT64, &m->attempts);
+  uint64_t const target = m->target;
+  if (st == 0) st = write_attr(file, "target_count", H5T_NATIVE_UINT64, &target);
+  if (st == 0 && m->image != NULL)
+    st = write_attr(file, "image_fraction", H5T_NATIVE_DOUBLE, &m->image_fraction);
+  if (file >= 0 && H5Fclose(file) < 0) st = -1;
+  if (st < 0) {
+    close(fd);
+    unlink(tmp);
+    free(tmp);
+    set_error(err, size, "cannot write", path, "HDF5 error (disk full?)");
+    return -1;
+  }
+  return commit(tmp, fd, path, err, size);
+}
+
+/* Reads dataset name: type double (or int32 for the image), rank `rank`,
+ * the dims given where nonzero (dims[0] = 0: any; returned). */
+static int read_dataset(hid_t file, char const *name, int rank, hsize_t *dims,
+                        hid_t mem_type, void **data, char *why, size_t size) {
+  if (H5Lexists(file, name, H5P_DEFAULT) <= 0) {
+    snprintf(why, size, "no dataset /%s", name);
+    return -1;
+  }
+  hid_t const set = H5Dopen2(file, name, H5P_DEFAULT);
+  if (set < 0) {
+    snprintf(why, size, "/%s is not a dataset", name);
+    return -1;
+  }
+  hid_t const space = H5Dget_space(set), type = H5Dget_type(set);
+  hsize_t got[4] = {0, 0, 0, 0};
+  int const r = H5Sget_simple_extent_ndims(space);
+  int ok = r == rank && H5Tget_class(type) == H5Tget_class(mem_type);
+  if (ok) H5Sget_simple_extent_dims(space, got, NULL);
+  for (int k = 0; ok && k < rank; k++)
+    if (dims[k] != 0 && got[k] != dims[k]) ok = 0;
+  if (!ok) {
+    snprintf(why, size, "/%s has not the documented type and shape", name);
+  } else {
+    size_t count = 1;
+    for (int k = 0; k < rank; k++) count *= (size_t)(dims[k] = got[k]);
+    *data = malloc((count ? count : 1) * H5Tget_size(mem_type));
+    if (*data == NULL) {
+      snprintf(why, size, "out of memory for /%s", name);
+      ok = 0;
+    } else if (count > 0 &&
+               H5Dread(set, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, *data) < 0) {
+      snprintf(why, size, "/%s cannot be read (corrupted?)", name);
+      free(*data);
+      *data = NULL;
+      ok = 0;
+    }
+  }
+  H5Tclose(type);
+  H5Sclose(space);
+  H5Dclose(set);
+  return ok ? 0 : -1;
+}
+
+static int read_attr(hid_t file, char const *name, hid_t mem_type, void *value,
+                     char *why, size_t size) {
+  if (H5Aexists(file, name) <= 0) {
+    snprintf(why, size, "no attribute %s", name);
+    return -1;
+  }
+  hid_t const attr = H5Aopen(file, name, H5P_DEFAULT);
+  hid_t const type = H5Aget_type(attr);
+  int ok = H5Tget_class(type) == H5Tget_class(mem_type) &&
+           H5Aread(attr, mem_type, value) >= 0;
+  H5Tclose(type);
+  H5Aclose(attr);
+  if (!ok) snprintf(why, size, "attribute %s has not the documented type", name);
+  return ok ? 0 : -1;
+}
+
+static int read_string_attr(hid_t file, char const *name, char *out, size_t out_size,
+                            char *why, size_t size) {
+  if (H5Aexists(file, name) <= 0) {
+    snprintf(why, size, "no attribute %s", name);
+    return -1;
+  }
+  hid_t const attr = H5Aopen(file, name, H5P_DEFAULT);
+  hid_t const type = H5Aget_type(attr);
+  int ok = H5Tget_class(type) == H5T_STRING;
+  if (ok && H5Tis_variable_str(type) > 0) {
+    char *s = NULL;
+    hid_t const mem = H5Tcopy(H5T_C_S1);
+    H5Tset_size(mem, H5T_VARIABLE);
+    H5Tset_cset(mem, H5Tget_cset(type));
+    ok = H5Aread(attr, mem, &s) >= 0 && s != NULL;
+    if (ok) snprintf(out, out_size, "%s", s);
+    if (s != NULL) H5free_memory(s);
+    H5Tclose(mem);
+  } else if (ok) {
+    size_t const n = H5Tget_size(type);
+    char *s = calloc(n + 1, 1);
+    ok = s != NULL && H5Aread(attr, type, s) >= 0;
+    if (ok) snprintf(out, out_size, "%s", s);
+    free(s);
+  }
+  H5Tclose(type);
+  H5Aclose(attr);
+  if (!ok) snprintf(why, size, "attribute %s is not a string", name);
+  return ok ? 0 : -1;
+}
+
+int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size) {
+  memset(m, 0, sizeof *m);
+  char why[256] = "";
+  if (access(path, R_OK) != 0) {
+    set_error(err, size, "cannot read", path, strerror(errno));
+    return -1;
+  }
+  if (H5Fis_hdf5(path) <= 0) {
+    set_error(err, size, "cannot read", path, "not an HDF5 file (or a corrupted one)");
+    return -1;
+  }
+  hid_t const file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) {
+    set_error(err, size, "cannot read", path, "not an HDF5 file (or a corrupted one)");
+    return -1;
+  }
+  hsize_t d[3] = {3, 0, 0};
+  double *box = NULL;
+  int st = read_dataset(file, "box", 1, d, H5T_NATIVE_DOUBLE, (void **)&box, why, sizeof why);
+  if (st == 0) {
+    memcpy(m->box, box, sizeof m->box);
+    free(box);
+    d[0] = 0, d[1] = 3;
+    st = read_dataset(file, "centres", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->centres, why,
+                      sizeof why);
+    m->count = (size_t)d[0];
+  }
+  hsize_t const n = m->count;
+  if (st == 0) {
+    d[0] = n, d[1] = 6;
+    st = read_dataset(file, "forms", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->forms, why, sizeof why);
+  }
+  if (st == 0) {
+    d[0] = n, d[1] = 3;
+    st = read_dataset(file, "axes", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->axes, why, sizeof why);
+  }
+  if (st == 0) {
+    d[0] = n, d[1] = 4;
+    st = read_dataset(file, "quaternions", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->quaternions,
+                      why, sizeof why);
+  }
+  if (st == 0)
+    st = read_attr(file, "packing_fraction", H5T_NATIVE_DOUBLE, &m->packing_fraction, why,
+                   sizeof why);
+  if (st == 0) st = read_attr(file, "seed", H5T_NATIVE_UINT64, &m->seed, why, sizeof why);
+  if (st == 0)
+    st = read_string_attr(file, "method", m->method, sizeof m->method, why, sizeof why);
+  if (st == 0)
+    st = read_string_attr(file, "pw85_version", m->pw85_version, sizeof m->pw85_version,
+                          why, sizeof why);
+  if (st == 0) st = read_attr(file, "attempts", H5T_NATIVE_UINT64, &m->attempts, why, sizeof why);
+  uint64_t target = 0;
+  if (st == 0) st = read_attr(file, "target_count", H5T_NATIVE_UINT64, &target, why, sizeof why);
+  m->target = (size_t)target;
+  H5Fclose(file);
+  if (st != 0) {
+    io_free(m);
+    set_error(err, size, "not a pw85-pack file", path, why);
+    return -1;
+  }
+  return 0;
+}
+
+void io_free(struct micro *m) {
+  free(m->centres), free(m->forms), free(m->axes), free(m->quaternions);
+  m->centres = m->forms = m->axes = m->quaternions = NULL;
+}
+
+/* ---- text files ---- */
+
+static char const *base_name(char const *path) {
+  char const *s = strrchr(path, '/');
+  return s ? s + 1 : path;
+}
+
+int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
+                  char *err, size_t size) {
+  int fd;
+  char *tmp = temp_beside(path, &fd);
+  if (tmp == NULL) {
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return -1;
+  }
+  FILE *f = fdopen(dup(fd), "w");
+  if (f == NULL) {
+    close(fd), unlink(tmp), free(tmp);
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return -1;
+  }
+  size_t const *n = m->dims;
+  /* XDMF lists dimensions slowest first (z y x): the image's first index,
+   * along x, is ParaView's Z (docs/microstructures.rst, "ParaView"). */
+  fprintf(f,
+          "<?xml version=\"1.0\" ?>\n"
+          "<!-- pw85-pack %s: the voxel image of %s (docs: \"Microstructures for FFT "
+          "solvers and viewers\"). -->\n"
+          "<Xdmf Version=\"3.0\">\n"
+          "  <Domain>\n"
+          "    <Grid Name=\"image\" GridType=\"Uniform\">\n"
+          "      <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%zu %zu %zu\"/>\n"
+          "      <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+          "        <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" "
+          "Precision=\"8\" Format=\"XML\">0 0 0</DataItem>\n"
+          "        <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" "
+          "Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n"
+          "      </Geometry>\n"
+          "      <Attribute Name=\"phase\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+          "        <DataItem Dimensions=\"%zu %zu %zu\" NumberType=\"Int\" Precision=\"4\" "
+          "Format=\"HDF\">%s:/image</DataItem>\n"
+          "      </Attribute>\n"
+          "    </Grid>\n"
+          "  </Domain>\n"
+          "</Xdmf>\n",
+          m->pw85_version, base_name(h5_path), n[0] + 1, n[1] + 1, n[2] + 1,
+          m->box[0] / (double)n[0], m->box[1] / (double)n[1], m->box[2] / (double)n[2],
+          n[0], n[1], n[2], base_name(h5_path));
+  int const bad = ferror(f) | (fclose(f) != 0);
+  if (bad) {
+    close(fd), unlink(tmp), free(tmp);
+    set_error(err, size, "cannot write", path, "write error (disk full?)");
+    return -1;
+  }
+  return commit(tmp, fd, path, err, size);
+}
+
+int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size) {
+  int fd;
+  char *tmp = temp_beside(path, &fd);
+  if (tmp == NULL) {
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return -1;
+  }
+  FILE *f = fdopen(dup(fd), "w");
+  if (f == NULL) {
+    close(fd), unlink(tmp), free(tmp);
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return -1;
+  }
+  fprintf(f, "%zu\n", m->count);
+  fprintf(f,
+          "Lattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" pbc=\"T T T\" "
+          "Properties=species:S:1:pos:R:3:aspherical_shape:R:3:orientation:R:4 "
+          "packing_fraction=%.17g seed=%llu method=%s pw85_version=%s\n",
+          m->box[0], m->box[1], m->box[2], m->packing_fraction,
+          (unsigned long long)m->seed, m->method, m->pw85_version);
+  for (size_t i = 0; i < m->count; i++) {
+    double const *c = m->centres + 3 * i, *a = m->axes + 3 * i, *p = m->quaternions + 4 * i;
+    /* OVITO's orientation: x, y, z, w */
+    fprintf(f, "X %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", c[0],
+            c[1], c[2], a[0], a[1], a[2], p[1], p[2], p[3], p[0]);
+  }
+  int const bad = ferror(f) | (fclose(f) != 0);
+  if (bad) {
+    close(fd), unlink(tmp), free(tmp);
+    set_error(err, size, "cannot write", path, "write error (disk full?)");
+    return -1;
+  }
+  return commit(tmp, fd, path, err, size);
+}

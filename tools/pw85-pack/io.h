@@ -1,0 +1,37 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* pw85-pack's files (io.c): the HDF5 layout of docs/microstructures.rst,
+ * its XDMF companion and the extended XYZ. Every writer writes a temporary
+ * file beside the target and renames it: the target is whole or untouched.
+ * Errors: −1 and one line in err (no trailing newline). */
+#ifndef PW85_PACK_IO_H
+#define PW85_PACK_IO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* A configuration as written: count ellipsoids in a periodic box. */
+struct micro {
+  double box[3];
+  size_t count;
+  double *centres, *forms, *axes, *quaternions; /* 3, 6, 3, 4 per ellipsoid */
+  double packing_fraction;
+  uint64_t seed, attempts;
+  size_t target;
+  char method[32];
+  char pw85_version[32];
+  /* the image, or NULL: dims[0]·dims[1]·dims[2] int32, and its phase fraction */
+  int32_t const *image;
+  size_t dims[3];
+  double image_fraction;
+};
+
+int io_check_writable(char const *path, char *err, size_t size);
+int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t size);
+/* Reads the layout (without /image); validates types and shapes. */
+int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size);
+void io_free(struct micro *m);
+int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
+                  char *err, size_t size);
+int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size);
+
+#endif

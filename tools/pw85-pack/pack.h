@@ -1,0 +1,54 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* pw85-pack: what the packing methods and the command share. A method is
+ * one function (pack_method below): it grows a configuration from its
+ * current state towards the target count, calling `progress` now and then,
+ * and returns how it stopped. The command (pw85_pack.c) picks it by name
+ * (pack_methods[]), and writes whatever state it returns: every ellipsoid
+ * in it must be certified free of overlaps at every return. */
+#ifndef PW85_PACK_TOOL_H
+#define PW85_PACK_TOOL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* What is asked: a cubic (or orthorhombic) periodic box, identical
+ * ellipsoids of semi-axes `axes`, a target count, a seed, threads. */
+struct pack_config {
+  size_t target;
+  double axes[3];
+  double box[3];
+  uint64_t seed;
+  int threads;
+};
+
+/* The configuration, grown in place: count ellipsoids, each with its
+ * centre (3), form (6, the q of pw85.h), semi-axes (3) and unit quaternion
+ * (4: w, x, y, z); capacity ≥ target. attempts: the candidates drawn so
+ * far (the counter of the method's random stream, so that a resumed
+ * packing draws what the uninterrupted one would have). */
+struct pack_state {
+  size_t count, capacity;
+  double *centres, *forms, *axes, *quaternions;
+  uint64_t attempts;
+};
+
+/* Called by a method every few milliseconds of work; nonzero: stop now
+ * (interrupted, or out of time). */
+typedef int (*pack_progress)(void *context, struct pack_state const *state);
+
+/* How a method stopped (its return value); negative: a pw85 status, negated. */
+enum pack_outcome {
+  PACK_DONE = 0,      /* target count reached */
+  PACK_STOPPED = 1,   /* progress() asked it to stop */
+  PACK_SATURATED = 2, /* no candidate fits any more (by the method's rule) */
+};
+
+typedef int (*pack_method)(struct pack_config const *config,
+                           struct pack_state *state, pack_progress progress,
+                           void *context);
+
+/* Random sequential addition on the index of pw85_index.h (pack_rsa.c). */
+int pack_rsa(struct pack_config const *config, struct pack_state *state,
+             pack_progress progress, void *context);
+
+#endif

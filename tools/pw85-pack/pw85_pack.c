@@ -1,0 +1,458 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* pw85-pack: pack identical ellipsoids in a periodic cube and write the
+ * microstructure (HDF5, its XDMF companion, extended XYZ, a voxel image).
+ * `pw85-pack --help` says how; docs/microstructures.rst is the contract of
+ * the files. Exit status: 0 the target count reached and the files
+ * written; 3 stopped early (time limit or saturation), files written; 130
+ * interrupted (SIGINT, SIGTERM), the last certified configuration written;
+ * 2 a bad argument (one line naming it, nothing written); 1 any other
+ * error (nothing written, or the files as they were). */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <hdf5.h>
+#include <limits.h>
+#include <math.h>
+#include <pw85/pw85_image.h>
+#include <pw85/pw85_index.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "io.h"
+#include "pack.h"
+
+/* The methods, by name: the first is the default. */
+static struct {
+  char const *name;
+  pack_method run;
+} const methods[] = {{"rsa", pack_rsa}};
+enum { method_count = sizeof methods / sizeof methods[0] };
+
+static char const usage[] =
+    "Usage: pw85-pack --n N --fraction F --out FILE.h5 [options]\n"
+    "Pack N identical ellipsoids in a periodic cube of the volume that they fill to\n"
+    "the packing fraction F, every pair certified free of overlap by pw85, and write\n"
+    "the configuration (HDF5; layout: docs, \"Microstructures for FFT solvers and\n"
+    "viewers\").\n"
+    "\n"
+    "  --n N             number of ellipsoids (1 to 100000000)\n"
+    "  --axes A,B,C      semi-axes (> 0, default 1,1,1)\n"
+    "  --fraction F      target packing fraction, 0 < F < 1 (sets the box)\n"
+    "  --seed S          seed of the random stream (0 to 2^64-1, default 1)\n"
+    "  --threads T       threads (1 to 1024, default 1); same result for any T\n"
+    "  --out FILE        the HDF5 file to write\n"
+    "  --xyz FILE        also an extended XYZ file (OVITO, ASE)\n"
+    "  --voxels M        also an M^3 voxel image in FILE (/image) and FILE's\n"
+    "                    XDMF companion (ParaView), M from 1 to 4096\n"
+    "  --time-limit S    stop packing after S seconds (> 0) and write what is there\n"
+    "  --resume FILE     continue the packing in FILE (written by pw85-pack): its\n"
+    "                    box, axes, seed and method; --n may raise the count\n"
+    "  --method NAME     packing method: rsa (random sequential addition, default)\n"
+    "  --quiet           no progress bar (there is none when stderr is not a terminal)\n"
+    "  --help, --version\n"
+    "\n"
+    "Exit status: 0 done; 3 stopped early (time limit, saturation), files written;\n"
+    "130 interrupted (Ctrl-C), the last certified configuration written; 2 a bad\n"
+    "argument; 1 another error. Files are written whole or not at all.\n";
+
+static char const *prog = "pw85-pack";
+
+static int bad_argument(char const *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, "%s: ", prog);
+  vfprintf(stderr, fmt, ap);
+  fprintf(stderr, " (see --help)\n");
+  va_end(ap);
+  return 2;
+}
+
+static int error(char const *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  fprintf(stderr, "%s: ", prog);
+  vfprintf(stderr, fmt, ap);
+  fputc('\n', stderr);
+  va_end(ap);
+  return 1;
+}
+
+/* ---- arguments ---- */
+
+static int parse_double(char const *s, double *x) {
+  char *end;
+  errno = 0;
+  *x = strtod(s, &end);
+  return end != s && *end == '\0' && errno == 0 && isfinite(*x);
+}
+
+static int parse_u64(char const *s, uint64_t *x) {
+  char *end;
+  if (*s == '-' || *s == '+' || *s == ' ' || *s == '\0') return 0;
+  errno = 0;
+  unsigned long long const v = strtoull(s, &end, 10);
+  *x = v;
+  return *end == '\0' && errno == 0;
+}
+
+struct options {
+  size_t n;
+  int have_n, have_axes, have_fraction, have_seed;
+  double axes[3], fraction, time_limit;
+  uint64_t seed;
+  int threads, quiet;
+  size_t voxels;
+  char const *out, *xyz, *resume, *method;
+};
+
+static int parse(int argc, char **argv, struct options *o) {
+  *o = (struct options){.axes = {1, 1, 1}, .seed = 1, .threads = 1, .method = NULL};
+  for (int i = 1; i < argc; i++) {
+    char const *a = argv[i];
+    if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+      fputs(usage, stdout);
+      exit(0);
+    }
+    if (strcmp(a, "--version") == 0) {
+      printf("pw85-pack (pw85) %s\n", pw85_version());
+      exit(0);
+    }
+    if (strcmp(a, "--quiet") == 0) {
+      o->quiet = 1;
+      continue;
+    }
+    static char const *const with_value[] = {
+        "--n", "--axes", "--fraction", "--seed", "--threads", "--out", "--xyz",
+        "--voxels", "--time-limit", "--resume", "--method"};
+    char const *name = NULL, *v = NULL;
+    for (size_t k = 0; k < sizeof with_value / sizeof *with_value; k++) {
+      size_t const len = strlen(with_value[k]);
+      if (strncmp(a, with_value[k], len) == 0 && (a[len] == '\0' || a[len] == '=')) {
+        name = with_value[k];
+        if (a[len] == '=') {
+          v = a + len + 1;
+        } else if (i + 1 < argc) {
+          v = argv[++i];
+        } else {
+          return bad_argument("%s: a value is needed", name);
+        }
+        break;
+      }
+    }
+    if (name == NULL) return bad_argument("unknown option '%s'", a);
+    uint64_t u;
+    double x;
+    if (strcmp(name, "--n") == 0) {
+      if (!parse_u64(v, &u) || u < 1 || u > 100000000)
+        return bad_argument("--n: expected an integer from 1 to 100000000, got '%s'", v);
+      o->n = (size_t)u, o->have_n = 1;
+    } else if (strcmp(name, "--axes") == 0) {
+      char buf[256];
+      snprintf(buf, sizeof buf, "%s", v);
+      char *save = NULL, *tok = strtok_r(buf, ",", &save);
+      int k = 0;
+      for (; tok != NULL && k < 3; k++, tok = strtok_r(NULL, ",", &save))
+        if (!parse_double(tok, &o->axes[k]) || !(o->axes[k] > 0) || o->axes[k] > 1e100)
+          break;
+      if (k != 3 || tok != NULL || strlen(v) >= sizeof buf)
+        return bad_argument("--axes: expected three numbers > 0 separated by commas, got '%s'",
+                            v);
+      o->have_axes = 1;
+    } else if (strcmp(name, "--fraction") == 0) {
+      if (!parse_double(v, &x) || !(x > 0 && x < 1))
+        return bad_argument("--fraction: expected a number between 0 and 1 (excluded), got '%s'",
+                            v);
+      o->fraction = x, o->have_fraction = 1;
+    } else if (strcmp(name, "--seed") == 0) {
+      if (!parse_u64(v, &u))
+        return bad_argument("--seed: expected an integer from 0 to 2^64-1, got '%s'", v);
+      o->seed = u, o->have_seed = 1;
+    } else if (strcmp(name, "--threads") == 0) {
+      if (!parse_u64(v, &u) || u < 1 || u > 1024)
+        return bad_argument("--threads: expected an integer from 1 to 1024, got '%s'", v);
+      o->threads = (int)u;
+    } else if (strcmp(name, "--voxels") == 0) {
+      if (!parse_u64(v, &u) || u < 1 || u > 4096)
+        return bad_argument("--voxels: expected an integer from 1 to 4096, got '%s'", v);
+      o->voxels = (size_t)u;
+    } else if (strcmp(name, "--time-limit") == 0) {
+      if (!parse_double(v, &x) || !(x > 0))
+        return bad_argument("--time-limit: expected a number of seconds > 0, got '%s'", v);
+      o->time_limit = x;
+    } else if (*v == '\0') {
+      return bad_argument("%s: expected a file name, got ''", name);
+    } else if (strcmp(name, "--out") == 0) {
+      o->out = v;
+    } else if (strcmp(name, "--xyz") == 0) {
+      o->xyz = v;
+    } else if (strcmp(name, "--resume") == 0) {
+      o->resume = v;
+    } else if (strcmp(name, "--method") == 0) {
+      int found = 0;
+      for (int k = 0; k < method_count; k++) found |= strcmp(v, methods[k].name) == 0;
+      if (!found) return bad_argument("--method: unknown method '%s' (known: rsa)", v);
+      o->method = v;
+    }
+  }
+  if (o->out == NULL) return bad_argument("--out: the HDF5 file to write is needed");
+  if (o->resume == NULL) {
+    if (!o->have_n) return bad_argument("--n: the number of ellipsoids is needed");
+    if (!o->have_fraction) return bad_argument("--fraction: the target packing fraction is needed");
+  }
+  return 0;
+}
+
+/* ---- progress and signals ---- */
+
+static volatile sig_atomic_t interrupted = 0;
+static void on_signal(int sig) { interrupted = sig; }
+
+static double now(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+struct progress_state {
+  double t0, last_draw, time_limit, unit_volume, box_volume;
+  size_t start_count, target;
+  int bar; /* stderr is a terminal and not --quiet */
+  int drawn;
+};
+
+static void draw_bar(struct progress_state *p, struct pack_state const *st) {
+  double const t = now() - p->t0;
+  double const phi = (double)st->count * p->unit_volume / p->box_volume;
+  double const target_phi = (double)p->target * p->unit_volume / p->box_volume;
+  double const done = (double)st->count / (double)p->target;
+  double const rate = t > 0 ? (double)(st->count - p->start_count) / t : 0;
+  int const width = 30, fill = (int)(done * width);
+  char bar[64];
+  for (int k = 0; k < width; k++) bar[k] = k < fill ? '#' : '.';
+  bar[width] = '\0';
+  char left[32] = "?";
+  if (rate > 0) snprintf(left, sizeof left, "%.0f s", (double)(p->target - st->count) / rate);
+  fprintf(stderr, "\r[%s] %5.1f%% fraction %.4f of %.4f, %.0f/s, %s left   ", bar,
+          100 * done, phi, target_phi, rate, left);
+  fflush(stderr);
+  p->drawn = 1;
+}
+
+static int on_progress(void *context, struct pack_state const *st) {
+  struct progress_state *p = context;
+  double const t = now();
+  if (p->bar && t - p->last_draw > 0.1) {
+    draw_bar(p, st);
+    p->last_draw = t;
+  }
+  if (interrupted) return 1;
+  if (p->time_limit > 0 && t - p->t0 >= p->time_limit) return 1;
+  return 0;
+}
+
+/* ---- main ---- */
+
+static int alloc_state(struct pack_state *st, size_t capacity) {
+  st->capacity = capacity;
+  st->centres = malloc(capacity * 3 * sizeof(double));
+  st->forms = malloc(capacity * 6 * sizeof(double));
+  st->axes = malloc(capacity * 3 * sizeof(double));
+  st->quaternions = malloc(capacity * 4 * sizeof(double));
+  return st->centres && st->forms && st->axes && st->quaternions;
+}
+
+static double available_memory(void) {
+  long const pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+  return pages > 0 && size > 0 ? (double)pages * (double)size : INFINITY;
+}
+
+/* What main() allocates, freed by main() on every path. */
+static struct pack_state st;
+static char *xdmf;
+static int32_t *image;
+
+static int pack_main(int argc, char **argv) {
+  struct options o;
+  int const bad = parse(argc, argv, &o);
+  if (bad) return bad;
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors are reported by us */
+
+  /* The output directories can be written (before any work). */
+  char err[1024];
+  if (io_check_writable(o.out, err, sizeof err) != 0) return error("--out: %s", err);
+  if (o.xyz && io_check_writable(o.xyz, err, sizeof err) != 0) return error("--xyz: %s", err);
+  if (o.voxels) {
+    size_t const len = strlen(o.out);
+    xdmf = malloc(len + 6);
+    if (xdmf == NULL) return error("out of memory");
+    strcpy(xdmf, o.out);
+    char *dot = strrchr(xdmf, '.'), *slash = strrchr(xdmf, '/');
+    if (dot != NULL && (slash == NULL || dot > slash)) *dot = '\0';
+    strcat(xdmf, ".xdmf");
+    if (io_check_writable(xdmf, err, sizeof err) != 0) return error("--voxels: %s", err);
+    double const need = 4.0 * (double)o.voxels * (double)o.voxels * (double)o.voxels;
+    double const have = available_memory();
+    if (need > have)
+      return bad_argument("--voxels %zu: the image needs %.1f GiB, more than the %.1f GiB of "
+                          "memory available",
+                          o.voxels, need / 1073741824.0, have / 1073741824.0);
+  }
+
+  struct pack_config cf = {.threads = o.threads, .seed = o.seed};
+  char method[32];
+  snprintf(method, sizeof method, "%s", o.method ? o.method : methods[0].name);
+  if (o.resume) {
+    struct micro r;
+    if (io_read_hdf5(o.resume, &r, err, sizeof err) != 0) return error("--resume: %s", err);
+    /* One set of axes, the one of the file (identical ellipsoids). */
+    double const *a = r.axes;
+    int same = 1;
+    for (size_t i = 1; i < r.count; i++)
+      same &= memcmp(r.axes + 3 * i, a, 3 * sizeof *a) == 0;
+    if (r.count == 0 || !same) {
+      io_free(&r);
+      return error("--resume: %s: not a packing of identical ellipsoids by pw85-pack",
+                   o.resume);
+    }
+    if (o.have_axes && memcmp(o.axes, a, sizeof o.axes) != 0) {
+      io_free(&r);
+      return bad_argument("--axes: differs from the axes of %s", o.resume);
+    }
+    if (o.have_seed && o.seed != r.seed) {
+      io_free(&r);
+      return bad_argument("--seed: differs from the seed of %s (%llu)", o.resume,
+                          (unsigned long long)r.seed);
+    }
+    if (o.method && strcmp(o.method, r.method) != 0) {
+      io_free(&r);
+      return bad_argument("--method: differs from the method of %s (%s)", o.resume, r.method);
+    }
+    int known = 0;
+    for (int k = 0; k < method_count; k++) known |= strcmp(r.method, methods[k].name) == 0;
+    if (!known) {
+      io_free(&r);
+      return error("--resume: %s: packed by method '%s', unknown here", o.resume, r.method);
+    }
+    snprintf(method, sizeof method, "%s", r.method);
+    memcpy(cf.axes, a, sizeof cf.axes);
+    memcpy(cf.box, r.box, sizeof cf.box);
+    cf.seed = r.seed;
+    cf.target = o.have_n ? o.n : r.target;
+    if (cf.target < r.count) {
+      io_free(&r);
+      return bad_argument("--n: %zu is fewer than the %zu ellipsoids of %s", o.n, r.count,
+                          o.resume);
+    }
+    if (!alloc_state(&st, cf.target)) {
+      io_free(&r);
+      return error("out of memory");
+    }
+    memcpy(st.centres, r.centres, r.count * 3 * sizeof(double));
+    memcpy(st.forms, r.forms, r.count * 6 * sizeof(double));
+    memcpy(st.axes, r.axes, r.count * 3 * sizeof(double));
+    memcpy(st.quaternions, r.quaternions, r.count * 4 * sizeof(double));
+    st.count = r.count;
+    st.attempts = r.attempts;
+    io_free(&r);
+    /* Certified again: the file may have been edited. */
+    pw85_index *index = NULL;
+    int status = pw85_index_create(cf.box, &index);
+    if (status == PW85_SUCCESS) {
+      size_t pairs = 0;
+      for (size_t i = 0; i < st.count && status == PW85_SUCCESS; i++)
+        status = pw85_index_insert(index, i, st.centres + 3 * i, st.forms + 6 * i);
+      if (status == PW85_SUCCESS)
+        status = pw85_index_overlapping_pairs(index, o.threads, 0, NULL, NULL, NULL, &pairs);
+      pw85_index_destroy(index);
+      if (status == PW85_SUCCESS && pairs > 0)
+        return error("--resume: %s: %zu pairs of ellipsoids overlap", o.resume, pairs);
+    }
+    if (status != PW85_SUCCESS)
+      return error("--resume: %s: %s", o.resume, pw85_strerror(status));
+  } else {
+    double const pi = 3.14159265358979323846;
+    double const v = 4.0 / 3.0 * pi * o.axes[0] * o.axes[1] * o.axes[2];
+    double const side = cbrt((double)o.n * v / o.fraction);
+    double const widest = fmax(o.axes[0], fmax(o.axes[1], o.axes[2]));
+    if (!(2.0 * widest * (1.0 + 0x1p-19) < side))
+      return bad_argument("--n: %zu ellipsoids give a box of side %.6g, not wider than an "
+                          "ellipsoid (%.6g): ask for more",
+                          o.n, side, 2 * widest);
+    memcpy(cf.axes, o.axes, sizeof cf.axes);
+    cf.box[0] = cf.box[1] = cf.box[2] = side;
+    cf.target = o.n;
+    if (!alloc_state(&st, cf.target)) return error("out of memory");
+  }
+  pack_method run = methods[0].run;
+  for (int k = 0; k < method_count; k++)
+    if (strcmp(method, methods[k].name) == 0) run = methods[k].run;
+
+  struct sigaction sa;
+  memset(&sa, 0, sizeof sa);
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, NULL);
+  sigaction(SIGTERM, &sa, NULL);
+
+  double const unit_volume = 4.0 / 3.0 * 3.14159265358979323846 * cf.axes[0] * cf.axes[1] *
+                             cf.axes[2];
+  double const box_volume = cf.box[0] * cf.box[1] * cf.box[2];
+  struct progress_state ps = {.t0 = now(), .time_limit = o.time_limit,
+                              .unit_volume = unit_volume, .box_volume = box_volume,
+                              .start_count = st.count, .target = cf.target,
+                              .bar = !o.quiet && isatty(STDERR_FILENO)};
+  int const outcome = run(&cf, &st, on_progress, &ps);
+  if (ps.bar) {
+    draw_bar(&ps, &st);
+    fputc('\n', stderr);
+  }
+  if (outcome < 0) return error("packing: %s", pw85_strerror(-outcome));
+
+  /* Ctrl-C from here on: the files are being written; finish them. */
+  struct micro m = {.count = st.count, .centres = st.centres, .forms = st.forms,
+                    .axes = st.axes, .quaternions = st.quaternions, .seed = cf.seed,
+                    .attempts = st.attempts, .target = cf.target};
+  memcpy(m.box, cf.box, sizeof m.box);
+  m.packing_fraction = (double)st.count * unit_volume / box_volume;
+  snprintf(m.method, sizeof m.method, "%s", method);
+  snprintf(m.pw85_version, sizeof m.pw85_version, "%s", pw85_version());
+  if (o.voxels) {
+    size_t const n = o.voxels, dims[3] = {n, n, n};
+    image = malloc(n * n * n * sizeof *image);
+    if (image == NULL)
+      return error("--voxels %zu: cannot allocate the image (%.1f GiB)", n,
+                   4.0 * (double)n * (double)n * (double)n / 1073741824.0);
+    int status = pw85_image_voxels(st.count, st.centres, st.forms, NULL, cf.box, 1, dims,
+                                   image, o.threads);
+    if (status == PW85_SUCCESS)
+      status = pw85_image_fraction(dims, image, NULL, &m.image_fraction);
+    if (status != PW85_SUCCESS) return error("--voxels: %s", pw85_strerror(status));
+    m.image = image;
+    memcpy(m.dims, dims, sizeof dims);
+  }
+  if (io_write_hdf5(o.out, &m, err, sizeof err) != 0) return error("--out: %s", err);
+  if (xdmf && io_write_xdmf(xdmf, o.out, &m, err, sizeof err) != 0)
+    return error("--voxels: %s", err);
+  if (o.xyz && io_write_xyz(o.xyz, &m, err, sizeof err) != 0) return error("--xyz: %s", err);
+
+  char const *how = outcome == PACK_DONE ? "done"
+                    : interrupted        ? "interrupted"
+                    : outcome == PACK_SATURATED
+                        ? "saturated (10^6 candidates in a row rejected)"
+                        : "time limit reached";
+  fprintf(stderr, "%s: %s: %zu of %zu ellipsoids, packing fraction %.6f, written to %s\n",
+          prog, how, st.count, cf.target, m.packing_fraction, o.out);
+  if (interrupted) return 130;
+  return outcome == PACK_DONE ? 0 : 3;
+}
+
+int main(int argc, char **argv) {
+  int const status = pack_main(argc, argv);
+  free(image), free(xdmf);
+  free(st.centres), free(st.forms), free(st.axes), free(st.quaternions);
+  return status;
+}
