@@ -122,6 +122,18 @@ PAIRS = {
         ["0x1.65904c278cb5cp+529", "-0x1.ec8c1164f2800p+527",
          "0x1.406bb29c404c6p+529", "0x1.408c02a5875cep+530",
          "0x1.deea291456860p+527", "0x1.778d8efa9f35ep+529"]),
+    # fuzz-contact-raw: a maximum so flat (ω′ = 6e-14 at λ* = 0.357) that
+    # ω rounds to 0 over 2e-3 of λ: the polish refused the step it needed
+    # (above polish_max_step), and λ stayed 1.6e-3 off.
+    "flat-trust": (
+        ["-0x1.02f0100000000p-399", "0x1.cffff4f180000p+385",
+         "0x1.f00007ffc2058p+124"],
+        ["0x1.7474747474747p+118", "0x1.7474747474747p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474767p+117",
+         "0x0.07ffd77ecf8f0p-1022", "0x1.7474747474747p+117"],
+        ["0x1.74747474747bfp+117", "0x1.7474747474757p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474757p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474747p+117"]),
     # fuzz-geometry (a 1502 s campaign, seed 12): forms spanning the range
     # of a double, λ* far below 2^-60 or near 1 with a flat maximum. The
     # compensated finish stopped on a secant through a far point (μ² 3.5

@@ -87,8 +87,8 @@ PW85_INLINE double omega_dd(double lambda, Problem const &p, double s[dim],
 // Newton steps on ω in double-double (omega_dd(); its root is λ*, the
 // maximiser of f: docs/theory.rst), with the plain ω′ (eq. (5.7)) as
 // slope: the slope only sets the rate, the compensated ω sets the root.
-// Returns the polished λ (the last one reached where an evaluation fails,
-// or where a step would be larger than polish_max_step).
+// Returns the polished λ (the last one reached where an evaluation fails);
+// a step larger than polish_max_step (relative) is clamped to it.
 template <bool Fast>
 PW85_INLINE double polish(Problem const &p, double lambda0) noexcept {
   double lambda = lambda0;
@@ -103,7 +103,13 @@ PW85_INLINE double polish(Problem const &p, double lambda0) noexcept {
     double const omega = omega_dd(lambda, p, s, s_lo);
     double const step = omega / plain_step.domega;
     double const size = std::min(lambda, 1.0 - lambda);
-    if (!(std::fabs(step) <= polish_max_step * size)) break;
+    if (std::isnan(step)) break;
+    if (!(std::fabs(step) <= polish_max_step * size)) {
+      // A trust region: the step clamped, towards the root that the sign
+      // of the compensated ω gives.
+      lambda -= std::copysign(polish_max_step * size, step);
+      continue;
+    }
     lambda -= step;
     if (std::fabs(step) <= polish_accept * size) break;
   }

@@ -117,8 +117,10 @@ constexpr double p_carry_cond = 1e7;
 // slope, from the search's λ (within about 1e-11·min(λ, 1 − λ) of λ*):
 // after a step of relative size h ≤ polish_accept, λ is off by O(h²) plus
 // the rounding of the compensated ω, below an ulp; the polish then stops.
-// A step larger than polish_max_step (relative) is not taken (not
-// expected): λ stays where it is. At most polish_iter evaluations.
+// A step larger than polish_max_step (relative) is clamped to it (a trust
+// region: at maxima so flat that the plain ω is 0 over 2e-3 of λ, ω′ =
+// 6e-14 at λ* = 0.357 on a fuzzing input, the search's λ may be that far
+// off). At most polish_iter evaluations.
 constexpr double polish_accept = 1e-9;
 // The finish's λ is off by about δω/ω′, relative to the nearer end δω/h
 // with h = min(λ, 1 − λ)·ω′ (small at a flat maximum: f″·λ²/μ² small),
@@ -135,7 +137,7 @@ constexpr double flat_slope = 1e-2;
 constexpr double flat_cond_slope2 =
     (0.01 * 0x1p-52 * 1e10) * (0.01 * 0x1p-52 * 1e10);  // against h²/κ̄
 constexpr double polish_max_step = 1e-3;
-constexpr int polish_iter = 6;
+constexpr int polish_iter = 8;
 // s = Q(λ)⁻¹·r for the outputs: from the plain factors with one
 // refinement by a compensated residual while κ̄(Q(λ)) ≤ geometry_refine_cond
 // (relative error (κ̄·ε)² ≤ 5e-20), from a double-double factorisation

@@ -153,8 +153,9 @@ static void test_lambda_near_zero(void) {
  * fuzz-contact-structured; flat-secant, ω′ = 5e-6 at λ* = 0.0075, and
  * omega-zero, λ* = 8.5e-66 with μ² 0.4996 ulp above a double,
  * fuzz-contact-raw): within the hard set's 6e-10·min(λ*, 1 − λ*) (they
- * were 1.8e-8, 1.1e-8, 3e-8 and 9e-3 off), μ² correctly rounded (it was
- * an ulp off on omega-zero). */
+ * were 1.8e-8, 1.1e-8, 3e-8 and 9e-3 off; and flat-trust, ω′ = 6e-14 at
+ * λ* = 0.357, 1.6e-3 off), μ² correctly rounded (it was an ulp off on
+ * omega-zero). */
 static void test_flat_lambda(gconstpointer name) {
   Pair const *p = pair(name);
   double out[2];
@@ -216,6 +217,8 @@ int main(int argc, char **argv) {
   g_test_add_data_func("/pw85/regressions/flat-secant", "flat-secant",
                        test_flat_lambda);
   g_test_add_data_func("/pw85/regressions/omega-zero", "omega-zero",
+                       test_flat_lambda);
+  g_test_add_data_func("/pw85/regressions/flat-trust", "flat-trust",
                        test_flat_lambda);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
   for (int i = 0; i < n_pairs; i++)
