@@ -35,6 +35,12 @@ PairPW85::PairPW85(LAMMPS *lmp) : Pair(lmp)
   forms = rbound = nullptr;
   nmax_forms = 0;
   avec = nullptr;
+  // compute pair pw85: c_ID[1], the calls of pw85_contact_derivatives()
+  // since the pair style was defined (all ranks); c_ID[2], the pairs with
+  // μ² < 1 at the last evaluation of forces.
+  nextra = 2;
+  pvector = new double[nextra];
+  pvector[0] = pvector[1] = 0.0;
 }
 
 PairPW85::~PairPW85()
@@ -49,6 +55,7 @@ PairPW85::~PairPW85()
   }
   memory->destroy(forms);
   memory->destroy(rbound);
+  delete[] pvector;
 }
 
 void PairPW85::allocate()
@@ -220,6 +227,7 @@ void PairPW85::compute(int eflag, int vflag)
   const int newton_pair = force->newton_pair;
   const double *special_lj = force->special_lj;
 
+  double calls = 0.0, overlapping = 0.0;
   const int inum = list->inum;
   const int *ilist = list->ilist;
   const int *numneigh = list->numneigh;
@@ -247,8 +255,11 @@ void PairPW85::compute(int eflag, int vflag)
       if (status != PW85_SUCCESS)
         error->one(FLERR, "Pair style pw85: atoms {} {}: pw85_contact_derivatives: {}",
                    atom->tag[i], atom->tag[j], pw85_strerror(status));
+      calls += 1.0;
       const double mu2 = geom[PW85_GEOM_MU2];
       if (!(mu2 < 1.0)) continue;
+      // With newton off, a pair across ranks is computed on both.
+      overlapping += (newton_pair || j < nlocal) ? 1.0 : 0.5;
       double du;
       const double u = factor * pw85_lammps::pw85_lammps_energy(mu2, epsilon[itype][jtype], &du);
       du *= factor;
@@ -277,6 +288,8 @@ void PairPW85::compute(int eflag, int vflag)
     }
   }
   if (vflag_fdotr) virial_fdotr_compute();
+  pvector[0] += calls;
+  pvector[1] = overlapping;
 }
 
 void *PairPW85::extract(const char *str, int &dim)

@@ -50,7 +50,8 @@ def header(data, newton="on", extra=""):
             "read_data %s\n" % (newton, data) + lr.LOAD +
             "pair_style pw85\npair_coeff 1 1 %r\n%s"
             "compute ov all pw85/overlap\n"
-            "thermo_style custom step pe press pxx pyy pzz pxy pxz pyz c_ov\n"
+            "compute pc all pair pw85\n"
+            "thermo_style custom step pe press pxx pyy pzz pxy pxz pyz c_ov c_pc[2]\n"
             "thermo_modify norm no format float %%.17g\n" % (EPS, extra))
 
 
@@ -82,10 +83,13 @@ def run0(work, ranks, newton="on", tag="d"):
               "run 0\n"
               'print "PE $(pe:%.17g)"\n'
               'print "PRESS $(press:%.17g)"\n'
-              'print "OV $(c_ov)"\n')
+              'print "OV $(c_ov)"\n'
+              'print "MU $(c_pc[2])"\n')
     _, out, _ = lr.run(script, ranks, cwd=work)
+    d = lr.read_dump(dump)
+    d["mu_below_1"] = lr.printed(out, "MU")[0]
     return (lr.printed(out, "PE")[0], lr.printed(out, "PRESS")[0],
-            lr.printed(out, "OV")[0], lr.read_dump(dump))
+            lr.printed(out, "OV")[0], d)
 
 
 def test_ranks():
@@ -103,6 +107,8 @@ def test_ranks():
         check(abs(p - p0) <= 1e-12 * abs(p0), "%s: pressure %.17g vs %.17g"
               % (what, p, p0))
         check(ov == ov0, "%s: %d overlapping pairs" % (what, ov))
+        check(d["mu_below_1"] == d0["mu_below_1"], "%s: %d pairs with mu < 1 (compute pair)"
+              % (what, d["mu_below_1"]))
         # Forces and torques: sums of a few terms each, their scale the
         # largest (measured: up to 6.3e-16; bound 1e-12).
         check(rel(d["f"], d0["f"]) <= 1e-12, "%s: forces, rel. diff %.2g"
@@ -209,7 +215,7 @@ def library_energy(d, eps):
     np.add.at(tq, i[over], t1)
     np.add.at(tq, j[over], t2)
     overlapping = pypw85.overlap(r12, q[i], q[j]) < 0
-    return energy, f, tq, int(np.count_nonzero(overlapping))
+    return energy, f, tq, int(np.count_nonzero(overlapping)), int(np.count_nonzero(over))
 
 
 def index_overlaps(d):
@@ -229,7 +235,9 @@ def test_library():
     work, _ = prepared(5, 150, 0.45)
     for ranks in (1, 2):
         pe, _, ov, d = run0(work, ranks)
-        energy, f, tq, count = library_energy(d, EPS)
+        energy, f, tq, count, below = library_energy(d, EPS)
+        check(d["mu_below_1"] == below, "%d rank(s): compute pair pw85: %d pairs with "
+              "mu < 1, library %d" % (ranks, d["mu_below_1"], below))
         # Sums of the same terms in another order: rounding (measured: 7e-16
         # for the energy, 1.3e-15 for forces and torques; bounds 1e-13).
         check(abs(pe - energy) <= 1e-13 * energy,
