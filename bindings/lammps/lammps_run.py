@@ -121,5 +121,35 @@ def printed(output, key):
             if l.startswith(key + " ") and len(l.split()) == 2]
 
 
+def relax_lines(semi, dump, inflate=1.02, chunk=1000, max_chunks=30):
+    """Input lines that relax overlaps (after pair style pw85, compute ov
+    pw85/overlap and the thermo settings): damped rigid-body dynamics (fix
+    nve/asphere + fix langevin at zero temperature on translations and
+    rotations) on ellipsoids of type 1 inflated by `inflate`, run by
+    chunks until no inflated pair overlaps (printing "OV count" after each
+    chunk); then the true semi-axes `semi`, which then overlap nowhere (an
+    inflated pair that does not overlap leaves a gap between the true
+    ones), and a dump of read_dump() format. minimize cannot do it: it
+    moves centres, never orientations (docs/lammps.rst). Prints "FINAL
+    count" at the end."""
+    return ("set type 1 shape %r %r %r\n" % tuple(2 * inflate * np.asarray(semi)) +
+            "fix 1 all nve/asphere\n"
+            "fix 2 all langevin 0.0 0.0 0.5 8080 angmom 3.0\n"
+            "timestep 0.005\n"
+            "thermo 0\n"
+            "variable n loop %d\n"
+            "label again\n"
+            "run %d\n"
+            'print "OV $(c_ov)"\n'
+            'if "$(c_ov) == 0" then "jump SELF done"\n'
+            "next n\n"
+            "jump SELF again\n"
+            "label done\n"
+            "set type 1 shape %r %r %r\n" % (max_chunks, chunk, *tuple(2 * np.asarray(semi))) +
+            "unfix 1\nunfix 2\n" + dump_lines(dump) +
+            "run 0\n"
+            'print "FINAL $(c_ov)"\n')
+
+
 def ellipsoid_volume(semi):
     return 4.0 / 3.0 * math.pi * semi[0] * semi[1] * semi[2]

@@ -320,32 +320,8 @@ def test_relax():
           % (overlapping, tangent))
 
 
-def relax_script(data, dump, inflate=1.02, chunk=1000, max_chunks=30):
-    """Damped rigid-body dynamics (fix nve/asphere + fix langevin at zero
-    temperature on translations and rotations) on ellipsoids inflated by
-    `inflate`, run by chunks until no inflated pair overlaps; then the
-    true shapes, which then overlap nowhere (an inflated pair that does
-    not overlap leaves a gap between the true ones). minimize cannot do
-    it: it moves centres, never orientations (docs/lammps.rst)."""
-    a = SEMI
-    return (header(data) +
-            "set type 1 shape %r %r %r\n" % tuple(2 * inflate * a) +
-            "fix 1 all nve/asphere\n"
-            "fix 2 all langevin 0.0 0.0 0.5 8080 angmom 3.0\n"
-            "timestep 0.005\n"
-            "thermo 0\n"
-            "variable n loop %d\n"
-            "label again\n"
-            "run %d\n"
-            'print "OV $(c_ov)"\n'
-            'if "$(c_ov) == 0" then "jump SELF done"\n'
-            "next n\n"
-            "jump SELF again\n"
-            "label done\n"
-            "set type 1 shape %r %r %r\n" % (max_chunks, chunk, *tuple(2 * a)) +
-            "unfix 1\nunfix 2\n" + lr.dump_lines(dump) +
-            "run 0\n"
-            'print "FINAL $(c_ov)"\n')
+def relax_script(data, dump):
+    return header(data) + lr.relax_lines(SEMI, dump)
 
 
 def test_errors():
