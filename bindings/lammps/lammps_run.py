@@ -101,7 +101,7 @@ def run(script, ranks=1, cwd=None, extra_env=None, check=True, timeout=600):
     if os.geteuid() == 0:
         cmd.append("--allow-run-as-root")
     # Every rank sees the variables that name the shared object.
-    for name in ("PW85_LAMMPS_PLUGIN", "LD_LIBRARY_PATH", "PYTHONPATH"):
+    for name in ("PW85_LAMMPS_PLUGIN", "LD_LIBRARY_PATH", "LD_PRELOAD", "PYTHONPATH"):
         if name in env:
             cmd += ["-x", name]
     cmd += [lmp, "-var", "pw85", env.get("PW85_LAMMPS_PY", "pw85_lammps.py"),

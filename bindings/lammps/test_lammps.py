@@ -342,6 +342,10 @@ def test_errors():
         ("a missing shared object", header(data) + "run 0\n",
          {"PW85_LAMMPS_PLUGIN": os.path.join(work, "nowhere.so")},
          "no shared object"),
+        ("a LAMMPS of another version", header(data) + "run 0\n",
+         {"LD_PRELOAD": os.environ["PW85_FAKE_LAMMPS_VERSION"]},
+         "built with the headers of LAMMPS 20210929 (29 Sep 2021), not loaded into "
+         "LAMMPS 20230802"),
         ("a negative epsilon",
          header(data).replace("pair_coeff 1 1 %r" % EPS, "pair_coeff 1 1 -1") + "run 0\n",
          {}, "epsilon must be finite and >= 0"),
