@@ -51,7 +51,7 @@ def write_data(path, box, centres, semi_axes, quats, types=None, density=1.0):
 
 #: Dump columns of read_dump(), after id.
 DUMP_COLUMNS = ("x y z fx fy fz tqx tqy tqz c_pw85q[1] c_pw85q[2] c_pw85q[3] "
-                "c_pw85q[4] c_pw85s[1] c_pw85s[2] c_pw85s[3] c_pw85pe")
+                "c_pw85q[4] c_pw85s[1] c_pw85s[2] c_pw85s[3] c_pw85pe type")
 
 #: Input lines that define the dump of read_dump() (every 'every' steps).
 def dump_lines(path, every=1):
@@ -68,7 +68,7 @@ def read_dump(path):
     """The last frame of a dump of dump_lines(): a dict of arrays sorted
     by id: x (n, 3), f, tq, quat (n, 4, (w, x, y, z)), semi (n, 3: the
     semi-axes, half the dumped diameters), pe (per-atom pair energy), and
-    box ((3, 2): lo, hi)."""
+    type, and box ((3, 2): lo, hi)."""
     with open(path) as f:
         lines = f.read().splitlines()
     start = max(i for i, l in enumerate(lines) if l.startswith("ITEM: TIMESTEP"))
@@ -79,7 +79,8 @@ def read_dump(path):
     rows = rows[np.argsort(rows[:, 0])]
     return {"id": rows[:, 0].astype(int), "x": rows[:, 1:4], "f": rows[:, 4:7],
             "tq": rows[:, 7:10], "quat": rows[:, 10:14],
-            "semi": 0.5 * rows[:, 14:17], "pe": rows[:, 17], "box": box}
+            "semi": 0.5 * rows[:, 14:17], "pe": rows[:, 17],
+            "type": rows[:, 18].astype(int), "box": box}
 
 
 def run(script, ranks=1, cwd=None, extra_env=None, check=True, timeout=600):

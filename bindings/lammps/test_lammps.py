@@ -67,18 +67,18 @@ def rel(a, b):
     return float(np.max(np.abs(a - b)) / max(np.max(np.abs(b)), 1e-300))
 
 
-def prepared(seed, n, phi):
+def prepared(seed, n, phi, types=None):
     box, c, a, p = configuration(seed, n, phi)
     work = lr.tempfile.mkdtemp(prefix="pw85-lammps-")
-    lr.write_data(os.path.join(work, "data.lmp"), box, c, a, p)
+    lr.write_data(os.path.join(work, "data.lmp"), box, c, a, p, types=types)
     return work, box
 
 
-def run0(work, ranks, newton="on", tag="d"):
+def run0(work, ranks, newton="on", tag="d", extra=""):
     """run 0: the energy, the thermo line's pressures and count, and the
     dump."""
     dump = os.path.join(work, "%s-%d-%s.dump" % (tag, ranks, newton))
-    script = (header(os.path.join(work, "data.lmp"), newton) +
+    script = (header(os.path.join(work, "data.lmp"), newton, extra) +
               lr.dump_lines(dump) +
               "run 0\n"
               'print "PE $(pe:%.17g)"\n'
@@ -203,6 +203,10 @@ def library_energy(d, eps):
     mu2 = geom[:, pypw85.GEOM_MU2]
     over = mu2 < 1
     mu = np.sqrt(mu2[over])
+    # eps: one value, or a table by types (eps[ti][tj], types from 1).
+    eps = np.asarray(eps, float)
+    if eps.ndim == 2:
+        eps = eps[d["type"][i[over]], d["type"][j[over]]]
     energy = float(np.sum(eps * (1 - mu) ** 2))
     du = -eps * (1 - mu) / mu  # dU/dμ²
     g = der[over, pypw85.DERIV_R12:pypw85.DERIV_R12 + 3] * du[:, None]
@@ -252,6 +256,21 @@ def test_library():
         check(ov == count == overlapping,
               "%d rank(s): compute pw85/overlap %d, pypw85.overlap %d, "
               "Index.overlapping_pairs %d" % (ranks, ov, count, overlapping))
+    # Two types, ε given for 1 1 and 2 2, mixed for 1 2 (geometric:
+    # √(ε11·ε22)), on 2 ranks.
+    types = np.random.default_rng(9).integers(1, 3, size=150)
+    work, _ = prepared(5, 150, 0.45, types=types)
+    eps = np.zeros((3, 3))
+    eps[1, 1], eps[2, 2] = EPS, 0.4
+    eps[1, 2] = eps[2, 1] = math.sqrt(EPS * 0.4)
+    pe, _, _, d = run0(work, 2, extra="pair_coeff 2 2 0.4\n")
+    check(np.array_equal(d["type"], types), "two types")
+    energy, f, tq, _, _ = library_energy(d, eps)
+    check(abs(pe - energy) <= 1e-13 * energy,
+          "two types, mixed epsilon: energy %.17g vs library %.17g" % (pe, energy))
+    check(rel(d["f"], f) <= 1e-13 and rel(d["tq"], tq) <= 1e-13,
+          "two types: forces and torques vs library, rel. diff %.2g, %.2g"
+          % (rel(d["f"], f), rel(d["tq"], tq)))
 
 
 def test_nve():
