@@ -16,11 +16,17 @@ import tempfile
 
 import numpy as np
 
-#: The two lines that load pair style pw85 into an lmp without PLUGIN
-#: (docs/lammps.rst, "Loading"); ${pw85} is set by `-var pw85 PATH`.
-LOAD = """python pw85_lammps input 1 SELF format p file ${pw85}
-python pw85_lammps invoke
-"""
+#: PW85_LAMMPS_LOAD=plugin: the lmp run is built with PLUGIN, and loads
+#: the shared object by `plugin load`; otherwise (Debian's lmp) through
+#: the PYTHON package and pw85_lammps.py.
+PLUGIN = os.environ.get("PW85_LAMMPS_LOAD") == "plugin"
+
+#: The lines that load pair style pw85 (docs/lammps.rst, "Loading");
+#: ${pw85} is set by `-var pw85 PATH` (run()): the loader pw85_lammps.py,
+#: or with PLUGIN the shared object.
+LOAD = ("plugin load ${pw85}\n" if PLUGIN else
+        "python pw85_lammps input 1 SELF format p file ${pw85}\n"
+        "python pw85_lammps invoke\n")
 
 
 def random_quaternions(rng, n):
@@ -105,7 +111,9 @@ def run(script, ranks=1, cwd=None, extra_env=None, check=True, timeout=600):
     for name in ("PW85_LAMMPS_PLUGIN", "LD_LIBRARY_PATH", "LD_PRELOAD", "PYTHONPATH"):
         if name in env:
             cmd += ["-x", name]
-    cmd += [lmp, "-var", "pw85", env.get("PW85_LAMMPS_PY", "pw85_lammps.py"),
+    loader = (env.get("PW85_LAMMPS_PLUGIN", "pw85_lammps.so") if PLUGIN else
+              env.get("PW85_LAMMPS_PY", "pw85_lammps.py"))
+    cmd += [lmp, "-var", "pw85", loader,
             "-in", "in.lmp", "-log", "log.lammps", "-nocite"]
     proc = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, text=True, timeout=timeout)
