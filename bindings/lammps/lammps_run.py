@@ -123,11 +123,13 @@ def run(script, ranks=1, cwd=None, extra_env=None, check=True, timeout=600):
     return proc.returncode, proc.stdout, cwd
 
 
-def printed(output, key):
-    """The values of the lines `key value` that the script printed (with
-    print "key $(...)"), as floats."""
-    return [float(l.split()[1]) for l in output.splitlines()
-            if l.startswith(key + " ") and len(l.split()) == 2]
+def printed(output, key, count=1):
+    """The values of the lines `key value...` (count values) that the
+    script printed (with print "key $(...)"), as floats, or tuples of
+    floats when count > 1."""
+    rows = [[float(v) for v in l.split()[1:]] for l in output.splitlines()
+            if l.startswith(key + " ") and len(l.split()) == count + 1]
+    return [r[0] for r in rows] if count == 1 else [tuple(r) for r in rows]
 
 
 def relax_lines(semi, dump, inflate=1.02, chunk=1000, max_chunks=30):
@@ -135,13 +137,17 @@ def relax_lines(semi, dump, inflate=1.02, chunk=1000, max_chunks=30):
     pw85/overlap and the thermo settings): damped rigid-body dynamics (fix
     nve/asphere + fix langevin at zero temperature on translations and
     rotations) on ellipsoids of type 1 inflated by `inflate`, run by
-    chunks until no inflated pair overlaps (printing "OV count" after each
-    chunk); then the true semi-axes `semi`, which then overlap nowhere (an
+    chunks; after each chunk, the true semi-axes `semi` are put back for a
+    `run 0` that counts their overlapping pairs, and the relaxation stops
+    when there are none (prints "OV inflated true" after each chunk). An
     inflated pair that does not overlap leaves a gap between the true
-    ones), and a dump of read_dump() format. minimize cannot do it: it
-    moves centres, never orientations (docs/lammps.rst). Prints "FINAL
-    count" at the end."""
-    return ("set type 1 shape %r %r %r\n" % tuple(2 * inflate * np.asarray(semi)) +
+    ones: the true ellipsoids separate before the damped approach to zero
+    energy of the inflated ones ends. Then a dump of read_dump() format,
+    and "FINAL count" (true shapes). minimize cannot do it: it moves
+    centres, never orientations (docs/lammps.rst)."""
+    inflated = "set type 1 shape %r %r %r\n" % tuple(2 * inflate * np.asarray(semi))
+    true = "set type 1 shape %r %r %r\n" % tuple(2 * np.asarray(semi))
+    return (inflated +
             "fix 1 all nve/asphere\n"
             "fix 2 all langevin 0.0 0.0 0.5 8080 angmom 3.0\n"
             "timestep 0.005\n"
@@ -149,12 +155,15 @@ def relax_lines(semi, dump, inflate=1.02, chunk=1000, max_chunks=30):
             "variable n loop %d\n"
             "label again\n"
             "run %d\n"
-            'print "OV $(c_ov)"\n'
-            'if "$(c_ov) == 0" then "jump SELF done"\n'
+            "variable inflated equal $(c_ov)\n" % (max_chunks, chunk) +
+            true +
+            "run 0\n"
+            'print "OV ${inflated} $(c_ov)"\n'
+            'if "$(c_ov) == 0" then "jump SELF done"\n' +
+            inflated +
             "next n\n"
             "jump SELF again\n"
             "label done\n"
-            "set type 1 shape %r %r %r\n" % (max_chunks, chunk, *tuple(2 * np.asarray(semi))) +
             "unfix 1\nunfix 2\n" + dump_lines(dump) +
             "run 0\n"
             'print "FINAL $(c_ov)"\n')
