@@ -5,8 +5,9 @@ and turned at random, seeded) to no overlapping pair, on 1 and 2 MPI
 ranks, by the protocol of the tests (lammps_run.relax_lines).
 
 Reports: the wall time of each relaxation, its steps, the time per step
-and the speed-up of 2 ranks over 1 per step (the two runs take different
-numbers of steps: the Langevin noise depends on the decomposition); and
+and the speed-up of 2 ranks over 1 per step (at zero temperature fix
+langevin adds no noise: both runs follow the same trajectory to rounding,
+and take the same number of steps unless rounding tips a chunk); and
 the time per call of pw85_contact_derivatives() inside the pair style
 (LAMMPS's Pair time / the calls counted by compute pair pw85) against the
 yardstick of the same run: a plain loop of pw85_contact_derivatives()
