@@ -84,10 +84,13 @@ def run0(work, ranks, newton="on", tag="d", extra=""):
               'print "PE $(pe:%.17g)"\n'
               'print "PRESS $(press:%.17g)"\n'
               'print "OV $(c_ov)"\n'
-              'print "MU $(c_pc[2])"\n')
+              'print "MU $(c_pc[2])"\n'
+              'print "PT $(pxx:%.17g) $(pyy:%.17g) $(pzz:%.17g) $(pxy:%.17g) '
+              '$(pxz:%.17g) $(pyz:%.17g)"\n')
     _, out, _ = lr.run(script, ranks, cwd=work)
     d = lr.read_dump(dump)
     d["mu_below_1"] = lr.printed(out, "MU")[0]
+    d["ptensor"] = np.array(lr.printed(out, "PT", 6)[0])
     return (lr.printed(out, "PE")[0], lr.printed(out, "PRESS")[0],
             lr.printed(out, "OV")[0], d)
 
@@ -219,6 +222,11 @@ def library_energy(d, eps):
     np.add.at(tq, i[over], t1)
     np.add.at(tq, j[over], t2)
     overlapping = pypw85.overlap(r12, q[i], q[j]) < 0
+    # The pressure tensor at rest (no velocities): W/V, W = Σ (x_i − x_j) ⊗
+    # (force on i) over the pairs; order xx yy zz xy xz yz.
+    w = np.einsum("pa,pb->ab", -r12[over], g)
+    d["library_ptensor"] = np.array([w[0, 0], w[1, 1], w[2, 2], w[0, 1], w[0, 2],
+                                     w[1, 2]]) / np.prod(box)
     return energy, f, tq, int(np.count_nonzero(overlapping)), int(np.count_nonzero(over))
 
 
@@ -250,6 +258,11 @@ def test_library():
               % (ranks, rel(d["f"], f)))
         check(rel(d["tq"], tq) <= 1e-13, "%d rank(s): torques vs library, rel. diff %.2g"
               % (ranks, rel(d["tq"], tq)))
+        # The virial: sums of products of the same terms (measured 1e-15 of
+        # the largest component; bound 1e-13).
+        check(rel(d["ptensor"], d["library_ptensor"]) <= 1e-13,
+              "%d rank(s): pressure tensor vs library, rel. diff %.2g"
+              % (ranks, rel(d["ptensor"], d["library_ptensor"])))
         check(np.allclose(np.sum(2 * d["pe"]), 2 * energy, rtol=1e-13),
               "%d rank(s): per-atom energies sum to the energy" % ranks)
         overlapping, _ = index_overlaps(d)
