@@ -19,6 +19,7 @@ figures are reported, not judged (the machine may be shared).
 
 import os
 import re
+import shutil
 import sys
 import tempfile
 import time
@@ -129,6 +130,7 @@ def main():
             print("pair style pw85 on 1 rank: %.3f us per call = %.2fx the plain loop "
                   "(the neighbor loop, forms, energy and tallies on top of pw85)"
                   % (1e6 * one, one / per))
+    shutil.rmtree(work)
 
 
 if __name__ == "__main__":
