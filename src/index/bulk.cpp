@@ -200,7 +200,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   std::size_t const m = failed.at;  // items [0, m) are valid alone
 
   // Pass 2: a repeated id among items [0, m), in the free slots of the id
-  // table (restored by clear_marks() unless the insertion succeeds).
+  // table (restored by fail() unless the insertion succeeds).
   std::size_t top = 0;
   for (std::size_t i = 0; i < m; ++i) top = std::max(top, ids[i]);
   if (m > 0 && top >= slots_.size() && !slots_.resize(top + 1))
@@ -228,15 +228,16 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   for (std::size_t k = mchunks; k < chunks; ++k) status[k] = ChunkStatus{n, Status::success};
   ChunkStatus const repeated = first_failure(status, n);
   if (repeated.at < failed.at) failed = repeated;
-  auto clear_marks = [&]() {
+  // Every failure from here on clears the marks, then returns its status.
+  auto fail = [&](Status why) {
     for_each_chunk(nt, mchunks, [&](std::size_t k) {
       auto const [i0, i1] = items_of(k, m);
       for (std::size_t i = i0; i < i1; ++i) slots_[ids[i]] = Slot{};
     });
+    return why;
   };
   if (failed.at < n) {
-    clear_marks();
-    return failed.status;
+    return fail(failed.status);
   }
 
   // The levels, new ones in the order of their first item; the number of
@@ -244,8 +245,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   Buffer<std::int32_t> level_at;  // by exponent − min_exponent
   Buffer<std::size_t> items_in;   // by level
   if (!level_at.resize_uninitialised(max_exponent - min_exponent + 1)) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   for (std::size_t e = 0; e < level_at.size(); ++e) level_at[e] = -1;
   for (std::size_t l = 0; l < levels_.size(); ++l)
@@ -254,8 +254,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     std::int32_t &l = level_at[place[i] - min_exponent];
     if (l < 0) {
       if (!add_level(place[i])) {
-        clear_marks();
-        return Status::no_memory;
+        return fail(Status::no_memory);
       }
       l = std::int32_t(levels_.size() - 1);
     }
@@ -263,8 +262,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   }
   std::size_t const nlevels = levels_.size();
   if (!items_in.resize(nlevels)) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   for (std::size_t i = 0; i < n; ++i) ++items_in[std::size_t(place[i])];
 
@@ -282,8 +280,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     ok = maps[l].init(keys);
   }
   if (!ok) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   for_each_chunk(nt, chunks, [&](std::size_t k) {
     auto const [i0, i1] = items_of(k, n);
@@ -323,8 +320,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   std::size_t const row = (nlevels + 7) & ~std::size_t(7);
   Buffer<std::size_t> rank;
   if (!rank.resize(chunks * row)) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   auto is_new_founder = [&](std::size_t i) {
     Touched const &t = maps[std::size_t(place[i])][slot_of[i]];
@@ -337,8 +333,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   });
   Buffer<std::size_t> new_cells;  // per level
   if (!new_cells.resize(nlevels)) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   for (std::size_t l = 0; l < nlevels; ++l) {
     std::size_t at = levels_[l].cells.size();
@@ -348,10 +343,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
       at += count;
     }
     new_cells[l] = at - levels_[l].cells.size();
-    if (at >= no_id) {  // as reserve_for()
-      clear_marks();
-      return Status::no_memory;
-    }
+    if (at >= no_id) return fail(Status::no_memory);  // as reserve_for()
   }
   Buffer<Buffer<std::uint64_t>> new_keys;  // per level, by new position
   ok = new_keys.resize(nlevels);
@@ -359,8 +351,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     ok = new_keys[l].resize_uninitialised(new_cells[l]) &&
          levels_[l].cells.reserve(levels_[l].cells.size() + new_cells[l]);
   if (!ok) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   for_each_chunk(nt, chunks, [&](std::size_t k) {
     auto const [i0, i1] = items_of(k, n);
@@ -381,8 +372,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     for (std::size_t p = 0; p < new_cells[l]; ++p) {
       std::uint64_t const key = new_keys[l][p];
       if (lv.dense.empty() && !lv.map.reserve_one()) {
-        clear_marks();
-        return Status::no_memory;
+        return fail(Status::no_memory);
       }
       std::uint32_t const at = static_cast<std::uint32_t>(lv.cells.size());
       lv.cells.push_back_reserved(Cell{});
@@ -434,8 +424,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
       if (status[k].status != Status::success) ok = false;
   }
   if (!ok) {
-    clear_marks();
-    return Status::no_memory;
+    return fail(Status::no_memory);
   }
   // Nothing fails from here on.
 
