@@ -134,6 +134,18 @@ PAIRS = {
         ["0x1.74747474747bfp+117", "0x1.7474747474757p+117",
          "0x1.7474747474747p+117", "0x1.7474747474757p+117",
          "0x1.7474747474747p+117", "0x1.7474747474747p+117"]),
+    # fuzz-geometry (a campaign after this session's fixes): ω′ = 2.5e-12 at
+    # λ* = 0.087, cond(Qᵢ) near 1e15: the polish, with the plain ω′ (a few
+    # percent off) as slope, converged linearly and stopped 2.4e-11 off.
+    "polish-secant": (
+        ["0x1.8cb477fff0000p-264", "-0x1.d4747470000afp-116",
+         "0x1.169fe7effffb8p+492"],
+        ["0x1.7474747474752p+118", "0x1.7474747474747p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474747p+117",
+         "0x0.0f000000000f8p-1022", "0x1.7474747474747p+117"],
+        ["0x1.7474747474547p+118", "0x1.7474747474747p+117",
+         "0x1.7474747472947p+117", "0x1.7474747474747p+117",
+         "0x1.7474747474747p+117", "0x1.7474747474d47p+117"]),
     # fuzz-geometry (a 1502 s campaign, seed 12): forms spanning the range
     # of a double, λ* far below 2^-60 or near 1 with a flat maximum. The
     # compensated finish stopped on a secant through a far point (μ² 3.5

@@ -138,6 +138,24 @@ static void test_flat_maximum(void) {
   g_assert_cmpfloat(rel3(d + PW85_DERIV_R12, p->ref + 8), <=, 1e-13);
 }
 
+/* λ of the geometry at a maximum so flat (ω′ = 2.5e-12 at λ* = 0.087,
+ * cond(Qᵢ) near 1e15; fuzz-geometry) that the polish with the plain ω′
+ * converged linearly and stopped 2.4e-11 off: within 1e-13 relative now
+ * (pw85.h: 1.5·u·cond(Q(λ))·min(λ, 1 − λ) + u, with cond(Q(λ*)) about 75
+ * here by the binary128 oracle: tighter still), and of the contact function
+ * within the hard set's 6e-10; μ² correctly rounded. */
+static void test_polish_secant(void) {
+  Pair const *p = pair("polish-secant");
+  double out[2], g[PW85_GEOM_SIZE];
+  g_assert_cmpint(pw85_contact_function(p->in, p->in + 3, p->in + 9, out), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
+  g_assert_cmpint(pw85_contact_geometry(p->in, p->in + 3, p->in + 9, g), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] / p->ref[1] - 1), <=, 1e-13);
+}
+
 /* λ of the contact function near 0 within the hard set's accuracy
  * (pw85.h: 6e-10·min(λ*, 1 − λ*)). */
 static void test_lambda_near_zero(void) {
@@ -220,6 +238,7 @@ int main(int argc, char **argv) {
                        test_flat_lambda);
   g_test_add_data_func("/pw85/regressions/flat-trust", "flat-trust",
                        test_flat_lambda);
+  g_test_add_func("/pw85/regressions/polish-secant", test_polish_secant);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
   for (int i = 0; i < n_pairs; i++)
     if (strncmp(pairs[i].name, "finish-", 7) == 0) {
