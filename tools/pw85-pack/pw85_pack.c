@@ -51,17 +51,18 @@ static char const usage[] =
     "  --voxels M        also an M^3 voxel image in FILE (/image) and FILE's\n"
     "                    XDMF companion (ParaView), M from 1 to 4096\n"
     "  --time-limit S    stop packing after S seconds (> 0) and write what is there\n"
-    "  --resume FILE     continue the packing in FILE (written by pw85-pack --method\n"
-    "                    rsa): its box, axes, seed and method; --n may raise the count\n"
-    "  --method NAME     packing method: fire (default; pw85_pack(): relaxation of the\n"
-    "                    overlaps by FIRE, dense, jamming) or rsa (random sequential\n"
+    "  --resume FILE     continue the packing in FILE (written by pw85-pack\n"
+    "                    --method rsa): its box, axes, seed and method; --n may\n"
+    "                    raise the count\n"
+    "  --method NAME     packing method: fire (default; pw85_pack(): overlaps\n"
+    "                    relaxed by FIRE, dense, jamming) or rsa (random sequential\n"
     "                    addition: fast, saturates at lower fractions, resumable)\n"
     "  --quiet           no progress bar (there is none when stderr is not a terminal)\n"
     "  --help, --version\n"
     "\n"
-    "Exit status: 0 done; 3 stopped early (time limit, jammed, saturated), files written;\n"
-    "130 interrupted (Ctrl-C), the last certified configuration written; 2 a bad\n"
-    "argument; 1 another error. Files are written whole or not at all.\n";
+    "Exit status: 0 done; 3 stopped early (time limit, jammed, saturated), files\n"
+    "written; 130 interrupted (Ctrl-C), the last certified configuration written;\n"
+    "2 a bad argument; 1 another error. Files are written whole or not at all.\n";
 
 static char const *prog = "pw85-pack";
 
