@@ -113,7 +113,7 @@ assert sorted(os.listdir(d)) == ["pack.h5", "pack.xdmf", "pack.xyz"], os.listdir
 with h5py.File(os.path.join(d, "pack.h5"), "r") as f:
     assert f["centres"].shape == (300, 3) and f["forms"].shape == (300, 6)
     assert f["image"].shape == (16, 16, 16)
-    assert f.attrs["seed"] == 9 and f.attrs["method"] == "rsa"
+    assert f.attrs["seed"] == 9 and f.attrs["method"] == "fire"  # the default
     v = 4 / 3 * math.pi * 0.1 * 300 / f["box"][()].prod()
     assert abs(f.attrs["packing_fraction"] - v) < 1e-15, f.attrs["packing_fraction"]
 print("ok: pw85-pack from the prefix, files read back by h5py")

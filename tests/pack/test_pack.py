@@ -2,10 +2,12 @@
 """pw85-pack (issue 28, item 2) as a user runs it: the files it writes read
 back by h5py, an XML parser and ASE's extended-XYZ reader with the
 documented values; the same files for 1 and 2 threads; Ctrl-C (SIGINT)
-leaving a valid file that --resume completes into the uninterrupted
-result; the progress bar seen in a tmux capture and absent without a
-terminal; every bad argument: one line naming it, a non-zero exit status,
-nothing written.
+leaving a valid file (rsa: that --resume completes into the uninterrupted
+result; fire, the default: the larger box of its certified configuration,
+and --resume refused); the progress bar seen in a tmux capture and absent
+without a terminal; every bad argument: one line naming it, a non-zero
+exit status, nothing written. Both methods: fire (pw85_pack(), the
+default) and rsa.
 
 Usage: test_pack.py PW85-PACK VERSION  (run by meson, /usr/bin/python3)
 Exit status 77 (a skip) when h5py or ASE is missing.
@@ -41,12 +43,17 @@ def run(args, cwd, **kw):
                           text=True, timeout=300, **kw)
 
 
-def rotation(p):
-    w, x, y, z = p
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+def exact_form(p, a):
+    """q = R·diag(a²)·Rᵀ (upper triangle, row by row), R the rotation of the
+    quaternion p/|p|, in rationals."""
+    w, x, y, z = (Fraction(v) for v in p)
+    s = w * w + x * x + y * y + z * z
+    R = [[1 - 2 * (y * y + z * z) / s, 2 * (x * y - w * z) / s, 2 * (x * z + w * y) / s],
+         [2 * (x * y + w * z) / s, 1 - 2 * (x * x + z * z) / s, 2 * (y * z - w * x) / s],
+         [2 * (x * z - w * y) / s, 2 * (y * z + w * x) / s, 1 - 2 * (x * x + y * y) / s]]
+    d = [Fraction(v) ** 2 for v in a]
+    return [sum(R[i][m] * d[m] * R[j][m] for m in range(3))
+            for i, j in ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))]
 
 
 def exact_inside(point, c, q):
@@ -70,11 +77,17 @@ class Pack(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.dir, ignore_errors=True)
 
-    def test_files(self):
-        n, phi, m = 400, 0.2, 24
+    def test_files_fire(self):
+        self.check_files([], "fire", 200, 0.5)
+
+    def test_files_rsa(self):
+        self.check_files(["--method", "rsa"], "rsa", 400, 0.2)
+
+    def check_files(self, method, method_name, n, phi):
+        m = 24
         r = run(["--n", str(n), "--axes", "1,0.5,0.2", "--fraction", str(phi),
                  "--seed", "7", "--out", "pack.h5", "--xyz", "pack.xyz",
-                 "--voxels", str(m)], self.dir)
+                 "--voxels", str(m)] + method, self.dir)
         self.assertEqual(r.returncode, 0, r.stderr)
         # no progress bar when stderr is not a terminal: one final line
         self.assertNotIn("\r", r.stderr)
@@ -100,22 +113,23 @@ class Pack(unittest.TestCase):
             attrs = dict(f.attrs)
             self.assertEqual(f.attrs["seed"].dtype, np.uint64)
         self.assertEqual(attrs["seed"], 7)
-        self.assertEqual(attrs["method"], "rsa")
+        self.assertEqual(attrs["method"], method_name)
         self.assertEqual(attrs["pw85_version"], VERSION)
         # Σ 4π/3·a0·a1·a2 / V, from the file's own axes and box
-        expected = sum(4 / 3 * math.pi * x * y * z for x, y, z in a) / box.prod()
+        expected = math.fsum(4 / 3 * math.pi * x * y * z for x, y, z in a) / box.prod()
         self.assertAlmostEqual(attrs["packing_fraction"], expected, delta=1e-15)
         self.assertAlmostEqual(attrs["packing_fraction"], phi, delta=1e-12)
         np.testing.assert_array_equal(a, np.tile([1.0, 0.5, 0.2], (n, 1)))
         self.assertTrue(((c >= 0) & (c < side)).all())
-        # unit quaternions (w, x, y, z); the forms are R·diag(a²)·Rᵀ (the
-        # library's constructor: errors of a few ulps of the largest a²)
+        # unit quaternions (w, x, y, z); the forms are R·diag(a²)·Rᵀ, R of
+        # the quaternion normalised, in rationals: the library's constructor
+        # within one ulp of the largest a² (1; measured: 0.25 ulp, fire, 200
+        # ellipsoids; a float64 reference in NumPy is itself 6 ulps off)
         np.testing.assert_allclose(np.linalg.norm(p, axis=1), 1, atol=1e-15)
         for k in range(n):
-            R = rotation(p[k])
-            Q = R @ np.diag(a[k] ** 2) @ R.T
-            np.testing.assert_allclose(q[k], Q[np.triu_indices(3)], rtol=0,
-                                       atol=1e-15)
+            Q = exact_form(p[k], a[k])
+            worst = max(abs(Fraction(q[k][i]) - Q[i]) for i in range(6))
+            self.assertLessEqual(worst, Fraction(1, 2**52), k)
         # the image: phase fraction, and voxels against an exact decision
         self.assertEqual(attrs["image_fraction"], float(np.mean(img >= 0)))
         rng = np.random.default_rng(28)
@@ -160,11 +174,17 @@ class Pack(unittest.TestCase):
         np.testing.assert_array_equal(atoms.arrays["orientation"],
                                       p[:, [1, 2, 3, 0]])
 
-    def test_threads(self):
+    def test_threads_fire(self):
+        self.check_threads(["--n", "200", "--fraction", "0.5"])
+
+    def test_threads_rsa(self):
+        self.check_threads(["--n", "3000", "--fraction", "0.2", "--method", "rsa"])
+
+    def check_threads(self, args):
         outs = []
         for t in ("1", "2"):
-            r = run(["--n", "3000", "--axes", "1,0.5,0.2", "--fraction", "0.2",
-                     "--threads", t, "--out", "t%s.h5" % t], self.dir)
+            r = run(args + ["--axes", "1,0.5,0.2",
+                            "--threads", t, "--out", "t%s.h5" % t], self.dir)
             self.assertEqual(r.returncode, 0, r.stderr)
             with h5py.File(os.path.join(self.dir, "t%s.h5" % t), "r") as f:
                 outs.append((f["centres"][()], f["forms"][()],
@@ -173,9 +193,48 @@ class Pack(unittest.TestCase):
         np.testing.assert_array_equal(outs[0][1], outs[1][1])
         self.assertEqual(outs[0][2], outs[1][2])
 
-    def test_interrupt_and_resume(self):
+    def check_short_of_target(self, n, phi):
+        """A fire file short of its target: the box of the configuration
+        (larger than the one of the target), the true packing fraction,
+        below the target; returns it."""
+        side = (n * VOLUME / phi) ** (1 / 3)
+        with h5py.File(os.path.join(self.dir, "short.h5"), "r") as f:
+            box, a = f["box"][()], f["axes"][()]
+            self.assertEqual(f["centres"].shape, (n, 3))
+            self.assertEqual(f["forms"].shape, (n, 6))
+            self.assertEqual(f.attrs["method"], "fire")
+            self.assertEqual(f.attrs["target_count"], n)
+            got = f.attrs["packing_fraction"]
+            self.assertTrue((f["centres"][()] < box).all())
+        self.assertTrue((box > side).all(), (box, side))
+        expected = math.fsum(4 / 3 * math.pi * x * y * z for x, y, z in a) / box.prod()
+        self.assertAlmostEqual(got, expected, delta=1e-15)
+        self.assertLess(got, phi)
+        return got
+
+    def test_interrupt_fire(self):
+        # 200 at 0.8 is beyond jamming (16 s to find it, measured): cut at 1 s
+        proc = subprocess.Popen([TOOL, "--n", "200", "--axes", "1,0.5,0.2",
+                                 "--fraction", "0.8", "--out", "short.h5"],
+                                cwd=self.dir, stderr=subprocess.PIPE, text=True)
+        time.sleep(1)
+        proc.send_signal(signal.SIGINT)
+        err = proc.communicate(timeout=120)[1]
+        self.assertEqual(proc.returncode, 130, err)
+        self.assertIn("interrupted", err)
+        self.assertGreater(self.check_short_of_target(200, 0.8), 0.3)
+        self.assertEqual(os.listdir(self.dir), ["short.h5"])
+        # the packer cannot start from a configuration
+        for extra in ([], ["--method", "fire"]):
+            r = run(["--resume", "short.h5", "--out", "y.h5"] + extra, self.dir)
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+            self.assertIn("--resume: only for --method rsa", r.stderr)
+        self.assertEqual(os.listdir(self.dir), ["short.h5"])
+
+    def test_interrupt_and_resume_rsa(self):
         args = ["--n", "12000", "--axes", "1,0.5,0.2", "--fraction", "0.25",
-                "--seed", "3"]
+                "--seed", "3", "--method", "rsa"]
         full = run(args + ["--out", "full.h5"], self.dir)
         self.assertEqual(full.returncode, 0, full.stderr)
         proc = subprocess.Popen([TOOL] + args + ["--out", "cut.h5"],
@@ -212,9 +271,16 @@ class Pack(unittest.TestCase):
         self.assertEqual(r.stdout, "pw85-pack (pw85) %s\n" % VERSION)
         self.assertEqual(os.listdir(self.dir), [])
 
-    def test_time_limit(self):
+    def test_time_limit_fire(self):
+        r = run(["--n", "200", "--axes", "1,0.5,0.2", "--fraction", "0.8",
+                 "--time-limit", "0.5", "--out", "short.h5"], self.dir)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertIn("time limit reached", r.stderr)
+        self.check_short_of_target(200, 0.8)
+
+    def test_time_limit_rsa(self):
         r = run(["--n", "200000", "--axes", "1,0.5,0.2", "--fraction", "0.25",
-                 "--time-limit", "0.3", "--out", "t.h5"], self.dir)
+                 "--time-limit", "0.3", "--out", "t.h5", "--method", "rsa"], self.dir)
         self.assertEqual(r.returncode, 3, r.stderr)
         self.assertIn("time limit reached", r.stderr)
         with h5py.File(os.path.join(self.dir, "t.h5"), "r") as f:
@@ -225,13 +291,21 @@ class Pack(unittest.TestCase):
             self.assertAlmostEqual(f.attrs["packing_fraction"],
                                    count * VOLUME / side**3, delta=1e-15)
 
-    def test_progress_bar_in_tmux(self):
+    def test_progress_bar_in_tmux_fire(self):
+        # beyond jamming (0.8): it runs long enough to be seen
+        self.check_progress_bar("--n 200 --fraction 0.8", r"of 0\.8000, [0-9]+ steps/s, ")
+
+    def test_progress_bar_in_tmux_rsa(self):
+        self.check_progress_bar("--n 30000 --fraction 0.28 --method rsa",
+                                r"of 0\.2800, [0-9]+/s, ")
+
+    def check_progress_bar(self, args, tail):
         tmux = shutil.which("tmux")
         if tmux is None:
             self.skipTest("tmux not installed")
         session = "pw85-pack-%d" % os.getpid()
         env = dict(os.environ, TMUX="")
-        command = "%s --n 30000 --axes 1,0.5,0.2 --fraction 0.28 --out bar.h5; sleep 30" % TOOL
+        command = "%s %s --axes 1,0.5,0.2 --out bar.h5; sleep 30" % (TOOL, args)
         subprocess.run([tmux, "-L", session, "new-session", "-d", "-s", session,
                         "-x", "160", "-y", "8", "-c", self.dir, command],
                        check=True, env=env)
@@ -244,8 +318,7 @@ class Pack(unittest.TestCase):
                     capture_output=True, text=True, env=env).stdout
                 if "left" in screen and "fraction" in screen:
                     break
-            self.assertRegex(screen, r"\[[#.]{30}\] +[0-9.]+% fraction [0-9.]+ "
-                                     r"of 0\.2800, [0-9]+/s, ")
+            self.assertRegex(screen, r"\[[#.]{30}\] +[0-9.]+% fraction [0-9.]+ " + tail)
         finally:
             subprocess.run([tmux, "-L", session, "kill-server"], env=env)
 
@@ -265,7 +338,8 @@ class Pack(unittest.TestCase):
             ({"--voxels": "0"}, "--voxels"), ({"--voxels": "4097"}, "--voxels"),
             ({"--voxels": "4096"}, "the image needs 256.0 GiB"),
             ({"--time-limit": "0"}, "--time-limit"), ({"--time-limit": "-1"}, "--time-limit"),
-            ({"--method": "annealing"}, "--method"),
+            ({"--method": "annealing"}, "--method: unknown method 'annealing' (known: fire, rsa)"),
+            ({"--resume": "x.h5", "--method": "fire"}, "--resume: only for --method rsa"),
             ({"--out": ""}, "--out"), ({"--xyz": ""}, "--xyz"),
             ({"--bogus": "1"}, "unknown option '--bogus'"),
         ]
@@ -290,7 +364,7 @@ class Pack(unittest.TestCase):
                 self.assertEqual(os.listdir(self.dir), [])
 
     def test_bad_files(self):
-        ok = ["--n", "100", "--fraction", "0.2"]
+        ok = ["--n", "100", "--fraction", "0.2", "--method", "rsa"]
         # an output that cannot be written
         r = run(ok + ["--out", "/nonexistent-dir/x.h5"], self.dir)
         self.assertEqual(r.returncode, 1)

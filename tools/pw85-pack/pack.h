@@ -12,24 +12,35 @@
 #include <stdint.h>
 
 /* What is asked: a cubic (or orthorhombic) periodic box, identical
- * ellipsoids of semi-axes `axes`, a target count, a seed, threads. */
+ * ellipsoids of semi-axes `axes`, a target count, a seed, threads, a time
+ * limit in seconds (0: none; the command also stops a method through
+ * progress() when it is reached). */
 struct pack_config {
   size_t target;
   double axes[3];
   double box[3];
   uint64_t seed;
   int threads;
+  double time_limit;
 };
 
 /* The configuration, grown in place: count ellipsoids, each with its
  * centre (3), form (6, the q of pw85.h), semi-axes (3) and unit quaternion
- * (4: w, x, y, z); capacity ≥ target. attempts: the candidates drawn so
- * far (the counter of the method's random stream, so that a resumed
- * packing draws what the uninterrupted one would have). */
+ * (4: w, x, y, z); capacity ≥ target; box: the periodic box they are in
+ * (the config's, or a larger one where a method certifies a lower packing
+ * fraction than asked: the file holds this one). attempts: the candidates
+ * drawn so far (the counter of the method's random stream, so that a
+ * resumed packing draws what the uninterrupted one would have; 0 for a
+ * method that cannot resume). phi, steps: for a method that does not grow
+ * count (fire), the packing fraction certified so far and its steps, for
+ * the progress bar; 0 otherwise (the command computes phi from count). */
 struct pack_state {
   size_t count, capacity;
   double *centres, *forms, *axes, *quaternions;
+  double box[3];
   uint64_t attempts;
+  double phi;
+  size_t steps;
 };
 
 /* Called by a method every few milliseconds of work; nonzero: stop now
@@ -46,6 +57,11 @@ enum pack_outcome {
 typedef int (*pack_method)(struct pack_config const *config,
                            struct pack_state *state, pack_progress progress,
                            void *context);
+
+/* The certified packer of pw85_pack.h (pack_fire.c): starts from an empty
+ * state, fills it with config->target ellipsoids at once. */
+int pack_fire(struct pack_config const *config, struct pack_state *state,
+              pack_progress progress, void *context);
 
 /* Random sequential addition on the index of pw85_index.h (pack_rsa.c). */
 int pack_rsa(struct pack_config const *config, struct pack_state *state,

@@ -55,6 +55,7 @@ static int candidate(struct pack_config const *cf, uint64_t k, double c[3],
 
 int pack_rsa(struct pack_config const *cf, struct pack_state *st,
              pack_progress progress, void *context) {
+  memcpy(st->box, cf->box, sizeof st->box);
   pw85_index *index = NULL;
   int status = pw85_index_create(cf->box, &index);
   if (status != PW85_SUCCESS) return -status;
