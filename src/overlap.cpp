@@ -96,6 +96,9 @@ Decision accurate_filter(PlainPoint const &pt, Filtering const &s) noexcept {
   constexpr double eps = DBL_EPSILON;  // 2u
   constexpr double tiny = 0x1p-98;
   Problem const &p = s.p;
+  // tr(Q2⁻¹) from the factors of Q2 is within a few κ̄(Q2)·ε of its value:
+  // within a factor 2 (taken below) while κ̄(Q2)·ε ≤ 1/8.
+  if (!(s.cond2 * eps <= 0.125)) return Decision::undecided;
   double const lambda = pt.lambda;
   double const *const sv = pt.sol.s;
   double hi[sym], lo[sym], res[dim];
@@ -247,8 +250,13 @@ PW85_INLINE Status decide_overlap(double const r[dim], double const *r_lo,
       double lo[dim];
       if (r_lo != nullptr)
         for (int k = 0; k < dim; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
-      Filtering const t{p,       one,  s.cond1,
-                        s.cond2, p.a1, p.a2,
+      // (κ̄(Qᵢ) follow the forms: orient() may have exchanged them.)
+      Filtering const t{p,
+                        one,
+                        p.swapped ? s.cond2 : s.cond1,
+                        p.swapped ? s.cond1 : s.cond2,
+                        p.a1,
+                        p.a2,
                         r_lo != nullptr ? lo : nullptr};
       status = p.moderate ? decide<true>(t, &d) : decide<false>(t, &d);
       if (status != Status::success) return status;
