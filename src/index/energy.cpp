@@ -13,6 +13,7 @@
 #include "energy.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 
@@ -210,17 +211,22 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
     } else {
 #if defined(PW85_OPENMP)
       long long const mm = static_cast<long long>(m);
+      // The least failing pair by an atomic minimum (a named critical
+      // section would export a symbol from the static library), its status
+      // computed again after the loop: each pair's term is a function of
+      // the pair alone.
+      std::atomic<std::size_t> first{m};
 #pragma omp parallel for num_threads(nt) schedule(dynamic, 256)
       for (long long k = 0; k < mm; ++k) {
-        Status const s = one(std::size_t(k));
-        if (s != Status::success) {
-#pragma omp critical(pw85_energy_failure)
-          if (std::size_t(k) < failed) {
-            failed = std::size_t(k);
-            failure = s;
-          }
+        if (one(std::size_t(k)) == Status::success) continue;
+        std::size_t seen = first.load(std::memory_order_relaxed);
+        while (std::size_t(k) < seen &&
+               !first.compare_exchange_weak(seen, std::size_t(k),
+                                            std::memory_order_relaxed)) {
         }
       }
+      failed = first.load();
+      if (failed < m) failure = one(failed);
 #endif
     }
     if (failure != Status::success) return failure;
