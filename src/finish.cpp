@@ -148,7 +148,9 @@ bool finish(Problem const &p, FinishStart const &start,
     }
     // The bracket's size, log-scale where its ends differ by more than a
     // factor 4 relative to the nearer end of [0, 1].
-    double const size = hi <= 0.5 && hi > 4.0 * lo   ? std::log2(hi / lo)
+    // (+∞ while it touches an end of [0, 1].)
+    double const size = !(lo > 0.0 && hi < 1.0) ? HUGE_VAL
+                        : hi <= 0.5 && hi > 4.0 * lo ? std::log2(hi / lo)
                         : lo >= 0.5 && 1.0 - lo > 4.0 * (1.0 - hi)
                             ? std::log2((1.0 - lo) / (1.0 - hi))
                             : (hi - lo) / std::min(lo, 1.0 - hi);
