@@ -135,8 +135,11 @@ Decision accurate_filter(PlainPoint const &pt, Filtering const &s) noexcept {
       quad_form_acc(p.q2, sv).value() + tiny * trace(p.q2) * s1 * s1;
   double const mu1_sq = mu.hi * mu.hi * p1 * (1.0 + margin);
   double const cross = 2.0 * lambda * (sr + 4.0 * eps * abs_sr + e_sq);
-  double const mu2_sq =
-      (lambda * lambda * p2 + cross + 2.0 * p.tinv2 * res2) * (1.0 + margin);
+  // The margin on the sum of the terms' magnitudes: the cross term may be
+  // negative, and of the order of the others where κ(Q(λ)) nears 1/ε.
+  double const lam2_p2 = lambda * lambda * p2, rho_q2 = 2.0 * p.tinv2 * res2;
+  double const mu2_sq = lam2_p2 + cross + rho_q2 +
+                        margin * (lam2_p2 + std::fabs(cross) + rho_q2);
   if (std::max(mu1_sq, mu2_sq) < s.one * (1.0 - 5.0 * eps))
     return Decision::overlap;
   return Decision::undecided;
