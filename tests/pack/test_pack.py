@@ -303,7 +303,10 @@ class Pack(unittest.TestCase):
         tmux = shutil.which("tmux")
         if tmux is None:
             self.skipTest("tmux not installed")
-        session = "pw85-pack-%d" % os.getpid()
+        # A socket of its own per test: a server being killed by the
+        # previous test on the same socket made new-session fail ("server
+        # exited unexpectedly", once in a CI run).
+        session = "pw85-pack-%d-%s" % (os.getpid(), self.id().rsplit(".", 1)[-1])
         env = dict(os.environ, TMUX="")
         command = "%s %s --axes 1,0.5,0.2 --out bar.h5; sleep 30" % (TOOL, args)
         subprocess.run([tmux, "-L", session, "new-session", "-d", "-s", session,
