@@ -479,7 +479,10 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  * threads. Cost: one all-pairs query, one search per pair reported (of
  * the query itself for PW85_ENERGY_USER, after it for the overlap
  * energy, whose query decides most pairs by cheaper filters), then a 3×3
- * solve per pair, on `threads` threads. Accuracy: forces and
+ * solve per pair, on `threads` threads. Memory, besides the outputs:
+ * the query's pairs (40 bytes each), a copy of the stored ellipsoids
+ * (72 bytes per id below the id table's size) and two arrays of 3·n
+ * doubles. Accuracy: forces and
  * torques agree with central differences of the energy to 1.2e-9
  * relative (tests/test-energy.c).
  *
