@@ -156,6 +156,26 @@ static void test_polish_secant(void) {
   g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] / p->ref[1] - 1), <=, 1e-13);
 }
 
+/* Maxima so flat (fuzz-geometry, cond(Qᵢ) near 1e15, λ* = 0.556 and
+ * 0.204) that the search's λ was 0.6 % and 0.8 % off and the polish,
+ * eight steps of at most 1e-3 (relative), left the geometry's λ 4.6e-7
+ * and 2.7e-7 off: the polish's trust region now grows while the sign of
+ * ω stays. μ² correctly rounded; λ of the contact function within the hard
+ * set's 6e-10 and of the geometry within 1e-13 relative (pw85.h: about
+ * 2e-14 absolute here). */
+static void test_geo_flat(gconstpointer name) {
+  Pair const *p = pair(name);
+  double out[2], g[PW85_GEOM_SIZE];
+  g_assert_cmpint(pw85_contact_function(p->in, p->in + 3, p->in + 9, out), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(out[1] / p->ref[1] - 1), <=, 6e-10);
+  g_assert_cmpint(pw85_contact_geometry(p->in, p->in + 3, p->in + 9, g), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(g[PW85_GEOM_MU2], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] / p->ref[1] - 1), <=, 1e-13);
+}
+
 /* λ of the contact function near 0 within the hard set's accuracy
  * (pw85.h: 6e-10·min(λ*, 1 − λ*)). */
 static void test_lambda_near_zero(void) {
@@ -240,6 +260,10 @@ int main(int argc, char **argv) {
                        test_flat_lambda);
   g_test_add_func("/pw85/regressions/polish-secant", test_polish_secant);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
+  g_test_add_data_func("/pw85/regressions/geo-flat-21e2b386",
+                       "geo-flat-21e2b386", test_geo_flat);
+  g_test_add_data_func("/pw85/regressions/geo-flat-89cec286",
+                       "geo-flat-89cec286", test_geo_flat);
   for (int i = 0; i < n_pairs; i++)
     if (strncmp(pairs[i].name, "finish-", 7) == 0) {
       char path[96];
