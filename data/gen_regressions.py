@@ -168,6 +168,20 @@ PAIRS = {
         ["0x1.7474747474747p+118", "-0x1.7474747474747p+117",
          "0x1.7474747474747p+117", "0x1.74747474747c1p+117",
          "0x1.0f000ffffff11p-767", "0x1.7474747474747p+117"]),
+    # fuzz-contact-raw (an 1800 s campaign, seed 27): λ* = 1.2e-6 with
+    # cond(Q1) = 2.9e15; the plain ω′ (3.7e8) and the last secant (8e5,
+    # through ω's rounding noise) both far above the slope (about 1e3), so
+    # that the flatness test saw no flat maximum and did not polish: λ of
+    # the contact function was 1.2e-8 relative off.
+    "flat-least-slope": (
+        ["0x1.b7850ca47p-403", "-0x1.d00000001007fp-116",
+         "0x1.025474747b8b8p-903"],
+        ["0x1.7474747474747p+118", "0x1.7474747474747p+117",
+         "0x1.7474747474747p+117", "0x1.747474747476p+117",
+         "0x1.0f000000001f8p-367", "0x1.7474747474747p+117"],
+        ["0x1.7474747474747p+118", "0x1.7474747bf4747p+117",
+         "0x1.7474747474764p+117", "0x1.7578000000147p+117",
+         "0x1.7474747674747p+117", "0x1.7474747472047p+117"]),
     # fuzz-geometry (a 1502 s campaign, seed 12): forms spanning the range
     # of a double, λ* far below 2^-60 or near 1 with a flat maximum. The
     # compensated finish stopped on a secant through a far point (μ² 3.5
