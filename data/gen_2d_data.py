@@ -633,7 +633,7 @@ def make_candidate(cls, rng):
         target = 10.0 ** (-2 * rng.uniform(8, 150))
         return scaled(unit(rng), q1, q2, target), q1, q2, spec
     if name == "flat_maxima":
-        # two needles of semi-axes (A, A / 10^L), L = U(2, 6), crossed at
+        # two needles of semi-axes (A, A / 10^L), L = U(2, 7.5), crossed at
         # right angles, r12 at 45 degrees from both: then det Q(lambda) =
         # A^2 lambda (1 - lambda) + O(eta), eta = 10^-2L, and a(lambda) is
         # constant, so f = |r12|^2 / (A^2 + O(eta / lambda (1 - lambda))):
@@ -643,7 +643,7 @@ def make_candidate(cls, rng):
         # signs), which moves lambda* about the middle without tilting f
         # into a slope that would push lambda* to an end.
         v = unit(rng)
-        L = rng.uniform(2, 6)
+        L = rng.uniform(2, 7.5)
         eta = 10.0 ** (-2 * L)
 
         def jit():
@@ -1193,6 +1193,14 @@ def generate(outdir, jobs, seed, count=None, only=None, pairs_path=None,
             for k, v in s["rejected"].items():
                 rej[k] = rej.get(k, 0) + v
         log("  rejected candidates: %r" % rej)
+        for i, (name, _) in enumerate(CLASSES):
+            rc = {}
+            for r, s in out:
+                if r["CLASS"] == i:
+                    for k, v in s["rejected"].items():
+                        rc[k] = rc.get(k, 0) + v
+            if rc:
+                log("    %s: %r" % (name, rc))
         dpss = {}
         for _, s in out:
             dpss[s["dps"]] = dpss.get(s["dps"], 0) + 1
