@@ -105,13 +105,18 @@ def check_pairs(ck, path, seed, sample, rng, strict_counts=True):
                        ("ONE_MINUS_LAMBDA", res.oml),
                        ("LAMBDA_WINDOW", res.window)):
             ck.same("pair %d %s" % (i, key), d[key][i], v)
+        a, b = gen.ab_polys(r, q1, q2)
+        ck.same("pair %d F" % i, d["F"][i],
+                [float(gen.f_exact(a, b, gen.fr(x))) for x in d["F_LAMBDA"][i]])
+        if d["F_LAMBDA"][i][0] != d["LAMBDA"][i] or d["F_LAMBDA"][i][1] != 0.5:
+            ck.fail("pair %d F_LAMBDA" % i)
         for key, q in (("COND1", q1), ("COND2", q2)):
             c = gen.cond_mp(q)
             if not c < gen.COND_MAX:
                 ck.fail("pair %d: cond >= 1e16" % i)
             ck.same("pair %d %s" % (i, key), d[key][i], c)
-    print("pairs: %d recomputed by the exact route, forms positive definite, "
-          "cond < 1e16 (%.0f s)" % (n, time.time() - t0))
+    print("pairs: %d recomputed by the exact route (and F), forms positive "
+          "definite, cond < 1e16 (%.0f s)" % (n, time.time() - t0))
     t0 = time.time()
     idx = sorted(rng.choice(n, size=min(sample, n), replace=False))
     for i in idx:

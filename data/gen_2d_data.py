@@ -396,6 +396,16 @@ def contact_mp(r, q1, q2, dps):
         return float(mu2), float(mu2 - 1), float(lam), float(oml)
 
 
+def f_mp(r, q1, q2, lam, dps):
+    """f(lam) by the closed-form 2x2 solve at dps digits, rounded."""
+    import mpmath
+    with mpmath.workdps(dps):
+        x = mpmath.mpf(lam)
+        q = [(1 - x) * u + x * v for u, v in zip(mpf_list(q1), mpf_list(q2))]
+        rr = mpf_list(r)
+        return float(x * (1 - x) * dot2(rr, solve2(q, rr)))
+
+
 def mu2_mp(r, q1, q2, dps=50):
     import mpmath
     with mpmath.workdps(dps):
@@ -729,7 +739,18 @@ def pair_record(task):
             raise AssertionError(
                 "route B at %d digits differs (class %s, record %d): %r %r"
                 % (dps, CLASS_NAMES[cls], k, got, ref))
+    # f at LAMBDA, 1/2 and two random lambdas, exact, rounded once
+    frng = np.random.default_rng([seed, cls, k])
+    f_lams = [res.lam, 0.5] + [float(x) for x in frng.uniform(0, 1, 2)]
+    a, b = ab_polys(r, q1, q2)
+    f_vals = [float(f_exact(a, b, fr(x))) for x in f_lams]
+    if not f_vals[0] <= res.mu2:
+        raise AssertionError("f(LAMBDA) > MU2")
+    if f_vals != [f_mp(r, q1, q2, x, dps_b) for x in f_lams]:
+        raise AssertionError("F: mpmath differs (class %s, record %d)"
+                             % (CLASS_NAMES[cls], k))
     rec = dict(R12=r, Q1=q1, Q2=q2, MU2=res.mu2, LAMBDA=res.lam,
+               F_LAMBDA=f_lams, F=f_vals,
                ONE_MINUS_LAMBDA=res.oml, MU2_MINUS_1=res.mu2m1,
                CLASS=cls, COND1=c1, COND2=c2,
                LAMBDA_WINDOW=res.window, CANDIDATE=attempt)
@@ -1059,6 +1080,10 @@ PAIR_DATASETS = (
      "exact at the certified root, the square root rounded in doubles)"),
     ("CANDIDATE", 0, "i4", "the attempt of the record: its inputs are drawn "
      "from default_rng([seed, class, k, CANDIDATE])"),
+    ("F_LAMBDA", 4, "f8", "lambda values: LAMBDA, 0.5 and two draws "
+     "U(0, 1) of default_rng([seed, class, k])"),
+    ("F", 4, "f8", "f(F_LAMBDA[j]) = lambda (1 - lambda) r12^T Q(lambda)^-1 "
+     "r12, exact in rational arithmetic, rounded once"),
 )
 
 GEOM_DATASETS = (
@@ -1213,6 +1238,8 @@ def generate(outdir, jobs, seed, count=None, only=None, pairs_path=None,
             "d = %d .. %d (d > %d on %d pairs)"
             % (len(pairs), len(pairs), min(dpsb), max(dpsb), DPS_B,
                sum(v for k, v in dpsb.items() if k > DPS_B)))
+        log("  F: %d values exact, identical by an mpmath solve at d digits"
+            % (4 * len(pairs)))
         log(class_summary(pairs))
         if only in (None, "pairs"):
             attrs = {
