@@ -21,7 +21,6 @@ numpy, h5py or mpmath cannot be imported.
 """
 
 import argparse
-import math
 import os
 import sys
 import time
@@ -32,8 +31,9 @@ sys.path.insert(0, HERE)
 
 try:
     import h5py
-    import mpmath  # noqa: F401
+    import mpmath
     import numpy as np
+    del mpmath  # only its presence: gen_2d_data imports it where used
 except ImportError as e:  # pragma: no cover
     print("skipped: %s" % e)
     sys.exit(77)
@@ -107,7 +107,8 @@ def check_pairs(ck, path, seed, sample, rng, strict_counts=True):
             ck.same("pair %d %s" % (i, key), d[key][i], v)
         a, b = gen.ab_polys(r, q1, q2)
         ck.same("pair %d F" % i, d["F"][i],
-                [float(gen.f_exact(a, b, gen.fr(x))) for x in d["F_LAMBDA"][i]])
+                [float(gen.f_exact(a, b, gen.fr(x)))
+                 for x in d["F_LAMBDA"][i]])
         if d["F_LAMBDA"][i][0] != d["LAMBDA"][i] or d["F_LAMBDA"][i][1] != 0.5:
             ck.fail("pair %d F_LAMBDA" % i)
         for key, q in (("COND1", q1), ("COND2", q2)):

@@ -64,8 +64,8 @@ import numpy as np
 
 PAIRS_FILE = "pw85_2d_pairs.h5"
 GEOM_FILE = "pw85_2d_geometry.h5"
-SEED = 2901        # record k of class i from default_rng([seed, i, k, attempt])
-CTOR_SEED = 2903   # constructor case k of kind i: default_rng([CTOR_SEED, i, k])
+SEED = 2901        # record k of class i: default_rng([seed, i, k, attempt])
+CTOR_SEED = 2903   # constructor k of kind i: default_rng([CTOR_SEED, i, k])
 DPS = 60           # digits of the route-A root (doubled until certified)
 DPS_B = 60         # digits of route B (and again at 2 DPS_B)
 COND_DPS = 80      # digits of the eigenvalues of cond1, cond2
