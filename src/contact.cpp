@@ -125,12 +125,23 @@ PW85_INLINE Status search(double const r[dim], double const q1[sym],
   status = p.moderate ? solve<true>(p, res, scaled_lo)
                       : solve<false>(p, res, scaled_lo);
   if (status != Status::success) return status;
+  // Far beyond the domain (forms singular in double, cond(Qᵢ) ≳ 1e300) the
+  // search's f may be NaN: the forms cannot be worked with in double.
+  if (std::isnan(res[0])) return Status::out_of_range;
+  // 8.–9. (λ of the input's orientation: the caller's).
+  c->mu2 = floored_mu2(p, res[0]);
+  c->lambda = res[1];
+  return Status::success;
+}
+
+}  // namespace
+
+double floored_mu2(Problem const &p, double mu2) noexcept {
   // 8. Floor: beyond the documented domain (cond(Qᵢ) far above 1/ε) the
   // computed f can be meaningless; μ² never falls below the rigorous sphere
   // bound (sphere_lower_bound_x256()) ≤ |r|²/(tr Q1 + tr Q2), which is
   // computed only when μ² is below the latter. Both scaled by 2^8, so that
   // neither overflows.
-  double mu2 = res[0];
   int shift = p.shift;
   constexpr double s = 0x1p-8;
   double const tr_s = s * p.q1[0] + s * p.q1[3] + s * p.q1[5] + s * p.q2[0] +
@@ -142,13 +153,9 @@ PW85_INLINE Status search(double const r[dim], double const q1[sym],
       shift -= 8;
     }
   }
-  // 9. Scaling back (λ of the input's orientation: the caller's).
-  c->mu2 = times_pow2(mu2, shift);
-  c->lambda = res[1];
-  return Status::success;
+  // 9. Scaling back.
+  return times_pow2(mu2, shift);
 }
-
-}  // namespace
 
 Status contact_search(double const r[dim], double const q1[sym],
                       double const q2[sym], Contact *c) noexcept {

@@ -70,6 +70,13 @@ extern template Status solve_after_newton<false>(Problem const &, NewtonResult,
                                                  double[2],
                                                  double const *) noexcept;
 
+// Steps 8 and 9: μ² of the problem (solve()'s out[0]) floored at the
+// rigorous sphere bound where it falls below it, or is NaN (beyond the
+// documented domain, where the computed f can be meaningless), then
+// scaled back to the input's: the μ² of pw85_contact_function(), also for
+// the overlap test's exact stage (overlap.cpp), so that the two agree.
+double floored_mu2(Problem const &p, double mu2) noexcept;
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_CONTACT_HPP
