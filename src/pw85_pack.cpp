@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "checks.hpp"
 #include "facade.hpp"
@@ -26,8 +27,21 @@ int call_progress(core::PackProgress const *pr, void *data) noexcept {
 
 // The arguments of pw85_pack() in the order of its documented statuses;
 // *params filled on success.
+// v scaled by a power of two so that its largest |entry| is in [1, 2)
+// (exact; v finite, not all zero): the direction of the axis and the
+// proportions of the box, whatever their scale, without overflow or
+// underflow in their norm and product.
+void scale_to_unit(double const v[3], double out[3]) noexcept {
+  double const m = std::fmax(std::fabs(v[0]),
+                             std::fmax(std::fabs(v[1]), std::fabs(v[2])));
+  int const e = m > 0.0 ? std::ilogb(m) : 0;
+  for (int k = 0; k < 3; ++k) out[k] = std::scalbn(v[k], -e);
+}
+
 int check_arguments(size_t n, double const *a, pw85_pack_options const &o,
                     core::PackParams *params) noexcept {
+  // 6·n doubles (the forms) must fit a size_t: no larger array exists.
+  if (n > SIZE_MAX / (6 * sizeof(double))) return PW85_ENOMEM;
   for (size_t k = 0; k < 3 * n; ++k)
     if (!std::isfinite(a[k])) return PW85_EDOM;
   if (!std::isfinite(o.target) || !core::all_finite<3>(o.aspect) ||
@@ -46,17 +60,20 @@ int check_arguments(size_t n, double const *a, pw85_pack_options const &o,
   }
   for (int k = 0; k < 3; ++k)
     if (!(o.aspect[k] > 0.0)) return PW85_EINVAL;
-  double const norm = std::sqrt(o.axis[0] * o.axis[0] + o.axis[1] * o.axis[1] +
-                                o.axis[2] * o.axis[2]);
-  if (!(norm > 0.0)) return PW85_EINVAL;
-  if (!std::isfinite(norm)) return PW85_EDOM;
+  if (o.axis[0] == 0.0 && o.axis[1] == 0.0 && o.axis[2] == 0.0)
+    return PW85_EINVAL;
+  double axis[3], aspect[3];
+  scale_to_unit(o.axis, axis);
+  scale_to_unit(o.aspect, aspect);
+  double const norm =
+      std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
   if (amax / amin > 0x1p40) return PW85_ERANGE;
   core::PackParams &p = *params;
   p.target = o.target;
   p.seed = o.seed;
   for (int k = 0; k < 3; ++k) {
-    p.aspect[k] = o.aspect[k];
-    p.axis[k] = o.axis[k] / norm;
+    p.aspect[k] = aspect[k];
+    p.axis[k] = axis[k] / norm;
   }
   p.aligned = o.orientation == PW85_PACK_ALIGNED;
   p.threads = o.threads;
