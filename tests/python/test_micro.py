@@ -146,6 +146,13 @@ def test_image_errors():
     assert e.value.status == pypw85.EDOM
     with pytest.raises(pypw85.Error, match="ellipsoid 0"):
         micro.voxel_image([[0, 0, 2.0**31]], q[:1], box, 4)
+    # 2²⁹·L = +∞: the reach |c − o| + √Q_kk must still be finite (an
+    # infinite one passed the check, and the library's message named
+    # nothing)
+    with pytest.raises(pypw85.Error, match="ellipsoid 0") as e:
+        micro.voxel_image([[1.7e308, 0, 0]], q[:1], [1e300] * 3, 4,
+                          origin=[-1.7e308, 0, 0])
+    assert e.value.status == pypw85.EINVAL
     with pytest.raises(ValueError, match="centres"):
         micro.voxel_image([1.0, 2.0], q[:1], box, 4)
     with pytest.raises(ValueError, match="threads"):

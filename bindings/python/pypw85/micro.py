@@ -137,9 +137,11 @@ def voxel_image(centres: ArrayLike, q: ArrayLike, sides: ArrayLike,
     oo = np.zeros(3) if o is None else o
     if n:
         diag = qa[:, [0, 3, 5]]
-        with np.errstate(invalid="ignore"):
+        with np.errstate(invalid="ignore", over="ignore"):
             reach = np.abs(c - oo) + np.sqrt(diag)
-        bad = np.nonzero(~(reach <= _REACH * L).all(axis=1))[0]
+            # (2²⁹·L may be +∞: the reach must be finite too)
+            ok = np.isfinite(reach) & (reach <= _REACH * L)
+        bad = np.nonzero(~ok.all(axis=1))[0]
         if bad.size and (diag[bad[0]] > 0).all():
             p = int(bad[0])
             raise Error(EINVAL, where,
