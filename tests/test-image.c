@@ -541,6 +541,48 @@ static void test_threads_bounded(void) {
   g_test_trap_assert_passed();
 }
 
+/* "The caller's exception flags are left as they were" (pw85_image.h):
+ * every flag, clear or raised, after calls that succeed and that fail. The
+ * checks of the arguments raised FE_OVERFLOW (2²⁹·L overflowing, in a box
+ * of side 2⁹⁹⁷) and FE_INEXACT, which only the flags of the filter were
+ * saved from. */
+static void test_all_flags_kept(void) {
+  if (!flags_raised()) {
+    g_test_skip("the floating-point flags are not raised here");
+    return;
+  }
+  double const Lp[3] = {0x1p997, 0x1p997, 0x1p997};
+  double const c2[3] = {0x3p994, 0x3p994, 0x3p994};
+  double const q2[6] = {0x1p1000, 0, 0, 0x1p1000, 0, 0x1p1000};
+  double const L[3] = {10, 10, 10};
+  size_t const m = 40;
+  double *centres = g_new(double, 3 * m), *q = g_new(double, 6 * m);
+  random_config(5, m, L, centres, q);
+  double const far[3] = {1, 1, 0x1p40};
+  size_t const n[3] = {8, 8, 8};
+  int32_t img[512];
+  int const patterns[] = {0, FE_ALL_EXCEPT, FE_INEXACT | FE_DIVBYZERO,
+                          FE_OVERFLOW | FE_UNDERFLOW};
+  for (size_t k = 0; k < G_N_ELEMENTS(patterns); k++) {
+    for (int call = 0; call < 4; call++) {
+      feclearexcept(FE_ALL_EXCEPT);
+      feraiseexcept(patterns[k]);
+      int st;
+      if (call == 0) st = pw85_image_voxels(1, c2, q2, NULL, Lp, 1, n, img, 1);
+      else if (call == 1) st = pw85_image_voxels(m, centres, q, NULL, L, 1, n, img, 1);
+      else if (call == 2) st = pw85_image_voxels(m, centres, q, NULL, L, 0, n, img, 2);
+      else st = pw85_image_voxels(1, far, q, NULL, L, 1, n, img, 1);
+      int const flags = fetestexcept(FE_ALL_EXCEPT);
+      feclearexcept(FE_ALL_EXCEPT);
+      g_assert_cmpint(st, ==, call == 3 ? PW85_EINVAL : PW85_SUCCESS);
+      if (flags != patterns[k])
+        g_test_fail_printf("call %d: flags %#x after the call, %#x before",
+                           call, (unsigned)flags, (unsigned)patterns[k]);
+    }
+  }
+  g_free(centres), g_free(q);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   g_test_add_func("/pw85/image/lattice-surfaces", test_lattice);
@@ -552,5 +594,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/image/errors", test_errors);
   g_test_add_func("/pw85/image/reach-overflow", test_reach_overflow);
   g_test_add_func("/pw85/image/threads-bounded", test_threads_bounded);
+  g_test_add_func("/pw85/image/all-flags-kept", test_all_flags_kept);
   return g_test_run();
 }

@@ -33,7 +33,8 @@
  * relative terms) an exact computation in integers. A point on a surface
  * to the last bit is inside. This assumes the default floating-point
  * environment (no flush-to-zero nor denormals-are-zero mode); the caller's
- * exception flags are left as they were.
+ * exception flags (all of them, on success and on error) are left as they
+ * were.
  *
  * Cost and memory. The work is proportional to the voxels of the
  * ellipsoids' bounding boxes (each row of voxels is decided by a few
