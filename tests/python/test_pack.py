@@ -118,6 +118,10 @@ def test_pack_errors(kwargs, kind, words):
     ({"step_limit": 2**64 + 1}, ValueError, "step_limit"),
     ({"progress_every": 2**64 + 1}, ValueError, "progress_every"),
     ({"step_limit": "ten"}, TypeError, "step_limit"),
+    # the seed was masked to 64 bits (−1 packed as 2⁶⁴ − 1) or truncated
+    ({"seed": -1}, pypw85.Error, "seed"),
+    ({"seed": 2**64}, ValueError, "seed"),
+    ({"seed": 1.5}, TypeError, "seed"),
     ({"progress_every": 2.5}, TypeError, "progress_every"),
 ])
 def test_pack_errors_named(kwargs, kind, words):

@@ -131,7 +131,7 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
     target : float
         The packing fraction to reach, in (0, 1).
     seed : int
-        The seed of the random placement. The same inputs and seed give
+        The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and seed give
         the same packing, bit for bit, for any ``threads``.
     aspect : 3 floats
         The box's sides are proportional to these (cube by default).
@@ -228,7 +228,7 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
     opts = _Options()
     _lib.pw85_pack_options_init(ctypes.byref(opts))
     opts.target = target
-    opts.seed = int(seed) & 0xFFFFFFFFFFFFFFFF
+    opts.seed = _count("seed", seed, 0, 2**64 - 1)
     opts.aspect[:] = asp
     opts.orientation = _ORIENTATIONS[orientation]
     opts.axis[:] = ax
