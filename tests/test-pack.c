@@ -67,12 +67,17 @@ static size_t brute_overlaps(Packing const *s) {
   return bad;
 }
 
-/* The packing fraction from the outputs, as pw85_pack.h defines it. */
+/* The packing fraction from the outputs, as pw85_pack.h defines it (the
+ * lengths scaled by a power of two, exactly, so that the volumes of
+ * semi-axes of any size are doubles). */
 static double phi_of(Packing const *s) {
+  int const e = ilogb(s->a[0]);
   double v = 0.0;
   for (size_t i = 0; i < s->n; i++)
-    v += s->a[3 * i] * s->a[3 * i + 1] * s->a[3 * i + 2];
-  return 4.0 / 3.0 * G_PI * v / (s->box[0] * s->box[1] * s->box[2]);
+    v += ldexp(s->a[3 * i], -e) * ldexp(s->a[3 * i + 1], -e) *
+         ldexp(s->a[3 * i + 2], -e);
+  return 4.0 / 3.0 * G_PI * v /
+         (ldexp(s->box[0], -e) * ldexp(s->box[1], -e) * ldexp(s->box[2], -e));
 }
 
 static void check_packing(Packing const *s) {
@@ -391,6 +396,45 @@ static void test_scale_invariance(void) {
   g_free(a);
 }
 
+/* The semi-axes times 2^±400: their volume is beyond the range of a
+ * double (it was PW85_ERANGE), their forms are not; the packing is that of
+ * the semi-axes at scale 1, scaled: box and centres by 2^±400, forms by
+ * 2^±800 (pw85_ellipsoid_quaternion() of the outputs, bit for bit: checked
+ * by check_packing(), with the brute force over every pair). */
+static void test_extreme_sizes(void) {
+  size_t const n = 30;
+  double *a = triaxial(n, 0.5, 0.2, 1);
+  pw85_pack_options o;
+  pw85_pack_options_init(&o);
+  o.target = 0.3;
+  o.seed = 9;
+  Packing ref = run(n, a, &o);
+  check_packing(&ref);
+  int const exps[] = {-400, 400};
+  for (size_t k = 0; k < G_N_ELEMENTS(exps); k++) {
+    int const e = exps[k];
+    double *b = g_new(double, 3 * n);
+    for (size_t i = 0; i < 3 * n; i++) b[i] = ldexp(a[i], e);
+    Packing s = run(n, b, &o);
+    if (s.status != PW85_SUCCESS) {
+      g_test_fail_printf("semi-axes times 2^%d: status %d", e, s.status);
+    } else {
+      check_packing(&s);
+      g_assert_cmpint(s.outcome, ==, ref.outcome);
+      for (int m = 0; m < 3; m++)
+        g_assert_cmpfloat(s.box[m], ==, ldexp(ref.box[m], e));
+      for (size_t i = 0; i < 3 * n; i++)
+        g_assert_cmpfloat(s.c[i], ==, ldexp(ref.c[i], e));
+      g_assert_cmpmem(s.p, 4 * n * sizeof(double), ref.p, 4 * n * sizeof(double));
+      g_assert_cmpfloat(s.phi, ==, ref.phi);
+    }
+    free_packing(&s);
+    g_free(b);
+  }
+  free_packing(&ref);
+  g_free(a);
+}
+
 /* n whose 3·n semi-axes (or 6·n forms) no array can hold: PW85_ENOMEM
  * before anything is read or written (3·n wrapped around: the checks
  * read 2 semi-axes, the packer then ran over n items). In a subprocess:
@@ -425,5 +469,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/pack/errors", test_errors);
   g_test_add_func("/pw85/pack/scale-invariance", test_scale_invariance);
   g_test_add_func("/pw85/pack/count-overflow", test_count_overflow);
+  g_test_add_func("/pw85/pack/extreme-sizes", test_extreme_sizes);
   return g_test_run();
 }
