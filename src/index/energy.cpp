@@ -183,6 +183,10 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
       (spec.kind == EnergyKind::user && spec.fn == nullptr) || threads < 1 ||
       n < ids_in_use(index))
     return Status::invalid_argument;
+  bool const want = forces != nullptr || torques != nullptr;
+  // Rows of 3·n doubles that no array can hold (3·n would wrap around).
+  if (want && n > std::size_t(-1) / (3 * sizeof(double)))
+    return Status::no_memory;
 #if !defined(PW85_OPENMP)
   threads = 1;
 #endif
@@ -208,7 +212,6 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
     uu[2 * k] = out[0];
     uu[2 * k + 1] = out[1];
   }
-  bool const want = forces != nullptr || torques != nullptr;
   Buffer<double> f, t;
   if (want && (!f.resize(3 * n) || !t.resize(3 * n))) return Status::no_memory;
   Buffer<Stored> all;
@@ -274,6 +277,13 @@ Status assembly_energy(Index const &index, EnergySpec const &spec,
       }
     }
   }
+  // A sum beyond the range of a double (finite pair terms, too many or
+  // too large) is reported, not returned as an infinity.
+  if (!std::isfinite(sum)) return Status::out_of_range;
+  for (std::size_t k = 0; want && k < 3 * n; ++k)
+    if ((forces != nullptr && !std::isfinite(f[k])) ||
+        (torques != nullptr && !std::isfinite(t[k])))
+      return Status::out_of_range;
   *energy = sum;
   if (npairs != nullptr) *npairs = pairs.size();
   if (forces != nullptr && n > 0)
