@@ -5,7 +5,7 @@
 #define PW85_SRC_ELLIPSOID_HPP
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 

@@ -93,9 +93,9 @@ PW85_INLINE bool any_infinite(double const *x, int n) noexcept {
 // without FMA (the double-double kernels use std::fma). Returns false
 // when no s can be solved for (far beyond the domain).
 PW85_FMA_CLONES
-bool outputs(Contact const &c, double out[geom::size],
+bool outputs(Contact<3> const &c, double out[geom::size],
              double der[deriv::size]) noexcept {
-  Problem const &p = c.p;
+  Problem<3> const &p = c.p;
   out[geom::mu2] = c.mu2;
   out[geom::lambda] = 0.5;
   if (!p.r_is_zero) {
@@ -191,7 +191,7 @@ bool outputs(Contact const &c, double out[geom::size],
 Status contact_geometry(double const r[dim], double const q1[sym],
                         double const q2[sym], double geometry[geom::size],
                         double d[deriv::size]) noexcept {
-  Contact c;
+  Contact<3> c;
   Status const status = contact_search(r, q1, q2, &c);
   if (status != Status::success) return status;
   double out[geom::size] = {0.0};

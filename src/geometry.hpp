@@ -6,7 +6,7 @@
 #define PW85_SRC_GEOMETRY_HPP
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
