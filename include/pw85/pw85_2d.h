@@ -1,0 +1,213 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/**
+ * @file pw85_2d.h
+ * @brief The contact function of Perram and Wertheim for two ellipses, with
+ *        the contract of its three-dimensional counterpart (pw85.h).
+ *
+ * Storage conventions, used by every function below:
+ * - a vector is a `double[2]` (PW85_2D_DIM) of Cartesian coordinates;
+ * - a symmetric matrix A is a `double[3]` (PW85_2D_SYM) holding its upper
+ *   triangle row by row: `a[0]=A00 a[1]=A01 a[2]=A11`.
+ *
+ * An ellipse of centre c is the set {m : (m − c)ᵀ Q⁻¹ (m − c) ≤ 1}, where
+ * Q is symmetric positive definite; Q = a0²·v0·v0ᵀ + a1²·v1·v1ᵀ for
+ * semi-axes aᵢ along unit vectors vᵢ. Q has the dimension of a squared
+ * length. The contact function μ², its maximiser λ and f(λ) are those of
+ * pw85.h with 2 × 2 forms: f(λ) = λ(1 − λ)·r12ᵀ·Q(λ)⁻¹·r12,
+ * Q(λ) = (1 − λ)·Q1 + λ·Q2, μ² = max f over [0, 1].
+ *
+ * One implementation: the library computes these with the same code as
+ * the functions of pw85.h, compiled for two dimensions (the same scaling,
+ * definiteness rule, search, certification, compensated finish and
+ * overlap filters), so every statement of pw85.h about them holds here
+ * word for word where it is not about sizes.
+ *
+ * Positive definite, as stored: the rule of pw85.h. A form is accepted
+ * when its entries are finite and it is positive definite exactly, as
+ * stored: Q00 > 0 and Q00·Q11 − Q01² > 0 on the exact values of the three
+ * doubles (decided in floating point where an error bound proves the
+ * answer, else exactly, in integer arithmetic), whatever its scale. A form
+ * so nearly singular that double cannot factorise it (cond(Q) ≳ 1/ε) is
+ * accepted; the functions that must factorise it answer PW85_ERANGE.
+ *
+ * Statuses: those of pw85.h (PW85_SUCCESS, PW85_EFAULT, ...), with the
+ * same meanings; outputs are written on success only, unless a function
+ * says otherwise.
+ *
+ * Thread safety: every function is reentrant and thread-safe; none keeps
+ * state between calls. None prints, aborts, exits, allocates from the heap
+ * or changes process-wide state (GSL's error handler is never installed
+ * nor reached).
+ *
+ * @since 2.5.0
+ */
+#ifndef PW85_2D_H
+#define PW85_2D_H
+
+#include "pw85.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** @name Sizes of the two-dimensional storage
+ *  @{ */
+/** The number of coordinates of a vector. @since 2.5.0 */
+#define PW85_2D_DIM 2
+/** The number of stored entries of a symmetric 2 × 2 matrix. @since 2.5.0 */
+#define PW85_2D_SYM 3
+/** @} */
+
+/**
+ * @brief −f(λ) for two ellipses, in the shape of pw85_f_neg() (and of
+ *        GSL's gsl_function: a double, then a pointer to the parameters).
+ *
+ * f(λ) = λ(1 − λ)·r12ᵀ·Q(λ)⁻¹·r12, Q(λ) = (1 − λ)·Q1 + λ·Q2, evaluated as
+ * pw85_f_neg() evaluates it: compensated (double-double) arithmetic, Q(λ)
+ * factorised in double-double where the bound tr(Q)·tr(Q⁻¹) of cond(Q(λ))
+ * exceeds 1e10. No rescaling: intermediate values must stay within the
+ * range of a double (|r12|² and the entries of Q1, Q2 between about
+ * 1e-150 and 1e150).
+ * @param[in] lambda λ, normally in [0, 1].
+ * @param[in] params PW85_2D_DIM + 2·PW85_2D_SYM = 8 doubles: r12[2] (the
+ *                   centre-to-centre vector c2 − c1), then q1[3], then
+ *                   q2[3].
+ * @return −f(λ) (a squared length over a squared length: dimensionless),
+ *         never positive for λ in [0, 1] (−0 where rounding, with
+ *         cond(Q(λ)) beyond ~1e14, would make f negative); NaN if params
+ *         is NULL, if lambda or an entry of params is not finite, if q1
+ *         or q2 is not positive definite by the rule above, or if Q(λ) is
+ *         not positive definite to the resolution of its factorisation.
+ * @since 2.5.0
+ */
+PW85_API double pw85_2d_f_neg(double lambda,
+                              double const params[PW85_2D_DIM +
+                                                  2 * PW85_2D_SYM])
+    PW85_NOEXCEPT;
+
+/**
+ * @brief The contact function μ² of two ellipses and its maximiser λ.
+ *
+ * μ² = max over λ in [0, 1] of f(λ): the square of the common factor by
+ * which both ellipses must be scaled, centres fixed, to be externally
+ * tangent (μ² < 1: they overlap; μ² > 1: they are disjoint). μ² is
+ * dimensionless and invariant under r12 → t·r12, Q → t²·Q, and under a
+ * rotation of the whole configuration; inputs are rescaled internally by
+ * powers of two, so any finite input is accepted. Documented domain:
+ * cond(Q1), cond(Q2) < 1e16 (aspect ratios to 1e8), where μ² is
+ * correctly rounded (the method of pw85_contact_function(), whose
+ * guarantees it shares; measured on the 2D reference pairs of the tests).
+ * Swapping the ellipses, (r12, q1, q2) → (−r12, q2, q1), gives the same μ²
+ * bit for bit and λ → 1 − λ (rounded), for any input. Beyond the domain
+ * the answer is still finite, ≥ (1 − 24ε)·|r12|²/(√tr Q1 + √tr Q2)² > 0,
+ * with the statuses below, but may be inaccurate.
+ * @param[in] r12 the centre-to-centre vector c2 − c1 (a length; any
+ *                finite vector; r12 = 0 gives μ² = 0, λ = ½).
+ * @param[in] q1 the quadratic form of the first ellipse (a squared
+ *               length).
+ * @param[in] q2 the quadratic form of the second ellipse.
+ * @param[out] out out[0] = μ² (≥ 0; may round to a subnormal or to 0 when
+ *                 μ² is below the range of a double), out[1] = λ in
+ *                 [0, 1].
+ * @return PW85_SUCCESS;
+ *         PW85_EFAULT if a pointer is NULL (out untouched);
+ *         PW85_EDOM if an input is NaN or infinite (out untouched);
+ *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite as stored,
+ *         by the rule above (out untouched);
+ *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity,
+ *         out[1] = λ; or if the diagonal entries of q1 and q2 together
+ *         span more than the range of a double, or q1 or q2, positive
+ *         definite, cannot be factorised in double once both are rescaled
+ *         (out untouched);
+ *         PW85_ENOMEM if GSL's minimiser would need more than the working
+ *         memory reserved on the stack (out untouched; not expected).
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_contact_function(double const r12[PW85_2D_DIM],
+                                      double const q1[PW85_2D_SYM],
+                                      double const q2[PW85_2D_SYM],
+                                      double out[2]) PW85_NOEXCEPT;
+
+/**
+ * @brief Do two ellipses overlap? A certified decision, faster than
+ *        computing μ² (the method of pw85_overlap()).
+ *
+ * Decides the sign of μ² − 1 from bounds that hold at every λ, with
+ * certified rounding margins, and falls back to the exact μ² of
+ * pw85_2d_contact_function() only near tangency (or beyond the bounds'
+ * reach), so the answer never contradicts it.
+ * @param[in] r12 the centre-to-centre vector c2 − c1.
+ * @param[in] q1 the quadratic form of the first ellipse.
+ * @param[in] q2 the quadratic form of the second ellipse.
+ * @param[out] result −1 if the ellipses overlap (μ² < 1), +1 if they are
+ *             disjoint (μ² > 1), 0 if they are tangent to the resolution
+ *             of double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON. Coincident
+ *             centres overlap. Swapping the ellipses gives the same
+ *             answer.
+ * @return the statuses of pw85_2d_contact_function(), with the same
+ *         meaning; *result is written on PW85_SUCCESS only (also when μ²
+ *         would overflow: such ellipses are disjoint, *result = +1).
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_overlap(double const r12[PW85_2D_DIM],
+                             double const q1[PW85_2D_SYM],
+                             double const q2[PW85_2D_SYM],
+                             int *result) PW85_NOEXCEPT;
+
+/**
+ * @brief The quadratic form of an ellipse from its semi-axes and an angle:
+ *        Q = R(θ)·diag(a0², a1²)·R(θ)ᵀ, R(θ) = [[cos θ, −sin θ],
+ *        [sin θ, cos θ]].
+ *
+ * a[0] lies along (cos θ, sin θ), a[1] along (−sin θ, cos θ). Accuracy:
+ * cos θ and sin θ are those of the C library, rounded to double; for that
+ * R, every entry of Q is computed in double-double arithmetic and rounded
+ * once (as pw85_ellipsoid_rotation()): with u = 2⁻⁵³,
+ * |q[k] − Q_k| ≤ u·|Q_k| + 2⁻¹⁰⁰·Σₘ |R_im·R_jm|·aₘ². Q is exactly symmetric
+ * by construction.
+ * @param[in] a the two semi-axes (lengths, each > 0).
+ * @param[in] theta the angle θ from the x axis to the axis of a[0]
+ *                  (radians, counter-clockwise; any finite value).
+ * @param[out] q the quadratic form Q (a squared length).
+ * @return PW85_SUCCESS;
+ *         PW85_EFAULT if a pointer is NULL;
+ *         PW85_EDOM if a[0], a[1] or theta is NaN or infinite;
+ *         PW85_EINVAL if a semi-axis is not > 0;
+ *         PW85_ERANGE if an aₘ² overflows or underflows.
+ *         q is written on success only.
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_ellipse(double const a[PW85_2D_DIM], double theta,
+                             double q[PW85_2D_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief The semi-axes and orientation of an ellipse: the inverse of
+ *        pw85_2d_ellipse().
+ *
+ * θ = ½·atan2(2·Q01, Q00 − Q11), exact but for the rounding of Q00 − Q11
+ * (Q scaled first by a power of two, exactly), is the direction of the
+ * larger semi-axis; each aⱼ² is then the Rayleigh quotient of its
+ * direction, computed in double-double arithmetic, which keeps the small
+ * semi-axis of a needle accurate (relative error of aⱼ of order
+ * u·(1 + u·(a0/aⱼ)²)). Semi-axes in decreasing order, a[0] ≥ a[1] > 0;
+ * θ in (−π/2, π/2], θ = 0 for a circle.
+ * @param[in] q the quadratic form Q.
+ * @param[out] a the semi-axes, in decreasing order.
+ * @param[out] theta the angle from the x axis to the axis of a[0]
+ *             (radians).
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
+ *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
+ *         positive definite by the rule above; PW85_ERANGE if a Rayleigh
+ *         quotient is not > 0 in double-double (Q singular to that
+ *         precision). a and theta are written on success only.
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_principal_axes(double const q[PW85_2D_SYM],
+                                    double a[PW85_2D_DIM],
+                                    double *theta) PW85_NOEXCEPT;
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PW85_2D_H */
