@@ -68,5 +68,8 @@ int main(void) {
   ok = ok && pw85_2d_f_neg(0.5, params2) < 0.;
   ok = ok && pw85_2d_ellipse(a2, 0., e2) == PW85_SUCCESS;
   ok = ok && pw85_2d_principal_axes(q2d, axes, &theta) == PW85_SUCCESS;
+  double g2[PW85_2D_GEOM_SIZE], d2[PW85_2D_DERIV_SIZE];
+  ok = ok && pw85_2d_contact_geometry(r2, q2d, q2d, g2) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_derivatives(r2, q2d, q2d, g2, d2) == PW85_SUCCESS;
   return ok ? 0 : 1;
 }

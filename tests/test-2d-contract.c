@@ -483,6 +483,79 @@ static void test_principal_axes(void) {
   g_rand_free(rng);
 }
 
+/* The contact geometry and the derivatives: the contract (statuses,
+ * outputs untouched), the same μ² as the contact function bit for bit,
+ * and swapping: λ → 1 − λ, n → −n exactly, x − c2 = (x − c1) − r12 to
+ * rounding, ∂μ²/∂r12 negated and the other derivatives exchanged
+ * exactly (a zero may change sign). */
+static void test_geometry(void) {
+  double g[PW85_2D_GEOM_SIZE], d[PW85_2D_DERIV_SIZE];
+  double const zero2[2] = {0., 0.};
+  for (int k = 0; k < PW85_2D_GEOM_SIZE; k++) g[k] = 42.;
+  for (int k = 0; k < PW85_2D_DERIV_SIZE; k++) d[k] = 42.;
+  double const nan_r[2] = {NAN, 1.}, bad_q[3] = {1., 2., 1.};
+  g_assert_cmpint(pw85_2d_contact_geometry(NULL, qa, qb, g), ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_contact_geometry(r0, qa, qb, NULL), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_contact_derivatives(r0, qa, qb, g, NULL), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_contact_derivatives(r0, qa, qb, NULL, d), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_contact_derivatives(nan_r, qa, qb, g, d), ==,
+                  PW85_EDOM);
+  g_assert_cmpint(pw85_2d_contact_derivatives(r0, bad_q, qb, g, d), ==,
+                  PW85_ENOTPOSDEF);
+  g_assert_cmpint(pw85_2d_contact_geometry(r0, qa, bad_q, g), ==,
+                  PW85_ENOTPOSDEF);
+  for (int k = 0; k < PW85_2D_GEOM_SIZE; k++) g_assert_true(g[k] == 42.);
+  for (int k = 0; k < PW85_2D_DERIV_SIZE; k++) g_assert_true(d[k] == 42.);
+  /* Coincident centres: μ² = 0, λ = ½, everything else 0. */
+  g_assert_cmpint(pw85_2d_contact_derivatives(zero2, qa, qb, g, d), ==,
+                  PW85_SUCCESS);
+  g_assert_true(g[PW85_2D_GEOM_MU2] == 0. && g[PW85_2D_GEOM_LAMBDA] == 0.5);
+  for (int k = PW85_2D_GEOM_POINT; k < PW85_2D_GEOM_SIZE; k++)
+    g_assert_true(g[k] == 0.);
+  for (int k = 0; k < PW85_2D_DERIV_SIZE; k++) g_assert_true(d[k] == 0.);
+  GRand *rng = g_rand_new_with_seed(2907);
+  for (int n = 0; n < pairs_per_test / 4; n++) {
+    double r[2], q1[3], q2[3], out[2], h[PW85_2D_GEOM_SIZE],
+        e[PW85_2D_DERIV_SIZE], hg[PW85_2D_GEOM_SIZE];
+    random_pair(rng, n % 2 ? 5. : 1., r, q1, q2);
+    double const mr[2] = {-r[0], -r[1]};
+    g_assert_cmpint(cf(r, q1, q2, out), ==, PW85_SUCCESS);
+    g_assert_cmpint(pw85_2d_contact_derivatives(r, q1, q2, g, d), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpint(pw85_2d_contact_geometry(r, q1, q2, hg), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpint(pw85_2d_contact_derivatives(mr, q2, q1, h, e), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpmem(g, sizeof g, hg, sizeof hg);
+    g_assert_true(g[PW85_2D_GEOM_MU2] == out[0] && h[PW85_2D_GEOM_MU2] ==
+                  out[0]);
+    g_assert_cmpfloat(fabs(h[PW85_2D_GEOM_LAMBDA] -
+                           (1. - g[PW85_2D_GEOM_LAMBDA])), <=, DBL_EPSILON);
+    /* the unit normal, n·r12 > 0 */
+    double const *nn = g + PW85_2D_GEOM_NORMAL;
+    g_assert_cmpfloat(fabs(nn[0] * nn[0] + nn[1] * nn[1] - 1.), <=,
+                      4. * DBL_EPSILON);
+    g_assert_cmpfloat(nn[0] * r[0] + nn[1] * r[1], >, 0.);
+    for (int i = 0; i < 2; i++) {
+      g_assert_true(h[PW85_2D_GEOM_NORMAL + i] == -nn[i]);
+      g_assert_true(e[PW85_2D_DERIV_R12 + i] == -d[PW85_2D_DERIV_R12 + i]);
+      /* x − c2 = (x − c1) − r12 */
+      double const x2 = g[PW85_2D_GEOM_POINT + i] - r[i];
+      g_assert_cmpfloat(fabs(h[PW85_2D_GEOM_POINT + i] - x2), <=,
+                        1e-12 * (fabs(x2) + fabs(r[i])));
+    }
+    g_assert_true(e[PW85_2D_DERIV_THETA1] == d[PW85_2D_DERIV_THETA2] &&
+                  e[PW85_2D_DERIV_THETA2] == d[PW85_2D_DERIV_THETA1]);
+    for (int k = 0; k < 3; k++)
+      g_assert_true(e[PW85_2D_DERIV_Q1 + k] == d[PW85_2D_DERIV_Q2 + k] &&
+                    e[PW85_2D_DERIV_Q2 + k] == d[PW85_2D_DERIV_Q1 + k]);
+  }
+  g_rand_free(rng);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -497,6 +570,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d/invariance/symmetries", test_symmetries);
   g_test_add_func("/pw85/2d/invariance/rotation", test_rotation);
   g_test_add_func("/pw85/2d/overlap/sign", test_overlap_sign);
+  g_test_add_func("/pw85/2d/geometry/contract", test_geometry);
   g_test_add_func("/pw85/2d/ellipse/statuses", test_ellipse_statuses);
   g_test_add_func("/pw85/2d/ellipse/principal-axes", test_principal_axes);
   return g_test_run();

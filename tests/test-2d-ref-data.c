@@ -31,7 +31,9 @@
  * /pw85/2d/ref-data/constructors: pw85_2d_ellipse() and
  * pw85_2d_principal_axes() on the 264 constructor cases of
  * data/pw85_2d_geometry.h5 (PW85_2D_GEOMETRY; group constructors/, exact
- * θ, references correctly rounded): see test_constructors(). */
+ * θ, references correctly rounded): see test_constructors().
+ * /pw85/2d/ref-data/geometry: pw85_2d_contact_derivatives() on the 400
+ * pairs of the same file (40 of each class): see test_geometry(). */
 #include <float.h>
 #include <math.h>
 #include <pw85/pw85_2d.h>
@@ -313,6 +315,121 @@ static void test_constructors(void) {
   g_free(a), g_free(theta), g_free(q), g_free(eig_a), g_free(eig_theta);
 }
 
+/* ‖x − y‖₂ over n entries, scaled so that no square overflows (the
+ * derivatives of extreme_scales reach 1e299). */
+static double dist(double const *x, double const *y, int n) {
+  double m = 0., s = 0.;
+  for (int i = 0; i < n; i++) m = fmax(m, fabs(x[i] - y[i]));
+  if (m == 0. || isinf(m)) return m;
+  for (int i = 0; i < n; i++) s += ((x[i] - y[i]) / m) * ((x[i] - y[i]) / m);
+  return m * sqrt(s);
+}
+
+/* Every output of pw85_2d_contact_derivatives() on the 400 pairs of
+ * data/pw85_2d_geometry.h5 (references at 60 digits and more, from s =
+ * Q(λ*)⁻¹·r12 at the certified λ*). μ² equal to the reference; λ within
+ * 8·u·cond(Q(λ*)) relative to min(λ*, 1 − λ*) (as test-geometry-refs in
+ * 3D: the root of the compensated ω; near 1 through 1 − λ less the
+ * half-ulp of its rounding; measured 0.98); every block (point, normal,
+ * ∂μ²/∂r12, ∂μ²/∂θᵢ, ∂μ²/∂qᵢ) within 8·u·(cond(Q(λ*)) + 1/min(λ*,
+ * 1 − λ*)) relative to its norm (the torques to their scale
+ * |∂μ²/∂r12|·|x − cᵢ| where larger: a torque may vanish). The second term:
+ * the weights λ^i(1 − λ)^j are formed from the search's λ, which is a
+ * double near 1 where the search kept λ, not 1 − λ, as its variable (as
+ * pw85.h says of λ), so that 1 − λ is known to u/(1 − λ*) relative only
+ * (measured: ∂μ²/∂q2 47·u·cond off on a pair with 1 − λ* = 3.1e-3 and
+ * cond 2.4, 1.1 in the units above). Measured worsts: 1.10 (∂μ²/∂q2)
+ * and under 0.5 for the other blocks, in those units; printed. */
+static void test_geometry(void) {
+  const char *path = g_getenv("PW85_2D_GEOMETRY");
+  if (path == NULL) {
+    g_test_skip("PW85_2D_GEOMETRY is not set");
+    return;
+  }
+  struct {
+    const char *name;
+    size_t cols;
+    double *data;
+  } col[] = {{"R12", 2, NULL},     {"Q1", 3, NULL},
+             {"Q2", 3, NULL},      {"MU2", 1, NULL},
+             {"LAMBDA", 1, NULL},  {"ONE_MINUS_LAMBDA", 1, NULL},
+             {"COND_Q", 1, NULL},  {"POINT", 2, NULL},
+             {"NORMAL", 2, NULL},  {"D_R12", 2, NULL},
+             {"D_THETA1", 1, NULL}, {"D_THETA2", 1, NULL},
+             {"D_Q1", 3, NULL},    {"D_Q2", 3, NULL}};
+  enum { R12, Q1, Q2, MU2, LAMBDA, OML, COND, POINT, NORMAL, DR12, DT1, DT2,
+         DQ1, DQ2, NCOL };
+  size_t n = 0;
+  GError *error = NULL;
+  for (int c = 0; c < NCOL; c++) {
+    size_t rows = 0;
+    ref_read_columns(path, col[c].name, col[c].cols, &rows, &col[c].data,
+                     &error);
+    g_assert_no_error(error);
+    if (c == 0) n = rows;
+    g_assert_true(rows == n && n > 0);
+  }
+  double const u = 0x1p-53;
+  double worst_lambda = 0., worst[7] = {0};
+  const char *names[7] = {"point", "normal", "d_r12", "d_theta1",
+                          "d_theta2", "d_q1", "d_q2"};
+  for (size_t k = 0; k < n; k++) {
+    double g[PW85_2D_GEOM_SIZE], d[PW85_2D_DERIV_SIZE];
+    double const *r = col[R12].data + 2 * k;
+    int const status = pw85_2d_contact_derivatives(
+        r, col[Q1].data + 3 * k, col[Q2].data + 3 * k, g, d);
+    if (status != PW85_SUCCESS) {
+      g_test_fail_printf("pair %zu: status %d", k, status);
+      continue;
+    }
+    if (!(g[PW85_2D_GEOM_MU2] == col[MU2].data[k]))
+      g_test_fail_printf("pair %zu: mu^2 %a, expected %a", k,
+                         g[PW85_2D_GEOM_MU2], col[MU2].data[k]);
+    double const star = col[LAMBDA].data[k], oml = col[OML].data[k];
+    double const cond = fmax(1., col[COND].data[k]);
+    double const l = g[PW85_2D_GEOM_LAMBDA];
+    double const e_lam =
+        star <= 0.5 ? fabs(l - star) / star
+                    : fmax(0., fabs((1. - l) - oml) - u / 2. - u * oml) / oml;
+    if (e_lam / (u * cond) > worst_lambda) worst_lambda = e_lam / (u * cond);
+    if (!(e_lam <= 8. * u * cond))
+      g_test_fail_printf("pair %zu: lambda %.17g, expected %.17g (1 - "
+                         "lambda* %a)", k, l, star, oml);
+    double const scale = u * (cond + 1. / fmin(star, oml));
+    double const *got[7] = {g + PW85_2D_GEOM_POINT, g + PW85_2D_GEOM_NORMAL,
+                            d + PW85_2D_DERIV_R12, d + PW85_2D_DERIV_THETA1,
+                            d + PW85_2D_DERIV_THETA2, d + PW85_2D_DERIV_Q1,
+                            d + PW85_2D_DERIV_Q2};
+    double const *ref[7] = {col[POINT].data + 2 * k, col[NORMAL].data + 2 * k,
+                            col[DR12].data + 2 * k,  col[DT1].data + k,
+                            col[DT2].data + k,       col[DQ1].data + 3 * k,
+                            col[DQ2].data + 3 * k};
+    int const len[7] = {2, 2, 2, 1, 1, 3, 3};
+    double const zero[2] = {0., 0.};
+    double const gr = dist(ref[2], zero, 2);
+    double const arm1 = dist(ref[0], zero, 2), arm2 = dist(ref[0], r, 2);
+    for (int b = 0; b < 7; b++) {
+      double size = dist(ref[b], zero, len[b]);
+      if (b == 3) size = fmax(size, gr * arm1);
+      if (b == 4) size = fmax(size, gr * arm2);
+      double const err = dist(got[b], ref[b], len[b]);
+      double const e = err == 0. ? 0. : err / size;
+      if (e / scale > worst[b]) worst[b] = e / scale;
+      if (!(e <= 8. * scale))
+        g_test_fail_printf("pair %zu: %s (%.17g, ...), expected (%.17g, "
+                           "...): %.3g > 8 u (cond + 1/min(l, 1 - l)) = "
+                           "%.3g", k, names[b], got[b][0], ref[b][0], e,
+                           8. * scale);
+    }
+  }
+  g_test_message("geometry: %zu pairs; worst lambda %.3g u cond", n,
+                 worst_lambda);
+  for (int b = 0; b < 7; b++)
+    g_test_message("  %s: worst %.3g u (cond + 1/min(l, 1 - l))", names[b],
+                   worst[b]);
+  for (int c = 0; c < NCOL; c++) g_free(col[c].data);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -331,5 +448,6 @@ int main(int argc, char **argv) {
     g_free(test);
   }
   g_test_add_func("/pw85/2d/ref-data/constructors", test_constructors);
+  g_test_add_func("/pw85/2d/ref-data/geometry", test_geometry);
   return g_test_run();
 }

@@ -159,6 +159,111 @@ PW85_API int pw85_2d_overlap(double const r12[PW85_2D_DIM],
                              double const q2[PW85_2D_SYM],
                              int *result) PW85_NOEXCEPT;
 
+/** @name Layout of the output of pw85_2d_contact_geometry()
+ *  Offsets into `double out[PW85_2D_GEOM_SIZE]`; fixed.
+ *  @{ */
+#define PW85_2D_GEOM_MU2 0     /**< μ², as pw85_2d_contact_function().
+                                    @since 2.5.0 */
+#define PW85_2D_GEOM_LAMBDA 1  /**< λ, the maximiser. @since 2.5.0 */
+#define PW85_2D_GEOM_POINT 2   /**< 2 doubles: x − c1, the contact point
+                                    of the scaled ellipses relative to c1.
+                                    @since 2.5.0 */
+#define PW85_2D_GEOM_NORMAL 4  /**< 2 doubles: the unit normal at x, from
+                                    ellipse 1 towards ellipse 2.
+                                    @since 2.5.0 */
+#define PW85_2D_GEOM_SIZE 6    /**< the number of doubles. @since 2.5.0 */
+/** @} */
+
+/** @name Layout of the output of pw85_2d_contact_derivatives()
+ *  Offsets into `double d[PW85_2D_DERIV_SIZE]`; fixed.
+ *  @{ */
+#define PW85_2D_DERIV_R12 0    /**< 2 doubles: ∂μ²/∂r12 (1/length).
+                                    @since 2.5.0 */
+#define PW85_2D_DERIV_THETA1 2 /**< 1 double: ∂μ²/∂θ1, θ1 the angle
+                                    (radians, counter-clockwise) turning
+                                    ellipse 1 about c1. @since 2.5.0 */
+#define PW85_2D_DERIV_THETA2 3 /**< 1 double: ∂μ²/∂θ2, the same for
+                                    ellipse 2 about c2. @since 2.5.0 */
+#define PW85_2D_DERIV_Q1 4     /**< 3 doubles: ∂μ²/∂q1[k], k = 0..2, with
+                                    respect to the three stored entries
+                                    (1/squared length). @since 2.5.0 */
+#define PW85_2D_DERIV_Q2 7     /**< 3 doubles: ∂μ²/∂q2[k]. @since 2.5.0 */
+#define PW85_2D_DERIV_SIZE 10  /**< the number of doubles. @since 2.5.0 */
+/** @} */
+
+/**
+ * @brief The contact function, the contact point and the common normal
+ *        of two ellipses (the method of pw85_contact_geometry()).
+ *
+ * One search, that of pw85_2d_contact_function() (same μ², bit for bit),
+ * then λ polished by Newton steps on ω in compensated arithmetic and
+ * s = Q(λ)⁻¹·r12 solved with compensated residuals; x − c1 =
+ * (1 − λ)·Q1·s, the point where the ellipses scaled by μ touch, and
+ * n = s/‖s‖, the outward normal of scaled ellipse 1 at x, n·r12 > 0.
+ * Accuracy, measured on the 400 pairs of data/pw85_2d_geometry.h5
+ * (references at 60 digits and more, 40 of each class of the 2D reference
+ * pairs), with u = 2⁻⁵³ and c = cond(Q(λ)) + 1/min(λ, 1 − λ): λ within
+ * 0.98·u·cond(Q(λ)) relative to min(λ, 1 − λ) (less the half-ulp of its
+ * rounding near 1); x − c1 and n within 0.46·u·c relative to their norms.
+ * (The term 1/min(λ, 1 − λ): where λ is near 1 but the search kept λ, not
+ * 1 − λ, as its variable, the weight 1 − λ is known to u/(1 − λ) only, as
+ * pw85.h says of λ.) The tests hold them to 8 times that. Swapping the
+ * ellipses gives the same μ², λ → 1 − λ and n → −n.
+ * @param[in] r12 c2 − c1; r12 = 0 gives μ² = 0, λ = ½, x − c1 = 0 and
+ *                n = 0.
+ * @param[in] q1 the quadratic form of the first ellipse.
+ * @param[in] q2 the quadratic form of the second ellipse.
+ * @param[out] out PW85_2D_GEOM_SIZE doubles, laid out as PW85_2D_GEOM_*.
+ * @return the statuses of pw85_2d_contact_function(), with the same
+ *         meaning; out untouched on error, except PW85_ERANGE when a
+ *         result overflows (μ² = +∞, or x − c1 beyond DBL_MAX): every
+ *         output is then written, some infinite. Also PW85_ERANGE, out
+ *         untouched, where Q(λ) cannot be factorised at the maximiser
+ *         (far beyond the documented domain).
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_contact_geometry(double const r12[PW85_2D_DIM],
+                                      double const q1[PW85_2D_SYM],
+                                      double const q2[PW85_2D_SYM],
+                                      double out[PW85_2D_GEOM_SIZE])
+    PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_contact_geometry() and the first derivatives of μ²: for
+ *        forces, torques and changes of shape.
+ *
+ * By the envelope theorem, with s = Q(λ)⁻¹·r12 at the maximiser:
+ * ∂μ²/∂r12 = 2λ(1 − λ)·s (with respect to c2; to c1, its opposite);
+ * ∂μ²/∂q1 = −λ(1 − λ)²·(s0², 2·s0·s1, s1²) and
+ * ∂μ²/∂q2 = −λ²(1 − λ)·(s0², 2·s0·s1, s1²), with respect to the stored
+ * entries (the off-diagonal one counts twice), so that
+ * δμ² = Σₖ (∂μ²/∂q1[k])·δq1[k]; turning ellipse i about its centre by an
+ * angle θᵢ, Qᵢ → R(θᵢ)·Qᵢ·R(θᵢ)ᵀ (R as in pw85_2d_ellipse()):
+ * ∂μ²/∂θ1 = 2λ(1 − λ)²·s × (Q1·s) and ∂μ²/∂θ2 = 2λ²(1 − λ)·s × (Q2·s),
+ * with a × b = a0·b1 − a1·b0. For a pair energy U(μ²): the force on
+ * ellipse 2 is −U′·∂μ²/∂r12, the torque on ellipse i is −U′·∂μ²/∂θᵢ.
+ * Accuracy, measured as for pw85_2d_contact_geometry(), in the same units
+ * u·c: ∂μ²/∂r12 within 0.48, ∂μ²/∂q1 and ∂μ²/∂q2 within 1.1, relative to
+ * the norm of each block; ∂μ²/∂θᵢ within 0.46 of their scale
+ * |∂μ²/∂r12|·|x − cᵢ| (a torque may vanish). Swapping the ellipses exchanges ∂μ²/∂θ1 and
+ * ∂μ²/∂θ2, ∂μ²/∂q1 and ∂μ²/∂q2, and negates ∂μ²/∂r12.
+ * @param[in] r12 c2 − c1.
+ * @param[in] q1 the quadratic form of the first ellipse.
+ * @param[in] q2 the quadratic form of the second ellipse.
+ * @param[out] geometry PW85_2D_GEOM_SIZE doubles, as
+ *             pw85_2d_contact_geometry().
+ * @param[out] d PW85_2D_DERIV_SIZE doubles, laid out as PW85_2D_DERIV_*.
+ * @return as pw85_2d_contact_geometry(); with PW85_ERANGE, both arrays
+ *         are written.
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_contact_derivatives(double const r12[PW85_2D_DIM],
+                                         double const q1[PW85_2D_SYM],
+                                         double const q2[PW85_2D_SYM],
+                                         double geometry[PW85_2D_GEOM_SIZE],
+                                         double d[PW85_2D_DERIV_SIZE])
+    PW85_NOEXCEPT;
+
 /**
  * @brief The quadratic form of an ellipse from its semi-axes and an angle:
  *        Q = R(θ)·diag(a0², a1²)·R(θ)ᵀ, R(θ) = [[cos θ, −sin θ],
