@@ -6,19 +6,15 @@
 
 #include <cmath>
 
-#include "checks.hpp"
-#include "contact.hpp"
 #include "ellipsoid.hpp"
-#include "f.hpp"
 #include "facade.hpp"
+#include "facade_pairs.hpp"
 #include "geometry.hpp"
-#include "overlap.hpp"
 #include "status.hpp"
 
 namespace {
 
 namespace core = pw85::detail;
-using core::Status;
 using pw85::facade::to_code;
 
 constexpr int D = 2;
@@ -38,16 +34,16 @@ static_assert(PW85_2D_GEOM_MU2 == Out::mu2 &&
                   PW85_2D_DERIV_SIZE == Out::deriv_size,
               "pw85_2d.h and the core disagree on the layouts of the outputs");
 
-// with_d: pw85_2d_contact_derivatives() (d must not be NULL; a NULL d is
-// reported after the inputs' checks, as pw85_contact_derivatives() does).
-int geometry_one(double const *r12, double const *q1, double const *q2,
-                 double *geometry, double *d, bool with_d) noexcept {
-  Status status = core::check_pointers_and_finite<D>(r12, q1, q2, geometry);
-  if (status == Status::success && with_d && d == nullptr)
-    status = Status::null_pointer;
-  if (status != Status::success) return to_code(status);
-  return to_code(core::contact_geometry<D>(r12, q1, q2, geometry, d));
-}
+using pw85::facade::pairs_batch;
+using pw85::facade::pairs_batch2;
+using pw85::facade::run_items;
+using pw85::facade::valid_stride;
+
+using pw85::facade::contact_function_one;
+using pw85::facade::f_neg_one;
+using pw85::facade::geometry_only;
+using pw85::facade::overlap_one;
+using pw85::facade::with_derivatives;
 
 }  // namespace
 
@@ -55,39 +51,26 @@ extern "C" {
 
 double pw85_2d_f_neg(double lambda,
                      double const params[PW85_2D_DIM + 2 * PW85_2D_SYM]) noexcept {
-  if (params == nullptr) return NAN;
-  double const *r12 = params;
-  double const *q1 = params + PW85_2D_DIM;
-  double const *q2 = q1 + PW85_2D_SYM;
-  double value = 0.0;
-  if (!core::valid_f_input<D>(lambda, r12, q1, q2) ||
-      !core::is_positive_definite<D>(q1) || !core::is_positive_definite<D>(q2) ||
-      !core::f_compensated<D>(lambda, r12, q1, q2, &value))
-    return NAN;
-  return -value;
+  return f_neg_one<D>(lambda, params);
 }
 
 int pw85_2d_contact_function(double const r12[PW85_2D_DIM],
                              double const q1[PW85_2D_SYM],
                              double const q2[PW85_2D_SYM],
                              double out[2]) noexcept {
-  Status const status = core::check_pointers_and_finite<D>(r12, q1, q2, out);
-  if (status != Status::success) return to_code(status);
-  return to_code(core::contact_function<D>(r12, q1, q2, out));
+  return contact_function_one<D>(r12, q1, q2, out);
 }
 
 int pw85_2d_overlap(double const r12[PW85_2D_DIM], double const q1[PW85_2D_SYM],
                     double const q2[PW85_2D_SYM], int *result) noexcept {
-  Status const status = core::check_pointers_and_finite<D>(r12, q1, q2, result);
-  if (status != Status::success) return to_code(status);
-  return to_code(core::overlap<D>(r12, q1, q2, result));
+  return overlap_one<D>(r12, q1, q2, result);
 }
 
 int pw85_2d_contact_geometry(double const r12[PW85_2D_DIM],
                              double const q1[PW85_2D_SYM],
                              double const q2[PW85_2D_SYM],
                              double out[PW85_2D_GEOM_SIZE]) noexcept {
-  return geometry_one(r12, q1, q2, out, nullptr, false);
+  return geometry_only<D>(r12, q1, q2, out);
 }
 
 int pw85_2d_contact_derivatives(double const r12[PW85_2D_DIM],
@@ -95,7 +78,7 @@ int pw85_2d_contact_derivatives(double const r12[PW85_2D_DIM],
                                 double const q2[PW85_2D_SYM],
                                 double geometry[PW85_2D_GEOM_SIZE],
                                 double d[PW85_2D_DERIV_SIZE]) noexcept {
-  return geometry_one(r12, q1, q2, geometry, d, true);
+  return with_derivatives<D>(r12, q1, q2, geometry, d);
 }
 
 int pw85_2d_ellipse(double const a[PW85_2D_DIM], double theta,
@@ -108,6 +91,71 @@ int pw85_2d_principal_axes(double const q[PW85_2D_SYM], double a[PW85_2D_DIM],
                            double *theta) noexcept {
   if (q == nullptr || a == nullptr || theta == nullptr) return PW85_EFAULT;
   return to_code(core::ellipse_principal_axes(q, a, theta));
+}
+
+// ---------------------------------------------------------------------------
+// Batches (pw85.h, "Batches"; the machinery of facade.hpp).
+
+int pw85_2d_contact_function_batch(size_t n, double const *r12,
+                                   size_t r12_stride, double const *q1,
+                                   size_t q1_stride, double const *q2,
+                                   size_t q2_stride, double *out, int *status,
+                                   int threads) noexcept {
+  return pairs_batch<D>(n, {r12, q1, q2, r12_stride, q1_stride, q2_stride},
+                        out, 2, status, threads, contact_function_one<D>);
+}
+
+int pw85_2d_overlap_batch(size_t n, double const *r12, size_t r12_stride,
+                          double const *q1, size_t q1_stride,
+                          double const *q2, size_t q2_stride, int *result,
+                          int *status, int threads) noexcept {
+  return pairs_batch<D>(n, {r12, q1, q2, r12_stride, q1_stride, q2_stride},
+                        result, 1, status, threads, overlap_one<D>);
+}
+
+int pw85_2d_contact_geometry_batch(size_t n, double const *r12,
+                                   size_t r12_stride, double const *q1,
+                                   size_t q1_stride, double const *q2,
+                                   size_t q2_stride, double *out, int *status,
+                                   int threads) noexcept {
+  return pairs_batch<D>(n, {r12, q1, q2, r12_stride, q1_stride, q2_stride},
+                        out, Out::size, status, threads, geometry_only<D>);
+}
+
+int pw85_2d_contact_derivatives_batch(size_t n, double const *r12,
+                                      size_t r12_stride, double const *q1,
+                                      size_t q1_stride, double const *q2,
+                                      size_t q2_stride, double *geometry,
+                                      double *d, int *status,
+                                      int threads) noexcept {
+  return pairs_batch2<D>(n, {r12, q1, q2, r12_stride, q1_stride, q2_stride},
+                         geometry, Out::size, d, Out::deriv_size, status,
+                         threads, with_derivatives<D>);
+}
+
+int pw85_2d_ellipse_batch(size_t n, double const *a, size_t a_stride,
+                          double const *theta, size_t theta_stride,
+                          double *q, int *status, int threads) noexcept {
+  return run_items(
+      n, a != nullptr && theta != nullptr && q != nullptr,
+      valid_stride(a_stride, PW85_2D_DIM) && valid_stride(theta_stride, 1),
+      status, threads, [=](std::size_t i) noexcept {
+        return to_code(core::ellipse_angle(a + i * a_stride,
+                                           theta[i * theta_stride],
+                                           q + PW85_2D_SYM * i));
+      });
+}
+
+int pw85_2d_principal_axes_batch(size_t n, double const *q, size_t q_stride,
+                                 double *a, double *theta, int *status,
+                                 int threads) noexcept {
+  return run_items(
+      n, q != nullptr && a != nullptr && theta != nullptr,
+      valid_stride(q_stride, PW85_2D_SYM), status, threads,
+      [=](std::size_t i) noexcept {
+        return to_code(core::ellipse_principal_axes(
+            q + i * q_stride, a + PW85_2D_DIM * i, theta + i));
+      });
 }
 
 }  // extern "C"

@@ -71,5 +71,17 @@ int main(void) {
   double g2[PW85_2D_GEOM_SIZE], d2[PW85_2D_DERIV_SIZE];
   ok = ok && pw85_2d_contact_geometry(r2, q2d, q2d, g2) == PW85_SUCCESS;
   ok = ok && pw85_2d_contact_derivatives(r2, q2d, q2d, g2, d2) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_function_batch(1, r2, 0, q2d, 0, q2d, 0, out,
+                                            NULL, 1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_overlap_batch(1, r2, 0, q2d, 0, q2d, 0, result, NULL,
+                                   1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_geometry_batch(1, r2, 0, q2d, 0, q2d, 0, g2,
+                                            NULL, 1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_derivatives_batch(1, r2, 0, q2d, 0, q2d, 0, g2,
+                                               d2, NULL, 1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_ellipse_batch(1, a2, 0, &theta, 0, e2, NULL, 1) ==
+                 PW85_SUCCESS;
+  ok = ok && pw85_2d_principal_axes_batch(1, q2d, 0, axes, &theta, NULL, 1) ==
+                 PW85_SUCCESS;
   return ok ? 0 : 1;
 }

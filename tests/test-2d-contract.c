@@ -556,6 +556,143 @@ static void test_geometry(void) {
   g_rand_free(rng);
 }
 
+/* The batches: every pair as the single-pair function computes it, bit
+ * for bit, on 1, 2 and 8 threads (2000 pairs: threads are used), with
+ * strides 0 (one form for every pair) and wider than the record; a
+ * failing pair's status in its entry, its outputs untouched, the first
+ * failure returned; the call's own errors (NULL, a stride inside a
+ * record, threads < 0) with every status entry set; n = 0. */
+static void test_batches(void) {
+  enum { n = 2000, stride = 5 }; /* stride > 3: records with padding */
+  GRand *rng = g_rand_new_with_seed(2908);
+  double *r = g_new(double, 2 * n), *q1 = g_new(double, stride * n),
+         *q2 = g_new(double, 3 * n);
+  for (int i = 0; i < n; i++) {
+    random_pair(rng, i % 2 ? 4. : 1., r + 2 * i, q1 + stride * i,
+                q2 + 3 * i);
+    q1[stride * i + 3] = NAN; /* padding, never read */
+    q1[stride * i + 4] = NAN;
+  }
+  r[2 * 777] = NAN;    /* pair 777 fails: PW85_EDOM */
+  q2[3 * 1234] = -1.; /* pair 1234 fails: PW85_ENOTPOSDEF */
+  double *out = g_new(double, 2 * n), *ref = g_new(double, 2 * n);
+  int *res = g_new(int, n), *ref_res = g_new(int, n);
+  double *geo = g_new(double, PW85_2D_GEOM_SIZE * n),
+         *der = g_new(double, PW85_2D_DERIV_SIZE * n),
+         *ref_geo = g_new(double, PW85_2D_GEOM_SIZE * n),
+         *ref_der = g_new(double, PW85_2D_DERIV_SIZE * n);
+  int *status = g_new(int, n), *ref_status = g_new(int, n);
+  for (int i = 0; i < n; i++) {
+    ref[2 * i] = ref[2 * i + 1] = -1.;
+    ref_res[i] = 42;
+    for (int k = 0; k < PW85_2D_GEOM_SIZE; k++)
+      ref_geo[PW85_2D_GEOM_SIZE * i + k] = -1.;
+    for (int k = 0; k < PW85_2D_DERIV_SIZE; k++)
+      ref_der[PW85_2D_DERIV_SIZE * i + k] = -1.;
+    ref_status[i] = pw85_2d_contact_function(r + 2 * i, q1 + stride * i,
+                                             q2 + 3 * i, ref + 2 * i);
+    g_assert_cmpint(pw85_2d_overlap(r + 2 * i, q1 + stride * i, q2 + 3 * i,
+                                    ref_res + i), ==, ref_status[i]);
+    g_assert_cmpint(pw85_2d_contact_derivatives(
+                        r + 2 * i, q1 + stride * i, q2 + 3 * i,
+                        ref_geo + PW85_2D_GEOM_SIZE * i,
+                        ref_der + PW85_2D_DERIV_SIZE * i), ==,
+                    ref_status[i]);
+  }
+  g_assert_cmpint(ref_status[777], ==, PW85_EDOM);
+  g_assert_cmpint(ref_status[1234], ==, PW85_ENOTPOSDEF);
+  int const threads[] = {1, 2, 8};
+  for (size_t t = 0; t < G_N_ELEMENTS(threads); t++) {
+    for (int i = 0; i < n; i++) {
+      out[2 * i] = out[2 * i + 1] = -1.;
+      res[i] = 42;
+      status[i] = 99;
+    }
+    for (int k = 0; k < PW85_2D_GEOM_SIZE * n; k++) geo[k] = -1.;
+    for (int k = 0; k < PW85_2D_DERIV_SIZE * n; k++) der[k] = -1.;
+    g_assert_cmpint(pw85_2d_contact_function_batch(n, r, 2, q1, stride, q2, 3,
+                                                   out, status, threads[t]),
+                    ==, PW85_EDOM);
+    g_assert_cmpmem(out, 2 * n * sizeof(double), ref, 2 * n * sizeof(double));
+    g_assert_cmpmem(status, n * sizeof(int), ref_status, n * sizeof(int));
+    g_assert_cmpint(pw85_2d_overlap_batch(n, r, 2, q1, stride, q2, 3, res,
+                                          NULL, threads[t]), ==, PW85_EDOM);
+    g_assert_cmpmem(res, n * sizeof(int), ref_res, n * sizeof(int));
+    g_assert_cmpint(pw85_2d_contact_derivatives_batch(
+                        n, r, 2, q1, stride, q2, 3, geo, der, status,
+                        threads[t]), ==, PW85_EDOM);
+    g_assert_cmpmem(geo, PW85_2D_GEOM_SIZE * n * sizeof(double), ref_geo,
+                    PW85_2D_GEOM_SIZE * n * sizeof(double));
+    g_assert_cmpmem(der, PW85_2D_DERIV_SIZE * n * sizeof(double), ref_der,
+                    PW85_2D_DERIV_SIZE * n * sizeof(double));
+    for (int k = 0; k < PW85_2D_GEOM_SIZE * n; k++) geo[k] = -1.;
+    g_assert_cmpint(pw85_2d_contact_geometry_batch(n, r, 2, q1, stride, q2, 3,
+                                                   geo, NULL, threads[t]),
+                    ==, PW85_EDOM);
+    g_assert_cmpmem(geo, PW85_2D_GEOM_SIZE * n * sizeof(double), ref_geo,
+                    PW85_2D_GEOM_SIZE * n * sizeof(double));
+  }
+  /* Stride 0: one form for every pair. */
+  g_assert_cmpint(pw85_2d_contact_function_batch(10, r, 2, q2, 0, q2, 3, out,
+                                                 status, 1), ==, PW85_SUCCESS);
+  for (int i = 0; i < 10; i++) {
+    double one[2];
+    g_assert_cmpint(pw85_2d_contact_function(r + 2 * i, q2, q2 + 3 * i, one),
+                    ==, PW85_SUCCESS);
+    g_assert_true(one[0] == out[2 * i] && one[1] == out[2 * i + 1]);
+  }
+  /* The call's own errors: nothing computed, every status entry set. */
+  for (int i = 0; i < n; i++) status[i] = 99;
+  g_assert_cmpint(pw85_2d_contact_function_batch(n, r, 1, q1, stride, q2, 3,
+                                                 out, status, 1), ==,
+                  PW85_EINVAL);
+  for (int i = 0; i < n; i++) g_assert_cmpint(status[i], ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_2d_overlap_batch(n, r, 2, q1, 2, q2, 3, res, status,
+                                        1), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_2d_overlap_batch(n, r, 2, q1, 3, q2, 3, res, status,
+                                        -1), ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_2d_contact_derivatives_batch(n, r, 2, q1, 3, q2, 3,
+                                                    geo, NULL, status, 1),
+                  ==, PW85_EFAULT);
+  g_assert_cmpint(status[n - 1], ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_contact_function_batch(n, NULL, 2, q1, 3, q2, 3,
+                                                 out, NULL, 1), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_contact_function_batch(0, NULL, 1, NULL, 1, NULL,
+                                                 1, NULL, NULL, -1), ==,
+                  PW85_SUCCESS);
+  /* The constructors' batches. */
+  double a[2 * 100], theta[100], q[3 * 100], axes[2 * 100], angles[100];
+  for (int i = 0; i < 100; i++) {
+    a[2 * i] = g_rand_double_range(rng, 1., 10.);
+    a[2 * i + 1] = g_rand_double_range(rng, 0.1, 1.);
+    theta[i] = g_rand_double_range(rng, -1.5, 1.5);
+  }
+  a[2 * 50 + 1] = -1.; /* item 50: PW85_EINVAL */
+  g_assert_cmpint(pw85_2d_ellipse_batch(100, a, 2, theta, 1, q, status, 2),
+                  ==, PW85_EINVAL);
+  g_assert_cmpint(pw85_2d_principal_axes_batch(50, q, 3, axes, angles,
+                                               status, 2), ==, PW85_SUCCESS);
+  for (int i = 0; i < 50; i++) {
+    double one[3], one_a[2], one_t;
+    g_assert_cmpint(pw85_2d_ellipse(a + 2 * i, theta[i], one), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpmem(one, sizeof one, q + 3 * i, sizeof one);
+    g_assert_cmpint(pw85_2d_principal_axes(one, one_a, &one_t), ==,
+                    PW85_SUCCESS);
+    g_assert_true(one_a[0] == axes[2 * i] && one_a[1] == axes[2 * i + 1] &&
+                  one_t == angles[i]);
+  }
+  g_assert_cmpint(pw85_2d_ellipse_batch(3, a, 1, theta, 1, q, NULL, 1), ==,
+                  PW85_EINVAL);
+  g_assert_cmpint(pw85_2d_principal_axes_batch(3, q, 3, axes, NULL, NULL, 1),
+                  ==, PW85_EFAULT);
+  g_free(r), g_free(q1), g_free(q2), g_free(out), g_free(ref), g_free(res),
+      g_free(ref_res), g_free(geo), g_free(der), g_free(ref_geo),
+      g_free(ref_der), g_free(status), g_free(ref_status);
+  g_rand_free(rng);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -571,6 +708,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d/invariance/rotation", test_rotation);
   g_test_add_func("/pw85/2d/overlap/sign", test_overlap_sign);
   g_test_add_func("/pw85/2d/geometry/contract", test_geometry);
+  g_test_add_func("/pw85/2d/batch/pairs", test_batches);
   g_test_add_func("/pw85/2d/ellipse/statuses", test_ellipse_statuses);
   g_test_add_func("/pw85/2d/ellipse/principal-axes", test_principal_axes);
   return g_test_run();

@@ -321,6 +321,130 @@ PW85_API int pw85_2d_principal_axes(double const q[PW85_2D_SYM],
                                     double a[PW85_2D_DIM],
                                     double *theta) PW85_NOEXCEPT;
 
+/** @name Batches
+ *  The functions above for n pairs (or n ellipses), with the conventions
+ *  of pw85.h, "Batches": strides in doubles (PW85_2D_DIM and PW85_2D_SYM
+ *  when contiguous, 0 for one record for every pair, 1 to the record's
+ *  size − 1 an error: PW85_EINVAL), contiguous outputs, `status` NULL or
+ *  n ints, every pair computed as the single-pair function computes it
+ *  (the same outputs bit for bit, for any number of threads), the status
+ *  of the first failing pair returned; PW85_EFAULT or PW85_EINVAL for the
+ *  call itself (nothing written, `status` filled with the code); n = 0:
+ *  PW85_SUCCESS. Threads as pw85_batch_threads() says.
+ *  @{ */
+
+/**
+ * @brief pw85_2d_contact_function() for n pairs.
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_2D_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipses.
+ * @param[in] q1_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipses.
+ * @param[in] q2_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[out] out 2·n doubles: `out[2·i]` = μ², `out[2·i + 1]` = λ.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return PW85_SUCCESS, or the status of the first failing pair;
+ *         PW85_EFAULT or PW85_EINVAL for the call itself.
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_contact_function_batch(
+    size_t n, double const *r12, size_t r12_stride, double const *q1,
+    size_t q1_stride, double const *q2, size_t q2_stride, double *out,
+    int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_overlap() for n pairs.
+ * @param[in] n,r12,r12_stride,q1,q1_stride,q2,q2_stride as
+ *            pw85_2d_contact_function_batch().
+ * @param[out] result n ints: −1, +1 or 0 for each pair, as
+ *             pw85_2d_overlap().
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return as pw85_2d_contact_function_batch().
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_overlap_batch(size_t n, double const *r12,
+                                   size_t r12_stride, double const *q1,
+                                   size_t q1_stride, double const *q2,
+                                   size_t q2_stride, int *result,
+                                   int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_contact_geometry() for n pairs.
+ * @param[in] n,r12,r12_stride,q1,q1_stride,q2,q2_stride as
+ *            pw85_2d_contact_function_batch().
+ * @param[out] out n·PW85_2D_GEOM_SIZE doubles: pair i at
+ *             `out + i·PW85_2D_GEOM_SIZE`, laid out as PW85_2D_GEOM_*.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return as pw85_2d_contact_function_batch().
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_contact_geometry_batch(
+    size_t n, double const *r12, size_t r12_stride, double const *q1,
+    size_t q1_stride, double const *q2, size_t q2_stride, double *out,
+    int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_contact_derivatives() for n pairs.
+ * @param[in] n,r12,r12_stride,q1,q1_stride,q2,q2_stride as
+ *            pw85_2d_contact_function_batch().
+ * @param[out] geometry n·PW85_2D_GEOM_SIZE doubles, as
+ *             pw85_2d_contact_geometry_batch().
+ * @param[out] d n·PW85_2D_DERIV_SIZE doubles: pair i at
+ *             `d + i·PW85_2D_DERIV_SIZE`, laid out as PW85_2D_DERIV_*.
+ * @param[out] status NULL, or n ints: the status of each pair.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return as pw85_2d_contact_function_batch().
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_contact_derivatives_batch(
+    size_t n, double const *r12, size_t r12_stride, double const *q1,
+    size_t q1_stride, double const *q2, size_t q2_stride, double *geometry,
+    double *d, int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_ellipse() for n ellipses.
+ * @param[in] n the number of ellipses (0 is valid).
+ * @param[in] a the semi-axes (lengths), item i at `a + i·a_stride`.
+ * @param[in] a_stride PW85_2D_DIM when contiguous, 0 for one pair of
+ *            semi-axes.
+ * @param[in] theta the angles (radians), item i at `theta[i·theta_stride]`.
+ * @param[in] theta_stride 1 when contiguous, 0 for one angle.
+ * @param[out] q n·PW85_2D_SYM doubles: item i at `q + i·PW85_2D_SYM`.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return PW85_SUCCESS, or the status of the first failing item (those of
+ *         pw85_2d_ellipse()); PW85_EFAULT or PW85_EINVAL for the call.
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_ellipse_batch(size_t n, double const *a,
+                                   size_t a_stride, double const *theta,
+                                   size_t theta_stride, double *q,
+                                   int *status, int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_principal_axes() for n ellipses.
+ * @param[in] n the number of ellipses (0 is valid).
+ * @param[in] q the forms, item i at `q + i·q_stride`.
+ * @param[in] q_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[out] a n·PW85_2D_DIM doubles: item i at `a + i·PW85_2D_DIM`.
+ * @param[out] theta n doubles: the angle of item i.
+ * @param[out] status NULL, or n ints: the status of each item.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return PW85_SUCCESS, or the status of the first failing item (those of
+ *         pw85_2d_principal_axes()); PW85_EFAULT or PW85_EINVAL for the
+ *         call.
+ * @since 2.5.0
+ */
+PW85_API int pw85_2d_principal_axes_batch(size_t n, double const *q,
+                                          size_t q_stride, double *a,
+                                          double *theta, int *status,
+                                          int threads) PW85_NOEXCEPT;
+/** @} */
+
 #ifdef __cplusplus
 }
 #endif
