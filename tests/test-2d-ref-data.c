@@ -405,7 +405,7 @@ static void test_geometry(void) {
                             col[DT2].data + k,       col[DQ1].data + 3 * k,
                             col[DQ2].data + 3 * k};
     int const len[7] = {2, 2, 2, 1, 1, 3, 3};
-    double const zero[2] = {0., 0.};
+    double const zero[3] = {0., 0., 0.};
     double const gr = dist(ref[2], zero, 2);
     double const arm1 = dist(ref[0], zero, 2), arm2 = dist(ref[0], r, 2);
     for (int b = 0; b < 7; b++) {
