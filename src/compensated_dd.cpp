@@ -10,11 +10,12 @@ namespace {
 // Q = L·D·Lᵀ in double-double (the algorithm of ldl_decomp()), for Q(λ)
 // too ill-conditioned for a double factorisation: its backward error is of
 // order κ(Q)·2⁻¹⁰⁴ relative instead of κ(Q)·ε.
-// In 2D, l20, l21 and d[2] are unused: the upper left 2×2 block.
+// L = [[1, 0, 0], [l10, 1, 0], [l20, l21, 1]] and the pivots
+// d = (d0, d1, d2); in 2D their upper left block (l20, l21 unused).
 template <int D>
 struct LdlDd {
-  dd l10, l20, l21;  // L = [[1, 0, 0], [l10, 1, 0], [l20, l21, 1]]
-  dd d[D];           // D = diag(d0, d1, d2)
+  dd l10, l20, l21;
+  dd d[D];
 };
 
 // Returns false when a pivot is not > 0.
@@ -26,11 +27,13 @@ PW85_INLINE bool ldl_decomp_dd(dd const *a, LdlDd<D> *f) noexcept {
   if constexpr (D == 3) f->l20 = dd_div(a[2], a[0]);
   f->d[1] = dd_sub(a[Layout<D>::diag[1]], dd_mul(f->l10, a[1]));
   if (!(f->d[1].hi > 0.0)) return false;
-  if constexpr (D == 2) return true;
-  dd const e = dd_sub(a[4], dd_mul(f->l10, a[2]));  // L21·d1
-  f->l21 = dd_div(e, f->d[1]);
-  f->d[D - 1] = dd_sub(dd_sub(a[5], dd_mul(f->l20, a[2])), dd_mul(f->l21, e));
-  return f->d[D - 1].hi > 0.0;
+  if constexpr (D == 3) {
+    dd const e = dd_sub(a[4], dd_mul(f->l10, a[2]));  // L21·d1
+    f->l21 = dd_div(e, f->d[1]);
+    f->d[2] = dd_sub(dd_sub(a[5], dd_mul(f->l20, a[2])), dd_mul(f->l21, e));
+    return f->d[2].hi > 0.0;
+  }
+  return true;
 }
 
 // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ (a sum of non-negative terms) and s = Q⁻¹·r as

@@ -142,13 +142,16 @@ bool exactly_positive_definite(double const *q) noexcept {
   Term const minor2[2] = {product(0, false, q[0], q[Layout<D>::diag[1]], 1.0),
                           product(0, true, q[1], q[1], 1.0)};
   if (sign_of_sum(minor2, 2) <= 0) return false;
-  if constexpr (D == 2) return true;
-  // det Q = Q00·Q11·Q22 + 2·Q01·Q12·Q02 − Q00·Q12² − Q11·Q02² − Q22·Q01².
-  Term const det[5] = {
-      product(0, false, q[0], q[3], q[5]), product(1, false, q[1], q[4], q[2]),
-      product(0, true, q[0], q[4], q[4]), product(0, true, q[3], q[2], q[2]),
-      product(0, true, q[5], q[1], q[1])};
-  return sign_of_sum(det, 5) > 0;
+  if constexpr (D == 3) {
+    // det Q = Q00·Q11·Q22 + 2·Q01·Q12·Q02 − Q00·Q12² − Q11·Q02² − Q22·Q01².
+    Term const det[5] = {
+        product(0, false, q[0], q[3], q[5]),
+        product(1, false, q[1], q[4], q[2]),
+        product(0, true, q[0], q[4], q[4]), product(0, true, q[3], q[2], q[2]),
+        product(0, true, q[5], q[1], q[1])};
+    return sign_of_sum(det, 5) > 0;
+  }
+  return true;  // in 2D, the two leading minors are all
 }
 
 template bool exactly_positive_definite<2>(double const *) noexcept;

@@ -63,6 +63,9 @@ Decision centre_filter(Filtering<D> const &s) noexcept {
 // the point x0(λ) lies in both ellipsoids scaled by max(μ1, μ2), which
 // therefore meet. Margins of eq. (5.11): f is off by a few κ̄(Q(λ))·ε
 // relative, μᵢ² (a quadratic form in s) by that times √κ̄(Qᵢ).
+// Inline: out of line, its call made the compiler keep more of Newton's
+// point in registers across it (3.7% more instructions in pw85_overlap
+// once the dimension became a template; 1.5% inlined; callgrind).
 template <int D>
 PW85_INLINE Decision bounds_filter(PlainPoint<D> const &pt, PlainBounds const &b,
                        Filtering<D> const &s) noexcept {

@@ -356,8 +356,13 @@ PW85_API int pw85_2d_contact_function_batch(
 
 /**
  * @brief pw85_2d_overlap() for n pairs.
- * @param[in] n,r12,r12_stride,q1,q1_stride,q2,q2_stride as
- *            pw85_2d_contact_function_batch().
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_2D_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipses.
+ * @param[in] q1_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipses.
+ * @param[in] q2_stride PW85_2D_SYM when contiguous, 0 for one form.
  * @param[out] result n ints: −1, +1 or 0 for each pair, as
  *             pw85_2d_overlap().
  * @param[out] status NULL, or n ints: the status of each pair.
@@ -373,8 +378,13 @@ PW85_API int pw85_2d_overlap_batch(size_t n, double const *r12,
 
 /**
  * @brief pw85_2d_contact_geometry() for n pairs.
- * @param[in] n,r12,r12_stride,q1,q1_stride,q2,q2_stride as
- *            pw85_2d_contact_function_batch().
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_2D_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipses.
+ * @param[in] q1_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipses.
+ * @param[in] q2_stride PW85_2D_SYM when contiguous, 0 for one form.
  * @param[out] out n·PW85_2D_GEOM_SIZE doubles: pair i at
  *             `out + i·PW85_2D_GEOM_SIZE`, laid out as PW85_2D_GEOM_*.
  * @param[out] status NULL, or n ints: the status of each pair.
@@ -389,8 +399,13 @@ PW85_API int pw85_2d_contact_geometry_batch(
 
 /**
  * @brief pw85_2d_contact_derivatives() for n pairs.
- * @param[in] n,r12,r12_stride,q1,q1_stride,q2,q2_stride as
- *            pw85_2d_contact_function_batch().
+ * @param[in] n the number of pairs (0 is valid).
+ * @param[in] r12 the vectors c2 − c1.
+ * @param[in] r12_stride PW85_2D_DIM when contiguous, 0 for one vector.
+ * @param[in] q1 the forms of the first ellipses.
+ * @param[in] q1_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[in] q2 the forms of the second ellipses.
+ * @param[in] q2_stride PW85_2D_SYM when contiguous, 0 for one form.
  * @param[out] geometry n·PW85_2D_GEOM_SIZE doubles, as
  *             pw85_2d_contact_geometry_batch().
  * @param[out] d n·PW85_2D_DERIV_SIZE doubles: pair i at
