@@ -130,12 +130,24 @@ PW85_INLINE Status search(double const *r, double const *q1, double const *q2,
   status = p.moderate ? solve<true, D>(p, res, scaled_lo)
                       : solve<false, D>(p, res, scaled_lo);
   if (status != Status::success) return status;
+  // Far beyond the domain (forms singular in double, cond(Qᵢ) ≳ 1e300) the
+  // search's f may be NaN: the forms cannot be worked with in double.
+  if (std::isnan(res[0])) return Status::out_of_range;
+  // 8.–9. (λ of the input's orientation: the caller's).
+  c->mu2 = floored_mu2(p, res[0]);
+  c->lambda = res[1];
+  return Status::success;
+}
+
+}  // namespace
+
+template <int D>
+double floored_mu2(Problem<D> const &p, double mu2) noexcept {
   // 8. Floor: beyond the documented domain (cond(Qᵢ) far above 1/ε) the
   // computed f can be meaningless; μ² never falls below the rigorous sphere
   // bound (sphere_lower_bound_x256()) ≤ |r|²/(tr Q1 + tr Q2), which is
   // computed only when μ² is below the latter. Both scaled by 2^8, so that
   // neither overflows.
-  double mu2 = res[0];
   int shift = p.shift;
   // (tr Q1 + tr Q2)·2^−8, summed term by term from Q1's first entry.
   constexpr double s = 0x1p-8;
@@ -149,13 +161,9 @@ PW85_INLINE Status search(double const *r, double const *q1, double const *q2,
       shift -= 8;
     }
   }
-  // 9. Scaling back (λ of the input's orientation: the caller's).
-  c->mu2 = times_pow2(mu2, shift);
-  c->lambda = res[1];
-  return Status::success;
+  // 9. Scaling back.
+  return times_pow2(mu2, shift);
 }
-
-}  // namespace
 
 template <int D>
 Status contact_search(double const *r, double const *q1, double const *q2,
@@ -198,6 +206,7 @@ Status contact_function_dd(double const *r, double const *r_lo,
 }
 
 #define PW85_CONTACT_INSTANCES(D)                                           \
+  template double floored_mu2<D>(Problem<D> const &, double) noexcept;      \
   template Status contact_search<D>(double const *, double const *,         \
                                     double const *, Contact<D> *) noexcept; \
   template Status contact_function<D>(double const *, double const *,       \

@@ -65,6 +65,14 @@ Status solve_after_newton(Problem<D> const &p, NewtonResult<D> newton,
 // The templates of this header are defined in contact.cpp and
 // instantiated there for D = 2 and 3 (Fast true and false).
 
+// Steps 8 and 9: μ² of the problem (solve()'s out[0]) floored at the
+// rigorous sphere bound where it falls below it, or is NaN (beyond the
+// documented domain, where the computed f can be meaningless), then
+// scaled back to the input's: the μ² of pw85_contact_function(), also for
+// the overlap test's exact stage (overlap.cpp), so that the two agree.
+template <int D>
+double floored_mu2(Problem<D> const &p, double mu2) noexcept;
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_CONTACT_HPP

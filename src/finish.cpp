@@ -66,6 +66,13 @@ PW85_INLINE bool finish_steps(Problem<D> const &p, FinishStart<D> const &start,
   // long before λ is.
   double domega = start.domega;
   bool local = true;
+  // The least slope seen (the start's ω′ and every secant), for the
+  // flatness test (contact.cpp, 7b): where Q(λ) is ill-conditioned the
+  // plain ω′ and a secant through ω's rounding noise may both exceed the
+  // slope by orders of magnitude (3.7e8 and 8e5 against about 1e3 on a
+  // fuzzing input, regress-flat-least-slope), while a secant over a wider
+  // base still shows it.
+  double least = start.domega;
   // The plain factors and solution at the current λ, where known: those
   // of the start, if given, until λ moves.
   LdlSolution<D> const *plain = start.plain;
@@ -92,7 +99,7 @@ PW85_INLINE bool finish_steps(Problem<D> const &p, FinishStart<D> const &start,
     best.see(a.f, lambda, omega);
     if (omega == 0.0) {  // the root, to the resolution of doubles
       out->lambda = lambda;
-      out->slope = std::fmin(domega, start.domega);
+      out->slope = least;
       out->mu2 = std::max(a.f + a.f_lo, best.f);
       return true;
     }
@@ -108,6 +115,7 @@ PW85_INLINE bool finish_steps(Problem<D> const &p, FinishStart<D> const &start,
         double const secant = (omega - prev_omega) / (lambda - prev_lambda);
         if (secant > 0.0 && secant < HUGE_VAL) {
           domega = secant;
+          least = std::fmin(least, secant);
           double const width = std::fabs(lambda - prev_lambda);
           local = width <= finish_local * near ||
                   width <= 4.0 * std::fabs(omega / secant);
@@ -123,11 +131,11 @@ PW85_INLINE bool finish_steps(Problem<D> const &p, FinishStart<D> const &start,
       double const gain = model_gain(lambda, a, omega, step);
       if (gain >= 0.0 && gain <= max_model_gain * a.f) {
         out->lambda = next;
-        // For the flatness test (contact.cpp, 7b): the smaller of this
-        // slope and the start's plain ω′. A secant through ω's rounding
-        // noise can exceed ω′ by orders of magnitude (14.6 against 5e-6
-        // on a fuzzing input), and hide a flat maximum.
-        out->slope = std::fmin(domega, start.domega);
+        // For the flatness test (contact.cpp, 7b): the least slope seen.
+        // A secant through ω's rounding noise can exceed ω′ by orders of
+        // magnitude (14.6 against 5e-6 on a fuzzing input), and hide a
+        // flat maximum.
+        out->slope = least;
         // The gain is added to f before f is rounded: it can reach an ulp.
         out->mu2 = std::max(a.f + (a.f_lo + gain), best.f);
         return true;

@@ -26,8 +26,8 @@ struct FinishStart {
 struct Finished {
   double lambda;
   double mu2;    // μ² of the problem
-  double slope;  // the smaller of ω′ of the accepted Newton step and the
-                 // start's plain ω′ (NaN if no step was accepted)
+  double slope;  // the least of the start's plain ω′ and the secants
+                 // (NaN if no step was accepted)
 };
 
 // Compensated Newton steps on ω (slope: start.domega first, then secants),

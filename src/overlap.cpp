@@ -167,8 +167,9 @@ Decision accurate_filter(PlainPoint<3> const &pt,
   return accurate_bounds(pt, s);
 }
 
-// The last stage: the exact contact function (steps 5 to 7 after Newton's
-// result), for nearly tangent pairs or pairs too ill-conditioned for the
+// The last stage: the exact contact function (steps 5 to 9 after Newton's
+// result: μ² floored and scaled back as pw85_contact_function() returns
+// it), for nearly tangent pairs or pairs too ill-conditioned for the
 // bounds.
 template <bool Fast, int D>
 Status exact_decision(Problem<D> const &p, NewtonResult<D> const &newton,
@@ -176,7 +177,8 @@ Status exact_decision(Problem<D> const &p, NewtonResult<D> const &newton,
   double res[2];
   Status const status = solve_after_newton<Fast, D>(p, newton, res, r_lo);
   if (status != Status::success) return status;
-  double const mu2 = std::ldexp(res[0], p.shift);
+  if (std::isnan(res[0])) return Status::out_of_range;  // as contact.cpp
+  double const mu2 = floored_mu2(p, res[0]);
   *d = std::fabs(mu2 - 1.0) <= tangency
            ? Decision::tangent
            : (mu2 < 1.0 ? Decision::overlap : Decision::disjoint);

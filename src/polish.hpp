@@ -98,11 +98,18 @@ PW85_INLINE double omega_dd(double lambda, Problem<D> const &p, double *s,
 // linearly, and a step of polish_accept left λ 2e-11 off (fuzz-geometry,
 // ω′ = 2.5e-12 at λ* = 0.087, cond(Qᵢ) near 1e15).
 // Returns the polished λ (the last one reached where an evaluation fails);
-// a step larger than polish_max_step (relative) is clamped to it.
+// a step larger than the trust radius (relative, polish_max_step at
+// first) is clamped to it, and the radius doubles while the clamped steps
+// leave the sign of ω unchanged (the root is still ahead: ω increases
+// with λ), up to polish_max_radius; it falls back to polish_max_step once
+// ω changes sign. Found by fuzz-geometry: λ 0.6 % off from the search at
+// a maximum so flat that eight steps of 1e-3 fell short (tests/fuzz/
+// corpus/contact-raw/regress-geo-flat-*).
 template <bool Fast, int D>
 PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
   double lambda = lambda0;
   double prev_lambda = NAN, prev_omega = NAN;
+  double radius = polish_max_step;
   for (int k = 0; k < polish_iter; ++k) {
     PlainPoint<D> pt;
     NewtonStep plain_step;
@@ -115,15 +122,17 @@ PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
     double slope = plain_step.domega;
     double const secant = (omega - prev_omega) / (lambda - prev_lambda);
     if (secant > 0.0 && secant < HUGE_VAL) slope = secant;
+    if (std::signbit(omega) != std::signbit(prev_omega)) radius = polish_max_step;
     prev_lambda = lambda;
     prev_omega = omega;
     double const step = omega / slope;
     double const size = std::min(lambda, 1.0 - lambda);
     if (std::isnan(step)) break;
-    if (!(std::fabs(step) <= polish_max_step * size)) {
+    if (!(std::fabs(step) <= radius * size)) {
       // A trust region: the step clamped, towards the root that the sign
       // of the compensated ω gives.
-      lambda -= std::copysign(polish_max_step * size, step);
+      lambda -= std::copysign(radius * size, omega);
+      radius = std::min(2.0 * radius, polish_max_radius);
       continue;
     }
     lambda -= step;

@@ -3,6 +3,7 @@
 // check arguments, call the core (src/image/), map statuses.
 #include "pw85_image.h"
 
+#include <cfenv>
 #include <cstdint>
 
 #include "checks.hpp"
@@ -13,6 +14,21 @@ namespace core = pw85::detail;
 using pw85::facade::to_code;
 
 namespace {
+
+// The caller's floating-point exception flags, restored on every return
+// (pw85_image.h: "the caller's exception flags are left as they were";
+// the checks and the guesses raise FE_INEXACT, an overflowing 2²⁹·L_k
+// FE_OVERFLOW). OpenMP's other threads have flags of their own.
+class KeepFlags {
+ public:
+  KeepFlags() noexcept { std::fegetexceptflag(&saved_, FE_ALL_EXCEPT); }
+  ~KeepFlags() { std::fesetexceptflag(&saved_, FE_ALL_EXCEPT); }
+  KeepFlags(KeepFlags const &) = delete;
+  KeepFlags &operator=(KeepFlags const &) = delete;
+
+ private:
+  std::fexcept_t saved_;
+};
 
 // The number of voxels, if dims are valid and the image's bytes fit a
 // size_t; else a status.
@@ -36,6 +52,7 @@ int pw85_image_voxels(size_t n, double const *centres, double const *q,
                       double const sides[PW85_DIM], int periodic,
                       size_t const dims[PW85_DIM], int32_t *image,
                       int threads) noexcept {
+  KeepFlags const keep;
   if (sides == nullptr || dims == nullptr || image == nullptr ||
       (n > 0 && (centres == nullptr || q == nullptr)))
     return PW85_EFAULT;

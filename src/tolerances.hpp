@@ -137,7 +137,9 @@ constexpr double flat_slope = 1e-2;
 constexpr double flat_cond_slope2 =
     (0.01 * 0x1p-52 * 1e10) * (0.01 * 0x1p-52 * 1e10);  // against h²/κ̄
 constexpr double polish_max_step = 1e-3;
-constexpr int polish_iter = 8;
+// The trust radius doubles up to this (relative): λ stays in (0, 1).
+constexpr double polish_max_radius = 0.25;
+constexpr int polish_iter = 16;
 // s = Q(λ)⁻¹·r for the outputs: from the plain factors with one
 // refinement by a compensated residual while κ̄(Q(λ)) ≤ geometry_refine_cond
 // (relative error (κ̄·ε)² ≤ 5e-20), from a double-double factorisation

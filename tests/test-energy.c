@@ -5,6 +5,7 @@
  * itself on 1, 2 and 8 threads. */
 #include <glib.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "pw85.h"
@@ -472,6 +473,82 @@ static void test_errors(void) {
   free_assembly(&s);
 }
 
+/* Rows whose 3·n doubles do not fit a size_t: PW85_ENOMEM (no array of
+ * that size can exist), nothing written; without forces nor torques such
+ * an n is only a bound on the ids, and valid. (3·n wrapped around to a
+ * few doubles: the rows of ids 0 and 1 were written past the end of a
+ * buffer of 2, and the call succeeded.) */
+static void test_rows_overflow(void) {
+  Assembly s = make_assembly(20, 3.0, 5);
+  pw85_index *index = index_of(&s);
+  size_t const n = SIZE_MAX / 3 + 1; /* 3·n wraps to 2 */
+  double e = 42.0, f[60], tq[60];
+  for (int k = 0; k < 60; k++) f[k] = tq[k] = 42.0;
+  g_assert_cmpint(pw85_index_energy(index, PW85_ENERGY_OVERLAP, 1.0, NULL,
+                                    NULL, 1, n, &e, f, NULL), ==, PW85_ENOMEM);
+  g_assert_cmpint(pw85_index_energy(index, PW85_ENERGY_OVERLAP, 1.0, NULL,
+                                    NULL, 2, SIZE_MAX, &e, NULL, tq), ==,
+                  PW85_ENOMEM);
+  g_assert_cmpfloat(e, ==, 42.0);
+  for (int k = 0; k < 60; k++) {
+    g_assert_cmpfloat(f[k], ==, 42.0);
+    g_assert_cmpfloat(tq[k], ==, 42.0);
+  }
+  g_assert_cmpint(pw85_index_energy(index, PW85_ENERGY_OVERLAP, 1.0, NULL,
+                                    NULL, 1, SIZE_MAX, &e, NULL, NULL), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(e, ==, energy_of(index, 20));
+  pw85_index_destroy(index);
+  free_assembly(&s);
+}
+
+/* A pair energy of 2^1023 on each of two overlapping pairs: the sum is
+ * beyond the range of a double, PW85_ERANGE, nothing written (it was
+ * +inf with PW85_SUCCESS); the same for a slope whose force overflows. */
+static int huge_callback(double mu2, void *data, double out[2]) {
+  (void)mu2;
+  double const *slope = data;
+  out[0] = *slope == 0.0 ? 0x1p1023 : 1.0;
+  out[1] = *slope;
+  return 0;
+}
+
+static void test_sum_overflow(void) {
+  /* Three unit spheres on a line, centres 1 apart: pairs (0, 1), (1, 2)
+   * and (0, 2) overlap (μ = 1/2, 1/2, 1). */
+  double const box[3] = {10, 10, 10}, q[6] = {1, 0, 0, 1, 0, 1};
+  double const c[9] = {1, 1, 1, 2, 1, 1, 3, 1, 1};
+  pw85_index *index = NULL;
+  g_assert_cmpint(pw85_index_create(box, &index), ==, PW85_SUCCESS);
+  for (size_t i = 0; i < 3; i++)
+    g_assert_cmpint(pw85_index_insert(index, i, c + 3 * i, q), ==,
+                    PW85_SUCCESS);
+  double const slopes[] = {0.0, -0x1.fp1023};
+  for (size_t k = 0; k < G_N_ELEMENTS(slopes); k++) {
+    double e = 42.0, f[9], tq[9];
+    for (int m = 0; m < 9; m++) f[m] = tq[m] = 42.0;
+    int const st = pw85_index_energy(index, PW85_ENERGY_USER, 1.5,
+                                     huge_callback, (void *)&slopes[k], 1, 3,
+                                     &e, f, tq);
+    if (st != PW85_ERANGE)
+      g_test_fail_printf("slope %g: status %d (energy %g, force %g), "
+                         "expected PW85_ERANGE", slopes[k], st, e, f[0]);
+    g_assert_cmpfloat(e, ==, 42.0);
+    for (int m = 0; m < 9; m++) {
+      g_assert_cmpfloat(f[m], ==, 42.0);
+      g_assert_cmpfloat(tq[m], ==, 42.0);
+    }
+  }
+  /* ε = 2^1023 with pairs of (1 − μ)² = 1/4: 2^1023·(1/4 + 1/4) is a
+   * double, so the overlap energy succeeds. */
+  double e = 0.0;
+  g_assert_cmpint(pw85_index_energy(index, PW85_ENERGY_OVERLAP, 0x1p1023,
+                                    NULL, NULL, 1, 3, &e, NULL, NULL), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(e, ==, 0x1p1022);
+  pw85_index_destroy(index);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -483,5 +560,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/energy/user-finite-differences",
                   test_user_finite_differences);
   g_test_add_func("/pw85/energy/errors", test_errors);
+  g_test_add_func("/pw85/energy/rows-overflow", test_rows_overflow);
+  g_test_add_func("/pw85/energy/sum-overflow", test_sum_overflow);
   return g_test_run();
 }

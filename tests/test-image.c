@@ -469,6 +469,120 @@ static void test_errors(void) {
   g_assert_cmpuint(count, ==, 2);
 }
 
+/* The reach rule |c_k − o_k| + √Q_kk ≤ 2²⁹·L_k where 2²⁹·L_k is beyond
+ * the range of a double: a centre whose distance to the origin is not
+ * finite breaks it (PW85_EINVAL, nothing written; it was accepted, and the
+ * index of its bounding box, ±∞ converted to an integer, undefined); a
+ * huge box whose data are finite is drawn. */
+static void test_reach_overflow(void) {
+  double const L[3] = {1e300, 1e300, 1e300};
+  double const o[3] = {-1.7e308, 0, 0}, c[3] = {1.7e308, 0.5e300, 0.5e300};
+  double const q[6] = {1, 0, 0, 1, 0, 1};
+  size_t const n[3] = {4, 4, 4};
+  int32_t img[64];
+  for (int periodic = 0; periodic < 2; periodic++) {
+    for (int v = 0; v < 64; v++) img[v] = 77;
+    g_assert_cmpint(pw85_image_voxels(1, c, q, o, L, periodic, n, img, 1), ==,
+                    PW85_EINVAL);
+    for (int v = 0; v < 64; v++) g_assert_cmpint(img[v], ==, 77);
+  }
+  /* A box of side 2⁹⁹⁷ (2²⁹·L = +∞), a sphere of radius 2⁵⁰⁰ centred on
+   * the point of voxel (1, 1, 1), 3·2⁹⁹⁴: that voxel is inside, the
+   * others are not. */
+  double const Lp[3] = {0x1p997, 0x1p997, 0x1p997};
+  double const c2[3] = {0x3p994, 0x3p994, 0x3p994};
+  double const q2[6] = {0x1p1000, 0, 0, 0x1p1000, 0, 0x1p1000};
+  g_assert_cmpint(pw85_image_voxels(1, c2, q2, NULL, Lp, 1, n, img, 1), ==,
+                  PW85_SUCCESS);
+  for (int v = 0; v < 64; v++)
+    if (v != (1 * 4 + 1) * 4 + 1) g_assert_cmpint(img[v], ==, PW85_IMAGE_MATRIX);
+  g_assert_cmpint(img[(1 * 4 + 1) * 4 + 1], ==, 0);
+  g_assert_cmpint(img[0], ==, PW85_IMAGE_MATRIX);
+}
+
+/* The threads of the calling process (Linux: /proc/self/task). */
+static int task_count(void) {
+  GDir *dir = g_dir_open("/proc/self/task", 0, NULL);
+  if (dir == NULL) return -1;
+  int count = 0;
+  while (g_dir_read_name(dir) != NULL) count++;
+  g_dir_close(dir);
+  return count;
+}
+
+/* No more threads than the image has work for (at most one per 4096
+ * voxels, and per plane along x): 64 asked for a 2 × 2 × 2 image start
+ * none (OpenMP's threads stay in its pool after the call: counted then).
+ * They were all started, whatever the size: 10⁶ asked for killed the
+ * process (libgomp cannot create them and exits). In a subprocess, whose
+ * pool is empty. */
+static void test_threads_bounded(void) {
+  if (g_test_subprocess()) {
+    /* a unit sphere at the centre: every voxel point, at √3/2, inside */
+    double const L[3] = {2, 2, 2}, c[3] = {1, 1, 1};
+    double const q[6] = {1, 0, 0, 1, 0, 1};
+    size_t const n[3] = {2, 2, 2};
+    int32_t img[8];
+    int const before = task_count();
+    g_assert_cmpint(pw85_image_voxels(1, c, q, NULL, L, 1, n, img, 64), ==,
+                    PW85_SUCCESS);
+    int const after = task_count();
+    g_test_message("threads of the process: %d before, %d after", before,
+                   after);
+    g_assert_cmpint(after, ==, before);
+    for (int v = 0; v < 8; v++) g_assert_cmpint(img[v], ==, 0);
+    return;
+  }
+  if (task_count() < 0) {
+    g_test_skip("no /proc/self/task");
+    return;
+  }
+  g_test_trap_subprocess(NULL, 60 * G_USEC_PER_SEC, G_TEST_SUBPROCESS_DEFAULT);
+  g_test_trap_assert_passed();
+}
+
+/* "The caller's exception flags are left as they were" (pw85_image.h):
+ * every flag, clear or raised, after calls that succeed and that fail. The
+ * checks of the arguments raised FE_OVERFLOW (2²⁹·L overflowing, in a box
+ * of side 2⁹⁹⁷) and FE_INEXACT, which only the flags of the filter were
+ * saved from. */
+static void test_all_flags_kept(void) {
+  if (!flags_raised()) {
+    g_test_skip("the floating-point flags are not raised here");
+    return;
+  }
+  double const Lp[3] = {0x1p997, 0x1p997, 0x1p997};
+  double const c2[3] = {0x3p994, 0x3p994, 0x3p994};
+  double const q2[6] = {0x1p1000, 0, 0, 0x1p1000, 0, 0x1p1000};
+  double const L[3] = {10, 10, 10};
+  size_t const m = 40;
+  double *centres = g_new(double, 3 * m), *q = g_new(double, 6 * m);
+  random_config(5, m, L, centres, q);
+  double const far[3] = {1, 1, 0x1p40};
+  size_t const n[3] = {8, 8, 8};
+  int32_t img[512];
+  int const patterns[] = {0, FE_ALL_EXCEPT, FE_INEXACT | FE_DIVBYZERO,
+                          FE_OVERFLOW | FE_UNDERFLOW};
+  for (size_t k = 0; k < G_N_ELEMENTS(patterns); k++) {
+    for (int call = 0; call < 4; call++) {
+      feclearexcept(FE_ALL_EXCEPT);
+      feraiseexcept(patterns[k]);
+      int st;
+      if (call == 0) st = pw85_image_voxels(1, c2, q2, NULL, Lp, 1, n, img, 1);
+      else if (call == 1) st = pw85_image_voxels(m, centres, q, NULL, L, 1, n, img, 1);
+      else if (call == 2) st = pw85_image_voxels(m, centres, q, NULL, L, 0, n, img, 2);
+      else st = pw85_image_voxels(1, far, q, NULL, L, 1, n, img, 1);
+      int const flags = fetestexcept(FE_ALL_EXCEPT);
+      feclearexcept(FE_ALL_EXCEPT);
+      g_assert_cmpint(st, ==, call == 3 ? PW85_EINVAL : PW85_SUCCESS);
+      if (flags != patterns[k])
+        g_test_fail_printf("call %d: flags %#x after the call, %#x before",
+                           call, (unsigned)flags, (unsigned)patterns[k]);
+    }
+  }
+  g_free(centres), g_free(q);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   g_test_add_func("/pw85/image/lattice-surfaces", test_lattice);
@@ -478,5 +592,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/image/extreme-scales", test_extreme_scales);
   g_test_add_func("/pw85/image/threads", test_threads);
   g_test_add_func("/pw85/image/errors", test_errors);
+  g_test_add_func("/pw85/image/reach-overflow", test_reach_overflow);
+  g_test_add_func("/pw85/image/threads-bounded", test_threads_bounded);
+  g_test_add_func("/pw85/image/all-flags-kept", test_all_flags_kept);
   return g_test_run();
 }

@@ -4,6 +4,7 @@
  * threads); the outcomes; the aligned rule; the forms; every bad input. */
 #include <glib.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "pw85.h"
@@ -66,12 +67,17 @@ static size_t brute_overlaps(Packing const *s) {
   return bad;
 }
 
-/* The packing fraction from the outputs, as pw85_pack.h defines it. */
+/* The packing fraction from the outputs, as pw85_pack.h defines it (the
+ * lengths scaled by a power of two, exactly, so that the volumes of
+ * semi-axes of any size are doubles). */
 static double phi_of(Packing const *s) {
+  int const e = ilogb(s->a[0]);
   double v = 0.0;
   for (size_t i = 0; i < s->n; i++)
-    v += s->a[3 * i] * s->a[3 * i + 1] * s->a[3 * i + 2];
-  return 4.0 / 3.0 * G_PI * v / (s->box[0] * s->box[1] * s->box[2]);
+    v += ldexp(s->a[3 * i], -e) * ldexp(s->a[3 * i + 1], -e) *
+         ldexp(s->a[3 * i + 2], -e);
+  return 4.0 / 3.0 * G_PI * v /
+         (ldexp(s->box[0], -e) * ldexp(s->box[1], -e) * ldexp(s->box[2], -e));
 }
 
 static void check_packing(Packing const *s) {
@@ -331,6 +337,128 @@ static void test_errors(void) {
   pw85_pack_options_init(NULL); /* does nothing */
 }
 
+static void assert_same_packing(Packing const *s1, Packing const *s2,
+                                char const *what) {
+  if (s2->status != PW85_SUCCESS) {
+    g_test_fail_printf("%s: status %d, expected PW85_SUCCESS", what,
+                       s2->status);
+    return;
+  }
+  size_t const n = s1->n;
+  if (memcmp(s1->box, s2->box, sizeof s1->box) != 0 ||
+      memcmp(s1->c, s2->c, 3 * n * sizeof(double)) != 0 ||
+      memcmp(s1->p, s2->p, 4 * n * sizeof(double)) != 0 ||
+      memcmp(s1->q, s2->q, 6 * n * sizeof(double)) != 0)
+    g_test_fail_printf("%s: another packing", what);
+}
+
+/* The aspect gives only the proportions of the box, and the axis only a
+ * direction (pw85_pack.h): scaled by a power of two, the packing is the
+ * same, bit for bit. (The product of the aspects overflowed or underflowed:
+ * PW85_ERANGE; an axis of finite entries whose norm overflowed: PW85_EDOM;
+ * one whose squares underflowed: PW85_EINVAL, "the axis zero".) */
+static void test_scale_invariance(void) {
+  size_t const n = 30;
+  double *a = triaxial(n, 0.5, 0.2, 0);
+  pw85_pack_options o;
+  pw85_pack_options_init(&o);
+  o.target = 0.2;
+  o.seed = 3;
+  o.aspect[0] = 2.0; /* 2 : 1 : 1 */
+  Packing ref = run(n, a, &o);
+  check_packing(&ref);
+  double const scales[] = {0x1p-400, 0x1p-300, 0x1p300, 0x1p400};
+  for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
+    for (int m = 0; m < 3; m++) o.aspect[m] = (m == 0 ? 2.0 : 1.0) * scales[k];
+    Packing s = run(n, a, &o);
+    char *what = g_strdup_printf("aspect times %g", scales[k]);
+    assert_same_packing(&ref, &s, what);
+    g_free(what);
+    free_packing(&s);
+  }
+  pw85_pack_options_init(&o);
+  o.target = 0.2;
+  o.seed = 3;
+  o.orientation = PW85_PACK_ALIGNED;
+  o.axis[0] = 1.0, o.axis[1] = 1.0, o.axis[2] = 0.0;
+  Packing aref = run(n, a, &o);
+  check_packing(&aref);
+  for (size_t k = 0; k < G_N_ELEMENTS(scales); k++) {
+    o.axis[0] = o.axis[1] = scales[k];
+    Packing s = run(n, a, &o);
+    char *what = g_strdup_printf("axis times %g", scales[k]);
+    assert_same_packing(&aref, &s, what);
+    g_free(what);
+    free_packing(&s);
+  }
+  free_packing(&ref);
+  free_packing(&aref);
+  g_free(a);
+}
+
+/* The semi-axes times 2^±400: their volume is beyond the range of a
+ * double (it was PW85_ERANGE), their forms are not; the packing is that of
+ * the semi-axes at scale 1, scaled: box and centres by 2^±400, forms by
+ * 2^±800 (pw85_ellipsoid_quaternion() of the outputs, bit for bit: checked
+ * by check_packing(), with the brute force over every pair). */
+static void test_extreme_sizes(void) {
+  size_t const n = 30;
+  double *a = triaxial(n, 0.5, 0.2, 1);
+  pw85_pack_options o;
+  pw85_pack_options_init(&o);
+  o.target = 0.3;
+  o.seed = 9;
+  Packing ref = run(n, a, &o);
+  check_packing(&ref);
+  int const exps[] = {-400, 400};
+  for (size_t k = 0; k < G_N_ELEMENTS(exps); k++) {
+    int const e = exps[k];
+    double *b = g_new(double, 3 * n);
+    for (size_t i = 0; i < 3 * n; i++) b[i] = ldexp(a[i], e);
+    Packing s = run(n, b, &o);
+    if (s.status != PW85_SUCCESS) {
+      g_test_fail_printf("semi-axes times 2^%d: status %d", e, s.status);
+    } else {
+      check_packing(&s);
+      g_assert_cmpint(s.outcome, ==, ref.outcome);
+      for (int m = 0; m < 3; m++)
+        g_assert_cmpfloat(s.box[m], ==, ldexp(ref.box[m], e));
+      for (size_t i = 0; i < 3 * n; i++)
+        g_assert_cmpfloat(s.c[i], ==, ldexp(ref.c[i], e));
+      g_assert_cmpmem(s.p, 4 * n * sizeof(double), ref.p, 4 * n * sizeof(double));
+      g_assert_cmpfloat(s.phi, ==, ref.phi);
+    }
+    free_packing(&s);
+    g_free(b);
+  }
+  free_packing(&ref);
+  g_free(a);
+}
+
+/* n whose 3·n semi-axes (or 6·n forms) no array can hold: PW85_ENOMEM
+ * before anything is read or written (3·n wrapped around: the checks
+ * read 2 semi-axes, the packer then ran over n items). In a subprocess:
+ * before the fix it crashed. */
+static void test_count_overflow(void) {
+  if (g_test_subprocess()) {
+    double a[6] = {1, 0.5, 0.2, 1, 0.5, 0.2};
+    double box[3] = {7, 7, 7}, c[6], q[12], p[8], phi = 7;
+    int outcome = 7;
+    for (int k = 0; k < 6; k++) c[k] = 7;
+    size_t const counts[] = {SIZE_MAX / 3 + 1, SIZE_MAX / 6 + 1, SIZE_MAX};
+    for (size_t k = 0; k < G_N_ELEMENTS(counts); k++)
+      g_assert_cmpint(pw85_pack(counts[k], a, NULL, box, c, p, q, &phi,
+                                &outcome), ==, PW85_ENOMEM);
+    g_assert_cmpfloat(box[0], ==, 7);
+    g_assert_cmpfloat(c[0], ==, 7);
+    g_assert_cmpfloat(phi, ==, 7);
+    g_assert_cmpint(outcome, ==, 7);
+    return;
+  }
+  g_test_trap_subprocess(NULL, 60 * G_USEC_PER_SEC, G_TEST_SUBPROCESS_DEFAULT);
+  g_test_trap_assert_passed();
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -339,5 +467,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/pack/outcomes", test_outcomes);
   g_test_add_func("/pw85/pack/aligned", test_aligned);
   g_test_add_func("/pw85/pack/errors", test_errors);
+  g_test_add_func("/pw85/pack/scale-invariance", test_scale_invariance);
+  g_test_add_func("/pw85/pack/count-overflow", test_count_overflow);
+  g_test_add_func("/pw85/pack/extreme-sizes", test_extreme_sizes);
   return g_test_run();
 }

@@ -320,7 +320,9 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  *         the range of a double (ratio above about 1e600: out untouched);
  *         or if q1 or q2, positive definite, cannot be factorised in
  *         double once both are rescaled (singular to that precision,
- *         cond ≳ 1/ε: out untouched);
+ *         cond ≳ 1/ε: out untouched), or f cannot be evaluated in double
+ *         along the search (forms singular far beyond that, cond up to
+ *         1e600 with subnormal entries, found by fuzzing: out untouched);
  *         PW85_ENOMEM if GSL's minimiser would need more than the working
  *         memory reserved on the stack (out untouched; not expected).
  *         (pw85 1.0 returned 0 always; these statuses since 2.1.0.)

@@ -33,7 +33,8 @@
  * relative terms) an exact computation in integers. A point on a surface
  * to the last bit is inside. This assumes the default floating-point
  * environment (no flush-to-zero nor denormals-are-zero mode); the caller's
- * exception flags are left as they were.
+ * exception flags (all of them, on success and on error) are left as they
+ * were.
  *
  * Cost and memory. The work is proportional to the voxels of the
  * ellipsoids' bounding boxes (each row of voxels is decided by a few
@@ -43,8 +44,9 @@
  * the image); nothing is allocated: the memory is the caller's
  * image (4 bytes per voxel). Threads: `threads` OpenMP threads when
  * libpw85 was built with OpenMP (pw85_index_openmp()), 1 runs in the
- * calling thread, 0 is OpenMP's default; the image is the same, bit for
- * bit, for any number. Reentrant: concurrent calls on different images are
+ * calling thread, 0 is OpenMP's default; at most dims[0] threads, and
+ * one per 4096 voxels, are started (none for an image of fewer than 4096
+ * voxels); the image is the same, bit for bit, for any number. Reentrant: concurrent calls on different images are
  * safe.
  *
  * @since 2.4.0
@@ -75,7 +77,8 @@ extern "C" {
  * @param[in] n the number of ellipsoids (0 gives an image of −1), at most
  *            INT32_MAX.
  * @param[in] centres their centres (3·n doubles; may be NULL if n = 0).
- *            Each must satisfy |c_k − o_k| + √Q_kk ≤ 2²⁹·L_k.
+ *            Each must satisfy |c_k − o_k| + √Q_kk ≤ 2²⁹·L_k, the left
+ *            side finite (the reach rule).
  * @param[in] q their quadratic forms (6·n doubles), positive definite.
  * @param[in] origin the corner o of the box, or NULL for (0, 0, 0).
  * @param[in] sides the sides L of the box (each > 0 and finite).

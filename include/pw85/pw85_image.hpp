@@ -7,9 +7,9 @@
  * Header-only over the C ABI of pw85_image.h, whose description (the grid,
  * the values, exactness, threads) is the contract here; link -lpw85.
  * Needs C++11. No function throws; each returns the PW85_* status of the C
- * function it calls, and a failed call leaves its outputs as they were. A
- * vector that cannot grow follows the C++ library's rule (std::bad_alloc,
- * or an abort under -fno-exceptions).
+ * function it calls, and a failed call leaves its outputs as they were. An
+ * image that cannot be allocated is PW85_ENOMEM (under -fno-exceptions,
+ * the C++ library's rule: an abort).
  *
  * @since 2.4.0
  */
@@ -19,6 +19,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <new>
+#include <stdexcept>
 #include <vector>
 
 #include "pw85_image.h"
@@ -29,6 +31,9 @@ namespace pw85 {
  * @brief The voxel image of the ellipsoids (centres: 3 doubles each, q: 6
  *        each), periodic or open, into `image` (resized to the product of
  *        dims; C order, first index along x). pw85_image_voxels().
+ * @return the statuses of pw85_image_voxels(); PW85_EINVAL also if the
+ *         sizes of centres and q are not 3·n and 6·n; PW85_ENOMEM if the
+ *         image cannot be allocated. `image` is unchanged on error.
  * @since 2.4.0
  */
 inline int image_voxels(std::vector<double> const &centres,
@@ -47,7 +52,18 @@ inline int image_voxels(std::vector<double> const &centres,
       return PW85_ERANGE;
     voxels *= d;
   }
-  std::vector<std::int32_t> out(voxels);
+  std::vector<std::int32_t> out;
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+  try {
+    out.resize(voxels);
+  } catch (std::bad_alloc const &) {
+    return PW85_ENOMEM;
+  } catch (std::length_error const &) {
+    return PW85_ENOMEM;
+  }
+#else
+  out.resize(voxels);
+#endif
   int const status = pw85_image_voxels(
       n, centres.data(), q.data(), origin.data(), sides.data(),
       periodic ? 1 : 0, dims.data(), out.data(), threads);

@@ -479,7 +479,10 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  * threads. Cost: one all-pairs query, one search per pair reported (of
  * the query itself for PW85_ENERGY_USER, after it for the overlap
  * energy, whose query decides most pairs by cheaper filters), then a 3×3
- * solve per pair, on `threads` threads. Accuracy: forces and
+ * solve per pair, on `threads` threads. Memory, besides the outputs:
+ * the query's pairs (40 bytes each), a copy of the stored ellipsoids
+ * (72 bytes per id below the id table's size) and two arrays of 3·n
+ * doubles. Accuracy: forces and
  * torques agree with central differences of the energy to 1.2e-9
  * relative (tests/test-energy.c).
  *
@@ -502,7 +505,10 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  *         PW85_ENERGY_USER, threads < 1, or n is not above every stored id;
  *         PW85_ECANCELLED if fn returned non-zero; PW85_ERANGE as
  *         pw85_index_pairs_within() or pw85_contact_derivatives() on a
- *         pair; PW85_ENOMEM. Nothing is written on error.
+ *         pair, or if the energy, or an entry of forces or torques (those
+ *         asked for), is beyond the range of a double; PW85_ENOMEM (also
+ *         when forces or torques is given and 3·n doubles would not fit a
+ *         size_t). Nothing is written on error.
  * @since 2.4.0
  */
 PW85_API int pw85_index_energy(pw85_index const *index, int kind,

@@ -110,11 +110,13 @@ typedef struct pw85_pack_options {
                              default 0.5. */
   uint64_t seed;        /**< the seed of the random placement; default 0. */
   double aspect[3];     /**< the box's sides are proportional to these
-                             (each > 0, finite); default 1, 1, 1 (cube). */
+                             (each > 0, finite; only their ratios count);
+                             default 1, 1, 1 (cube). */
   int orientation;      /**< PW85_PACK_ISOTROPIC (default) or
                              PW85_PACK_ALIGNED. */
-  double axis[3];       /**< the axis of PW85_PACK_ALIGNED (not zero,
-                             normalised by pw85_pack()); default 0, 0, 1. */
+  double axis[3];       /**< the axis of PW85_PACK_ALIGNED (finite, not
+                             zero, of any length: normalised by
+                             pw85_pack()); default 0, 0, 1. */
   int threads;          /**< threads (≥ 1); default 1. */
   double time_limit;    /**< seconds of wall clock (> 0), or 0 for none
                              (default). */
@@ -157,8 +159,13 @@ PW85_API void pw85_pack_options_init(pw85_pack_options *options) PW85_NOEXCEPT;
  *         options->size too small, or if the box at the target cannot
  *         hold the largest ellipsoid (the side rule of pw85_index.h with
  *         the largest semi-axis: 2·a_max·(1 + 2⁻⁹) ≥ L_k for some k);
- *         PW85_ERANGE if the semi-axes span more than 2⁴⁰ or their volume
- *         overflows; PW85_ENOMEM. Nothing is written on error.
+ *         PW85_ERANGE if the semi-axes span more than 2⁴⁰, or the sides
+ *         of the box at the target are beyond the range of a double, or
+ *         the volume Σa0·a1·a2 is while a semi-axis is outside
+ *         [2⁻⁵⁰⁰, 2⁵⁰¹) (inside, they are packed scaled by a power of
+ *         two, and the outputs scaled back: exactly the packing of the
+ *         scaled semi-axes, scaled); PW85_ENOMEM (also if 6·n doubles
+ *         would not fit a size_t). Nothing is written on error.
  * @since 2.4.0
  */
 PW85_API int pw85_pack(size_t n, double const *semi_axes,

@@ -42,6 +42,7 @@
 // the order, hence neither on the number of threads.
 #include "image/raster.hpp"
 
+#include <algorithm>
 #include <cfenv>
 #include <cmath>
 #include <cstring>
@@ -458,7 +459,10 @@ Status check_image_input(Grid const &grid, std::size_t n,
     for (int k = 0; k < 3; ++k) {
       double const reach =
           std::fabs(centres[3 * p + k] - grid.origin[k]) + std::sqrt(q[6 * p + entry[k][k]]);
-      if (!(reach <= image_reach * grid.sides[k])) return Status::invalid_argument;
+      // (2²⁹·L_k may overflow to +∞: reach must then still be finite, so
+      // that the bounding boxes' indices are.)
+      if (!(std::isfinite(reach) && reach <= image_reach * grid.sides[k]))
+        return Status::invalid_argument;
     }
   }
   return Status::success;
@@ -487,6 +491,11 @@ void voxel_image(Grid const &grid, std::size_t n, double const *centres,
 #if defined(PW85_OPENMP)
   if (threads == 0) threads = omp_get_max_threads();
 #endif
+  // No more threads than there is work for: one per 4096 voxels at
+  // least (as the index's queries), and per plane along x.
+  std::int64_t const voxels = n0 * grid.dims[1] * grid.dims[2];
+  std::int64_t const most = std::min(n0, voxels / 4096 + 1);
+  if (threads > most) threads = static_cast<int>(most);
   // Chunks of planes: about 16 per thread, for the dynamic schedule.
   std::int64_t per = n0 / (16 * (threads > 0 ? threads : 1));
   if (per < 1) per = 1;

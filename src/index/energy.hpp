@@ -36,7 +36,9 @@ struct EnergySpec {
 // invalid_argument for an unknown kind, ε or t ≤ 0, a user kind without
 // a function, threads < 1, n ≤ the largest stored id; not_finite for a
 // parameter, or a value returned by the function, not finite; cancelled
-// when the function returns non-zero. *npairs, when not null: the number
+// when the function returns non-zero; no_memory when forces or torques
+// is given and 3·n doubles would not fit a size_t; out_of_range when the
+// energy, or a force or torque asked for, is not finite. *npairs, when not null: the number
 // of pairs summed.
 Status assembly_energy(Index const &index, EnergySpec const &spec,
                        int threads, std::size_t n, double *energy,

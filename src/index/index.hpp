@@ -117,6 +117,7 @@ struct PairHit {
   int result;
   double mu2, lambda;
 };
+static_assert(sizeof(PairHit) == 40, "pw85_index_energy()'s memory figure");
 
 class Index {
  public:

@@ -179,7 +179,10 @@ void check_contact(const double r12[3], const double q1[6],
 
   // Against the binary128 reference (quad_ref.h), where μ² is a normal
   // double: μ² correctly rounded (within half an ulp of the reference,
-  // plus the reference's own error, cond·2^−100 relative, generously),
+  // plus the reference's own error: of order cond·2^−113 relative
+  // (quad_ref.h), allowed 2^7 times that, cond·2^−106 with cond the bound
+  // κ̄ ≥ cond(Qᵢ) ≥ cond(Q(λ)); 1/16 of an ulp at cond 1e15, where
+  // cond·2^−100 allowed 4 ulps, and a misrounded μ² went unseen),
   // and λ inside the window where f is within 4 ulps of μ².
   if (mu2 >= DBL_MIN && mu2 < DBL_MAX) {
     QuadRef const ref = quad_contact(r12, q1, q2);
@@ -189,7 +192,7 @@ void check_contact(const double r12[3], const double q1[6],
       quad const ulp_hi = (quad)std::nextafter(mu2, INFINITY) - (quad)mu2;
       quad const ulp_lo = (quad)mu2 - (quad)std::nextafter(mu2, 0.0);
       quad const half_ulp = (ulp_hi > ulp_lo ? ulp_hi : ulp_lo) / 2;
-      quad const ref_err = ref.mu2 * (quad)(cond * 0x1p-100L);
+      quad const ref_err = ref.mu2 * (quad)(cond * 0x1p-106L);
       quad const diff = (quad)mu2 - ref.mu2;
       CHECK_IN((diff < 0 ? -diff : diff) <= half_ulp + ref_err,
                "mu2 = %a, reference %a (lambda* %La, cond %Lg)", mu2,

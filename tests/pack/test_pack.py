@@ -391,7 +391,26 @@ class Pack(unittest.TestCase):
         with h5py.File(overlapping, "r+") as f:
             f["centres"][1] = f["centres"][0]
             f["forms"][1] = f["forms"][0]
-        for name, message in [("missing.h5", "cannot read"),
+        # sizes from a corrupted file: a count of rows whose bytes wrap
+        # around a size_t, a target count beyond --n's range, or below the
+        # count of the file (they were allocated as such: the tool wrote
+        # past its buffers, or blamed --n, which was not given)
+        huge = os.path.join(self.dir, "huge.h5")
+        shutil.copy(os.path.join(self.dir, "good.h5"), huge)
+        with h5py.File(huge, "r+") as f:
+            del f["centres"]
+            f.create_dataset("centres", shape=(2**61 + 1, 3), dtype="f8",
+                             chunks=(1, 3))
+        for name, value in (("bigtarget.h5", 2**61 + 1),
+                            ("smalltarget.h5", 5)):
+            path = os.path.join(self.dir, name)
+            shutil.copy(os.path.join(self.dir, "good.h5"), path)
+            with h5py.File(path, "r+") as f:
+                f.attrs["target_count"] = np.uint64(value)
+        for name, message in [("huge.h5", "/centres has 2305843009213693953 rows"),
+                              ("bigtarget.h5", "target_count 2305843009213693953"),
+                              ("smalltarget.h5", "target_count 5"),
+                              ("missing.h5", "cannot read"),
                               ("text.h5", "not an HDF5 file"),
                               ("cut.h5", "not an HDF5 file"),
                               ("other.h5", "/box has not the documented type and shape"),

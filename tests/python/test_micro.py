@@ -146,11 +146,38 @@ def test_image_errors():
     assert e.value.status == pypw85.EDOM
     with pytest.raises(pypw85.Error, match="ellipsoid 0"):
         micro.voxel_image([[0, 0, 2.0**31]], q[:1], box, 4)
+    # 2²⁹·L = +∞: the reach |c − o| + √Q_kk must still be finite (an
+    # infinite one passed the check, and the library's message named
+    # nothing)
+    with pytest.raises(pypw85.Error, match="ellipsoid 0") as e:
+        micro.voxel_image([[1.7e308, 0, 0]], q[:1], [1e300] * 3, 4,
+                          origin=[-1.7e308, 0, 0])
+    assert e.value.status == pypw85.EINVAL
+    # counts that are not integers were truncated (4.5 voxels drew 4)
+    with pytest.raises(TypeError, match="dims"):
+        micro.voxel_image(c[:1], q[:1], box, (4.5, 4, 4))
+    with pytest.raises(TypeError, match="dims"):
+        micro.voxel_image(c[:1], q[:1], box, 4.0)
     with pytest.raises(ValueError, match="centres"):
         micro.voxel_image([1.0, 2.0], q[:1], box, 4)
     with pytest.raises(ValueError, match="threads"):
         micro.voxel_image(c[:1], q[:1], box, 4, threads=-1)
     assert (micro.voxel_image(np.empty((0, 3)), np.empty((0, 6)), box, 3) == -1).all()
+
+
+def test_phase_fraction_of_other_dtypes():
+    """An image of another integer type is counted as its values say, or
+    refused when they do not fit int32 (they were wrapped around: 2³² − 1,
+    ≥ 0, counted as the matrix); a float or bool image is refused."""
+    img = np.full((2, 2, 2), -1, dtype=np.int64)
+    img[0, 0, 0] = 3
+    assert micro.phase_fraction(img) == 0.125
+    with pytest.raises(ValueError, match="image"):
+        micro.phase_fraction(np.full((2, 2, 2), 2**32 - 1, dtype=np.int64))
+    with pytest.raises(TypeError, match="image"):
+        micro.phase_fraction(np.zeros((2, 2, 2)))
+    with pytest.raises(TypeError, match="image"):
+        micro.phase_fraction(np.ones((2, 2, 2), dtype=bool))
 
 
 def configuration(n=50, seed=5):

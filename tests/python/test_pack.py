@@ -107,6 +107,48 @@ def test_pack_errors(kwargs, kind, words):
     assert words in str(info.value)
 
 
+@pytest.mark.parametrize("kwargs,kind,words", [
+    # semi-axes spanning more than 2⁴⁰: the library's PW85_ERANGE, named
+    ({"semi_axes": [[1.0, 1.0, 1.0], [2.0**-41, 1.0, 1.0]]}, pypw85.Error,
+     "semi_axes"),
+    # beyond a C int: ctypes wrapped 2³² + 1 to 1 thread, 2³¹ to −2³¹
+    ({"threads": 2**32 + 1}, ValueError, "threads"),
+    ({"threads": 2**31}, ValueError, "threads"),
+    # beyond a size_t: wrapped around
+    ({"step_limit": 2**64 + 1}, ValueError, "step_limit"),
+    ({"progress_every": 2**64 + 1}, ValueError, "progress_every"),
+    ({"step_limit": "ten"}, TypeError, "step_limit"),
+    # the seed was masked to 64 bits (−1 packed as 2⁶⁴ − 1) or truncated
+    ({"seed": -1}, pypw85.Error, "seed"),
+    ({"seed": 2**64}, ValueError, "seed"),
+    ({"seed": 1.5}, TypeError, "seed"),
+    ({"progress_every": 2.5}, TypeError, "progress_every"),
+])
+def test_pack_errors_named(kwargs, kind, words):
+    args = {"semi_axes": semi_axes(4), "target": 0.3}
+    args.update(kwargs)
+    with pytest.raises(kind) as info:
+        pypw85.pack(args.pop("semi_axes"), **args)
+    assert words in str(info.value)
+
+
+def test_pack_side_rule_as_the_library():
+    """The side rule 2·a_max·(1 + 2⁻⁹) < L_k decided as pw85_pack decides
+    it: a target a few ulps below the boundary is packed (pypw85 decided it
+    with its own arithmetic, x ** (1/3) for cbrt, and refused it), one a few
+    ulps above is refused with the numbers."""
+    a = np.array([[1.0, 0.37, 0.21]])
+    volume = 4.0 / 3.0 * np.pi * 1.0 * 0.37 * 0.21
+    boundary = volume / (2.0 * (1.0 + 2.0**-9)) ** 3
+    for k in (1, 2, 3):
+        t = boundary * (1.0 - k * 2.0**-52)
+        p = pypw85.pack(a, t, step_limit=10)
+        assert (2.0 * (1.0 + 2.0**-9) < p.box).all()
+    with pytest.raises(pypw85.Error, match=r"L_0 = .*2·a_max") as info:
+        pypw85.pack(a, boundary * (1.0 + 8 * 2.0**-52))
+    assert info.value.status == pypw85.EINVAL
+
+
 def overlapping_index(n=60, side=5.0, seed=2):
     rng = np.random.default_rng(seed)
     a = semi_axes(n, (1.0, 0.6, 0.3))

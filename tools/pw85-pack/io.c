@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <hdf5.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -170,12 +171,29 @@ static int read_dataset(hid_t file, char const *name, int rank, hsize_t *dims,
   if (ok) H5Sget_simple_extent_dims(space, got, NULL);
   for (int k = 0; ok && k < rank; k++)
     if (dims[k] != 0 && got[k] != dims[k]) ok = 0;
+  /* The sizes are the file's, not ours: rows within --n's range, and a
+   * count of bytes that fits a size_t (it wrapped around: a small buffer
+   * that H5Dread() overran). */
+  size_t const item = H5Tget_size(mem_type);
+  size_t count = 1;
   if (!ok) {
     snprintf(why, size, "/%s has not the documented type and shape", name);
+  } else if (rank == 2 && got[0] > IO_MAX_COUNT) {
+    snprintf(why, size, "/%s has %llu rows, more than %llu", name,
+             (unsigned long long)got[0], (unsigned long long)IO_MAX_COUNT);
+    ok = 0;
   } else {
-    size_t count = 1;
-    for (int k = 0; k < rank; k++) count *= (size_t)(dims[k] = got[k]);
-    *data = malloc((count ? count : 1) * H5Tget_size(mem_type));
+    for (int k = 0; ok && k < rank; k++) {
+      if (got[k] != 0 && count > SIZE_MAX / item / got[k]) {
+        snprintf(why, size, "/%s is too large", name);
+        ok = 0;
+      }
+      count *= (size_t)got[k];
+    }
+  }
+  if (ok) {
+    for (int k = 0; k < rank; k++) dims[k] = got[k];
+    *data = malloc((count ? count : 1) * item);
     if (*data == NULL) {
       snprintf(why, size, "out of memory for /%s", name);
       ok = 0;

@@ -9,6 +9,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* The most ellipsoids a file may hold (--n's range): io_read_hdf5()
+ * rejects larger datasets. */
+#define IO_MAX_COUNT 100000000u
+
 /* A configuration as written: count ellipsoids in a periodic box. */
 struct micro {
   double box[3];
@@ -27,7 +31,8 @@ struct micro {
 
 int io_check_writable(char const *path, char *err, size_t size);
 int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t size);
-/* Reads the layout (without /image); validates types and shapes. */
+/* Reads the layout (without /image); validates types and shapes, and
+ * sizes (at most IO_MAX_COUNT ellipsoids). */
 int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size);
 void io_free(struct micro *m);
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,

@@ -331,6 +331,13 @@ static int pack_main(int argc, char **argv) {
     int same = 1;
     for (size_t i = 1; i < r.count; i++)
       same &= memcmp(r.axes + 3 * i, a, 3 * sizeof *a) == 0;
+    /* The target count of a file: from its count to --n's range. */
+    if (r.target < r.count || r.target > IO_MAX_COUNT) {
+      io_free(&r);
+      return error("--resume: %s: target_count %llu is not from the count of its "
+                   "ellipsoids (%zu) to %u: a corrupted file",
+                   o.resume, (unsigned long long)r.target, r.count, IO_MAX_COUNT);
+    }
     if (r.count == 0 || !same) {
       io_free(&r);
       return error("--resume: %s: not a packing of identical ellipsoids by pw85-pack",

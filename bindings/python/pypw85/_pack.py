@@ -15,7 +15,7 @@ if typing.TYPE_CHECKING:
     from typing import Callable, Optional, Sequence
     from numpy.typing import ArrayLike
 
-from ._constants import EDOM, EINVAL
+from ._constants import EDOM, EINVAL, ERANGE
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -131,7 +131,7 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
     target : float
         The packing fraction to reach, in (0, 1).
     seed : int
-        The seed of the random placement. The same inputs and seed give
+        The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and seed give
         the same packing, bit for bit, for any ``threads``.
     aspect : 3 floats
         The box's sides are proportional to these (cube by default).
@@ -172,9 +172,14 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
         for a value not finite, `EINVAL` for n = 0, a semi-axis not > 0, a
         target not in (0, 1), an aspect not > 0, an unknown orientation, a
         zero axis, threads < 1, a limit not > 0, or a box too small at the
-        target for the largest ellipsoid.
+        target for the largest ellipsoid (decided by the library, as
+        ``pw85_pack.h`` states the rule); `ERANGE` for semi-axes spanning
+        more than 2⁴⁰.
     TypeError, ValueError
-        An argument of the wrong type or shape.
+        An argument of the wrong type or shape (``threads``,
+        ``step_limit`` and ``progress_every`` are ints), or a count beyond
+        the C type that holds it (``threads`` above 2³¹ − 1, a limit above
+        2⁶⁴ − 1).
     """
     a = np.asarray(semi_axes)
     if a.dtype.kind not in "iuf":
@@ -195,6 +200,10 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
         k = int(np.argmin((a > 0).all(axis=1)))
         raise Error(EINVAL, "pack", "semi_axes[%d] = %s: a semi-axis is "
                     "not > 0" % (k, a[k]))
+    amin, amax = float(a.min()), float(a.max())
+    if amax / amin > 2.0**40:
+        raise Error(ERANGE, "pack", "semi_axes span %.6g to %.6g, more than "
+                    "2⁴⁰" % (amin, amax))
     target = _positive("target", target)
     if not target < 1:
         raise Error(EINVAL, "pack", "target = %r is not < 1" % target)
@@ -209,43 +218,24 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
             raise Error(EDOM, "pack", "axis[%d] = %r is not finite" % (k, x))
     if not any(ax):
         raise Error(EINVAL, "pack", "axis = (0, 0, 0) has no direction")
-    if isinstance(threads, bool) or not isinstance(threads,
-                                                   (int, np.integer)):
-        raise TypeError("pack: threads must be an int, got %r" % (threads,))
-    if threads < 1:
-        raise Error(EINVAL, "pack", "threads = %d is not ≥ 1" % threads)
+    threads = _count("threads", threads, 1, 2**31 - 1)
     limit = 0.0 if time_limit is None else _positive("time_limit",
                                                      time_limit)
-    steps = 0 if step_limit is None else int(step_limit)
-    if steps < 0 or (step_limit is not None and steps == 0):
-        raise Error(EINVAL, "pack", "step_limit = %r is not ≥ 1" % step_limit)
-    if int(progress_every) < 1:
-        raise Error(EINVAL, "pack", "progress_every = %r is not ≥ 1"
-                    % progress_every)
-    # The side rule, as the library checks it, with the numbers.
-    volume = 4.0 / 3.0 * math.pi * float(np.sum(np.prod(a, axis=1)))
-    s = (volume / (target * asp[0] * asp[1] * asp[2])) ** (1.0 / 3.0)
-    amax = float(a.max())
-    for k in range(3):
-        if not 2.0 * amax * _SIDE_MARGIN < asp[k] * s:
-            raise Error(EINVAL, "pack", "the box at target %.6g has side "
-                        "L_%d = %.6g, not above 2·a_max·(1 + 2⁻⁹) = %.6g "
-                        "(the largest semi-axis, %.6g, must fit: lower the "
-                        "target or change the aspect)"
-                        % (target, k, asp[k] * s, 2 * amax * _SIDE_MARGIN,
-                           amax))
+    steps = 0 if step_limit is None else _count("step_limit", step_limit,
+                                                 1, 2**64 - 1)
+    every = _count("progress_every", progress_every, 1, 2**64 - 1)
 
     opts = _Options()
     _lib.pw85_pack_options_init(ctypes.byref(opts))
     opts.target = target
-    opts.seed = int(seed) & 0xFFFFFFFFFFFFFFFF
+    opts.seed = _count("seed", seed, 0, 2**64 - 1)
     opts.aspect[:] = asp
     opts.orientation = _ORIENTATIONS[orientation]
     opts.axis[:] = ax
-    opts.threads = int(threads)
+    opts.threads = threads
     opts.time_limit = limit
     opts.step_limit = steps
-    opts.progress_every = int(progress_every)
+    opts.progress_every = every
     raised = []
     if progress is not None:
         if not callable(progress):
@@ -275,10 +265,36 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
                           ctypes.byref(phi), ctypes.byref(outcome))
     if raised:
         raise raised[0]
+    if code == EINVAL:
+        # Every other rule of PW85_EINVAL was checked above: the side rule
+        # (decided by the library alone, whose arithmetic is the rule),
+        # with the numbers.
+        volume = 4.0 / 3.0 * math.pi * float(np.sum(np.prod(a, axis=1)))
+        s = (volume / (target * asp[0] * asp[1] * asp[2])) ** (1.0 / 3.0)
+        k = int(np.argmin(np.asarray(asp)))
+        raise Error(EINVAL, "pack", "the box at target %.6g has side "
+                    "L_%d = %.6g, not above 2·a_max·(1 + 2⁻⁹) = %.6g "
+                    "(the largest semi-axis, %.6g, must fit: lower the "
+                    "target or change the aspect)"
+                    % (target, k, asp[k] * s, 2 * amax * _SIDE_MARGIN, amax))
     if code != 0:
         raise Error(code, "pack")
     return Packing(box, centres, quaternions, forms, phi.value,
                    _OUTCOMES[outcome.value])
+
+
+def _count(name, x, lo, hi):
+    """x as an int in [lo, hi] (a C int or size_t: never wrapped), or
+    raise naming it."""
+    if isinstance(x, (bool, np.bool_)) or not isinstance(x,
+                                                         (int, np.integer)):
+        raise TypeError("pack: %s must be an int, got %r" % (name, x))
+    x = int(x)
+    if x < lo:
+        raise Error(EINVAL, "pack", "%s = %d is not ≥ %d" % (name, x, lo))
+    if x > hi:
+        raise ValueError("pack: %s = %d is above %d" % (name, x, hi))
+    return x
 
 
 def _three(name, x):

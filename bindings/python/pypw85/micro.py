@@ -120,9 +120,17 @@ def voxel_image(centres: ArrayLike, q: ArrayLike, sides: ArrayLike,
     o = None if origin is None else _vec3("origin", origin)
     if isinstance(dims, (int, np.integer)):
         dims = (dims,) * 3
-    d = tuple(int(x) for x in dims)
+    try:
+        d = tuple(dims)
+    except TypeError:
+        raise TypeError("dims: expected an int or 3 ints, got %r"
+                        % (dims,)) from None
     if len(d) != 3:
         raise ValueError("dims: expected 3 integers, got %r" % (dims,))
+    if not all(isinstance(x, (int, np.integer))
+               and not isinstance(x, (bool, np.bool_)) for x in d):
+        raise TypeError("dims: expected integers, got %r" % (dims,))
+    d = tuple(int(x) for x in d)
     t = _threads_count(threads)
     for name, x in (("centres", c), ("q", qa), ("sides", L), ("origin", o)):
         if x is not None and not np.isfinite(x).all():
@@ -137,9 +145,11 @@ def voxel_image(centres: ArrayLike, q: ArrayLike, sides: ArrayLike,
     oo = np.zeros(3) if o is None else o
     if n:
         diag = qa[:, [0, 3, 5]]
-        with np.errstate(invalid="ignore"):
+        with np.errstate(invalid="ignore", over="ignore"):
             reach = np.abs(c - oo) + np.sqrt(diag)
-        bad = np.nonzero(~(reach <= _REACH * L).all(axis=1))[0]
+            # (2²⁹·L may be +∞: the reach must be finite too)
+            ok = np.isfinite(reach) & (reach <= _REACH * L)
+        bad = np.nonzero(~ok.all(axis=1))[0]
         if bad.size and (diag[bad[0]] > 0).all():
             p = int(bad[0])
             raise Error(EINVAL, where,
@@ -170,7 +180,15 @@ def voxel_image(centres: ArrayLike, q: ArrayLike, sides: ArrayLike,
 def phase_fraction(image: ArrayLike) -> float:
     """The fraction of voxels of image that hold an ellipsoid (value ≥ 0),
     correctly rounded (pw85_image_fraction)."""
-    a = np.ascontiguousarray(image, dtype=np.int32)
+    a = np.asarray(image)
+    if a.dtype.kind not in "iu":
+        raise TypeError("image: expected integers (int32), got dtype %s"
+                        % a.dtype)
+    if a.dtype != np.int32 and a.size and (
+            int(a.min()) < -2**31 or int(a.max()) > 2**31 - 1):
+        raise ValueError("image: values from %d to %d do not fit int32"
+                         % (int(a.min()), int(a.max())))
+    a = np.ascontiguousarray(a, dtype=np.int32)
     if a.ndim != 3 or a.size == 0:
         raise ValueError("image: expected a non-empty 3-d array, got shape %s"
                          % (a.shape,))
