@@ -54,23 +54,24 @@ constexpr std::size_t minimizer_state_size = 512;
 // −f is already known: the objective returns that value there, which is
 // the value it would compute, and evaluates anywhere else. (Should a GSL
 // release move that point, the objective is merely evaluated there.)
+template <int D>
 struct KnownCentre {
-  Problem const *p;
+  Problem<D> const *p;
   double lambda;
   double neg_f;  // neg_f_or_zero(lambda, *p)
 };
 
-template <bool Fast>
+template <bool Fast, int D>
 double objective(double lambda, void *params) noexcept {
-  auto const *c = static_cast<KnownCentre const *>(params);
+  auto const *c = static_cast<KnownCentre<D> const *>(params);
   if (lambda == c->lambda) return c->neg_f;
   return neg_f_or_zero<Fast>(lambda, *c->p);
 }
 
 }  // namespace
 
-template <bool Fast>
-Status certify_with_brent(Problem const &p, double lambda, double neg_f,
+template <bool Fast, int D>
+Status certify_with_brent(Problem<D> const &p, double lambda, double neg_f,
                           int max_iter, BrentResult *out) noexcept {
   double a = 0.0, b = 1.0, fa = 0.0, fb = 0.0;
   bool enclosed = false;
@@ -97,8 +98,8 @@ Status certify_with_brent(Problem const &p, double lambda, double neg_f,
   gsl_min_fminimizer s{};
   s.type = type;
   s.state = state;
-  KnownCentre centre{&p, lambda, neg_f};
-  gsl_function fn{&objective<Fast>, &centre};
+  KnownCentre<D> centre{&p, lambda, neg_f};
+  gsl_function fn{&objective<Fast, D>, &centre};
   // The preconditions that GSL checks (a < λ < b, −f(λ) below both ends)
   // hold here, so its error handler is not reached.
   gsl_min_fminimizer_set_with_values(&s, &fn, lambda, neg_f, a, fa, b, fb);
@@ -112,9 +113,9 @@ Status certify_with_brent(Problem const &p, double lambda, double neg_f,
   return Status::success;
 }
 
-template Status certify_with_brent<true>(Problem const &, double, double, int,
-                                         BrentResult *) noexcept;
-template Status certify_with_brent<false>(Problem const &, double, double,
-                                          int, BrentResult *) noexcept;
+template PW85_CERTIFY_WITH_BRENT(true, 2);
+template PW85_CERTIFY_WITH_BRENT(false, 2);
+template PW85_CERTIFY_WITH_BRENT(true, 3);
+template PW85_CERTIFY_WITH_BRENT(false, 3);
 
 }  // namespace pw85::detail

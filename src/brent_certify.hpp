@@ -33,16 +33,17 @@ struct BrentResult {
 // PW85_LAMBDA_ATOL, at most max_iter times. Returns Status::success, or
 // Status::no_memory should GSL's Brent state outgrow the space reserved
 // for it.
-template <bool Fast>
-Status certify_with_brent(Problem const &p, double lambda, double neg_f,
+template <bool Fast, int D>
+Status certify_with_brent(Problem<D> const &p, double lambda, double neg_f,
                           int max_iter, BrentResult *out) noexcept;
 
-extern template Status certify_with_brent<true>(Problem const &, double,
-                                                double, int,
-                                                BrentResult *) noexcept;
-extern template Status certify_with_brent<false>(Problem const &, double,
-                                                 double, int,
-                                                 BrentResult *) noexcept;
+#define PW85_CERTIFY_WITH_BRENT(Fast, D)                                    \
+  Status certify_with_brent<Fast, D>(Problem<D> const &, double, double, \
+                                     int, BrentResult *) noexcept
+extern template PW85_CERTIFY_WITH_BRENT(true, 2);
+extern template PW85_CERTIFY_WITH_BRENT(false, 2);
+extern template PW85_CERTIFY_WITH_BRENT(true, 3);
+extern template PW85_CERTIFY_WITH_BRENT(false, 3);
 
 }  // namespace pw85::detail
 

@@ -10,49 +10,51 @@
 
 namespace pw85::detail {
 
-bool valid_f_input(double lambda, double const *r, double const *q1,
-                   double const *q2) noexcept {
-  return r != nullptr && q1 != nullptr && q2 != nullptr &&
-         std::isfinite(lambda) && all_finite<dim>(r) && all_finite<sym>(q1) &&
-         all_finite<sym>(q2);
-}
-
 namespace {
 
 // D·Q·D, D = diag(2^−h[i]), and its ldl_decomp() factors (false when a
 // pivot is ≤ 0). Q finite with a positive diagonal.
-bool scaled_ldl(double const q[sym], double scaled[sym], Ldl *f,
-                int h[dim]) noexcept {
-  for (int i = 0; i < dim; ++i) h[i] = exponent(q[diag_of[i]]) / 2;
-  for (int k = 0; k < sym; ++k)
-    scaled[k] = times_pow2(q[k], -(h[row_of[k]] + h[col_of[k]]));
+template <int D>
+bool scaled_ldl(double const *q, double *scaled, Ldl<D> *f, int *h) noexcept {
+  using L = Layout<D>;
+  for (int i = 0; i < D; ++i) h[i] = exponent(q[L::diag[i]]) / 2;
+  for (int k = 0; k < sym_size(D); ++k)
+    scaled[k] = times_pow2(q[k], -(h[L::row[k]] + h[L::col[k]]));
   return ldl_decomp(scaled, f);
 }
 
-bool finite_with_positive_diagonal(double const q[sym]) noexcept {
-  return all_finite<sym>(q) && q[0] > 0.0 && q[3] > 0.0 && q[5] > 0.0;
+template <int D>
+bool finite_with_positive_diagonal(double const *q) noexcept {
+  if (!all_finite<sym_size(D)>(q)) return false;
+  for (int i = 0; i < D; ++i)
+    if (!(q[Layout<D>::diag[i]] > 0.0)) return false;
+  return true;
 }
 
 }  // namespace
 
-bool is_positive_definite(double const q[sym]) noexcept {
-  if (!finite_with_positive_diagonal(q)) return false;
-  Ldl f;
-  int h[dim];
-  double scaled[sym];
-  if (scaled_ldl(q, scaled, &f, h) &&
-      ldl_certifies(scaled, ldl_trace_inverse(f)))
+template <int D>
+bool is_positive_definite(double const *q) noexcept {
+  if (!finite_with_positive_diagonal<D>(q)) return false;
+  Ldl<D> f;
+  int h[D];
+  double scaled[sym_size(D)];
+  if (scaled_ldl<D>(q, scaled, &f, h) &&
+      ldl_certifies<D>(scaled, ldl_trace_inverse(f)))
     return true;
-  return exactly_positive_definite(q);
+  return exactly_positive_definite<D>(q);
 }
+
+template bool is_positive_definite<2>(double const *) noexcept;
+template bool is_positive_definite<3>(double const *) noexcept;
 
 bool cholesky_by_rule(double const q[sym], double l[sym]) noexcept {
   if (!is_positive_definite(q)) return false;
   if (cholesky_decomp(q, l)) return true;
-  Ldl f;
+  Ldl<3> f;
   int h[dim];
   double scaled[sym];
-  if (!scaled_ldl(q, scaled, &f, h)) return false;
+  if (!scaled_ldl<3>(q, scaled, &f, h)) return false;
   // Q = D⁻¹·L̃·diag(d)·L̃ᵀ·D⁻¹, so L = D⁻¹·L̃·diag(√d): column j of L̃
   // times √dⱼ, row i divided by Dᵢ = 2^−hᵢ.
   double root_d[dim];

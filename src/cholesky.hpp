@@ -5,7 +5,7 @@
 #ifndef PW85_SRC_CHOLESKY_HPP
 #define PW85_SRC_CHOLESKY_HPP
 
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 

@@ -10,7 +10,7 @@
 #include "dd.hpp"
 #include "ldl.hpp"
 #include "scaling.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 #include "tolerances.hpp"
 
 namespace pw85::detail {
@@ -19,13 +19,14 @@ namespace pw85::detail {
 // (1 − λ itself is carried as hi + lo; lo is not renormalised). hi is Q(λ)
 // as combine() rounds it, bit for bit (both round (1−λ)·Q1 and λ·Q2, then
 // their sum, once).
-PW85_INLINE void combine_dd(double lambda, double const q1[sym],
-                            double const q2[sym], double hi[sym],
-                            double lo[sym]) noexcept {
+template <int D = dim>
+PW85_INLINE void combine_dd(double lambda, double const *q1, double const *q2,
+                            double *hi, double *lo) noexcept {
   PW85_COUNT_EVALUATION();
   dd const mu = two_sum(1.0, -lambda);
+  constexpr int n = sym_size(D);
   PW85_UNROLL
-  for (int i = 0; i < sym; ++i) {
+  for (int i = 0; i < n; ++i) {
     dd const a = two_prod(mu.hi, q1[i]);
     dd const b = two_prod(lambda, q2[i]);
     dd const t = two_sum(a.hi, b.hi);
@@ -36,17 +37,17 @@ PW85_INLINE void combine_dd(double lambda, double const q1[sym],
 
 // ρ = r − (Qhi + Qlo)·s, computed as in twice the working precision, then
 // rounded (compensated: its error is of order ε·|ρ|, not ε·|Q|·|s|).
-PW85_INLINE void compensated_residual(double const hi[sym],
-                                      double const lo[sym],
-                                      double const r[dim], double const s[dim],
-                                      double rho[dim]) noexcept {
+template <int D = dim>
+PW85_INLINE void compensated_residual(double const *hi, double const *lo,
+                                      double const *r, double const *s,
+                                      double *rho) noexcept {
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) {
+  for (int i = 0; i < D; ++i) {
     Dot2 acc{r[i], 0.0};
     double lo_part = 0.0;
     PW85_UNROLL
-    for (int j = 0; j < dim; ++j) {
-      int const k = sym_index(i, j);
+    for (int j = 0; j < D; ++j) {
+      int const k = sym_index<D>(i, j);
       acc.add_product(-hi[k], s[j]);
       lo_part += lo[k] * s[j];
     }
@@ -58,15 +59,17 @@ PW85_INLINE void compensated_residual(double const hi[sym],
 // sᵀ·A·s for symmetric A, accumulated as in twice the working precision
 // (the sum and its error): no cancellation error however ill-conditioned
 // A is.
-PW85_INLINE Dot2 quad_form_acc(double const a[sym],
-                               double const s[dim]) noexcept {
+template <int D = dim>
+PW85_INLINE Dot2 quad_form_acc(double const *a, double const *s) noexcept {
+  using L = Layout<D>;
   Dot2 acc{0.0, 0.0};
+  constexpr int n = sym_size(D);
   PW85_UNROLL
-  for (int k = 0; k < sym; ++k) {
-    double const factor = row_of[k] == col_of[k] ? 1.0 : 2.0;  // exact
-    dd const p = two_prod(factor * a[k], s[row_of[k]]);
-    acc.add_product(p.hi, s[col_of[k]]);
-    acc.err += p.lo * s[col_of[k]];
+  for (int k = 0; k < n; ++k) {
+    double const factor = L::row[k] == L::col[k] ? 1.0 : 2.0;  // exact
+    dd const p = two_prod(factor * a[k], s[L::row[k]]);
+    acc.add_product(p.hi, s[L::col[k]]);
+    acc.err += p.lo * s[L::col[k]];
   }
   return acc;
 }
@@ -83,10 +86,11 @@ PW85_INLINE double lambda_rho(double lambda, double p1, double p2) noexcept {
 
 // hi + lo = a + b entry by entry, exactly (two_sum); hi and lo may be a
 // or b.
-PW85_INLINE void split_sum(double const a[dim], double const b[dim],
-                           double hi[dim], double lo[dim]) noexcept {
+template <int D = dim>
+PW85_INLINE void split_sum(double const *a, double const *b, double *hi,
+                           double *lo) noexcept {
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) {
+  for (int i = 0; i < D; ++i) {
     dd const t = two_sum(a[i], b[i]);
     hi[i] = t.hi;
     lo[i] = t.lo;
@@ -94,16 +98,17 @@ PW85_INLINE void split_sum(double const a[dim], double const b[dim],
 }
 
 // quad_form_acc() rounded to double.
-PW85_INLINE double quad_form_dd(double const a[sym],
-                                double const s[dim]) noexcept {
-  return quad_form_acc(a, s).value();
+template <int D = dim>
+PW85_INLINE double quad_form_dd(double const *a, double const *s) noexcept {
+  return quad_form_acc<D>(a, s).value();
 }
 
 // x·y as an unevaluated sum hi + lo, as in twice the working precision.
-PW85_INLINE dd dot_dd(double const x[dim], double const y[dim]) noexcept {
+template <int D = dim>
+PW85_INLINE dd dot_dd(double const *x, double const *y) noexcept {
   Dot2 acc{0.0, 0.0};
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) acc.add_product(x[i], y[i]);
+  for (int i = 0; i < D; ++i) acc.add_product(x[i], y[i]);
   return two_sum(acc.sum, acc.err);
 }
 
@@ -130,17 +135,17 @@ struct Compensated {
 // Pᵢ = sᵀQᵢs into out (s_lo: nullptr, or the tail of s = s + s_lo, taken
 // to first order: s rounded alone would leave Pᵢ off by up to
 // ε·√cond(Qᵢ) relative, and λ by as much).
-PW85_INLINE void p_from(double const q1[sym], double const q2[sym],
-                        double const s[dim], double const s_lo[dim],
-                        Compensated *out) noexcept {
-  out->p1 = quad_form_dd(q1, s);
-  out->p2 = quad_form_dd(q2, s);
+template <int D>
+PW85_INLINE void p_from(double const *q1, double const *q2, double const *s,
+                        double const *s_lo, Compensated *out) noexcept {
+  out->p1 = quad_form_dd<D>(q1, s);
+  out->p2 = quad_form_dd<D>(q2, s);
   if (s_lo != nullptr) {
-    double t1[dim], t2[dim];
-    sym_mul(q1, s, t1);
-    sym_mul(q2, s, t2);
-    out->p1 += 2.0 * dot(t1, s_lo);
-    out->p2 += 2.0 * dot(t2, s_lo);
+    double t1[D], t2[D];
+    sym_mul<D>(q1, s, t1);
+    sym_mul<D>(q2, s, t2);
+    out->p1 += 2.0 * dot<D>(t1, s_lo);
+    out->p2 += 2.0 * dot<D>(t2, s_lo);
   }
 }
 
@@ -151,11 +156,14 @@ constexpr double p_floor = 0x1p-900;
 // s and s_lo scaled by the power of two 2^−e that brings |s|∞ to [1/2, 1)
 // (exact, barring the underflow of a tail far below s); returns 2e, the
 // exponent by which Pᵢ = sᵀQᵢs from the scaled s must be multiplied.
-PW85_INLINE int scale_for_p(double s[dim], double s_lo[dim]) noexcept {
-  int const e = exponent(std::fmax(std::fmax(std::fabs(s[0]), std::fabs(s[1])),
-                                   std::fabs(s[2])));
+template <int D>
+PW85_INLINE int scale_for_p(double *s, double *s_lo) noexcept {
+  double m = std::fabs(s[0]);
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) {
+  for (int i = 1; i < D; ++i) m = std::fmax(m, std::fabs(s[i]));
+  int const e = exponent(m);
+  PW85_UNROLL
+  for (int i = 0; i < D; ++i) {
     s[i] = times_pow2(s[i], -e);
     if (s_lo != nullptr) s_lo[i] = times_pow2(s_lo[i], -e);
   }
@@ -172,15 +180,33 @@ PW85_INLINE int scale_for_p(double s[dim], double s_lo[dim]) noexcept {
 // them made pw85_f_neg 20% slower). Returns false when that factorisation
 // fails (a pivot not > 0); *out is then unchanged.
 // r_lo: as for compensated_from().
-bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
-                    double const q2[sym], bool with_p, Compensated *out,
+// Specialised for D = 2 and 3 (each compiled with PW85_FMA_CLONES).
+template <int D>
+bool compensated_dd(double lambda, double const *r, double const *q1,
+                    double const *q2, bool with_p, Compensated *out,
                     double const *r_lo = nullptr) noexcept;
 
 // s = Q(λ)⁻¹·r as s + s_lo, from Q(λ) = hi + lo factorised in
 // double-double: relative error of order κ(Q(λ))·2⁻¹⁰⁴ (the contact
 // geometry, geometry.cpp). Returns false when a pivot is not > 0.
-bool solve_dd(double lambda, double const r[dim], double const q1[sym],
-              double const q2[sym], double s[dim], double s_lo[dim]) noexcept;
+template <int D>
+bool solve_dd(double lambda, double const *r, double const *q1,
+              double const *q2, double *s, double *s_lo) noexcept;
+
+template <>
+bool compensated_dd<2>(double, double const *, double const *,
+                       double const *, bool, Compensated *,
+                       double const *) noexcept;
+template <>
+bool compensated_dd<3>(double, double const *, double const *,
+                       double const *, bool, Compensated *,
+                       double const *) noexcept;
+template <>
+bool solve_dd<2>(double, double const *, double const *, double const *,
+                 double *, double *) noexcept;
+template <>
+bool solve_dd<3>(double, double const *, double const *, double const *,
+                 double *, double *) noexcept;
 
 // The evaluation from Q(λ) as hi + lo and its plain factors and solution.
 // WithP: also P1 and P2. r_lo: nullptr, or the low part of r = r + r_lo
@@ -189,60 +215,61 @@ bool solve_dd(double lambda, double const r[dim], double const q1[sym],
 // residual, ρ = (r + r_lo) − Q(λ)·s, rounded once more (an error of
 // ε·|ρ + r_lo|, of the order of ρ's own rounding), and r·s, as r_lo·s in
 // the low part: r·s + r_lo·s + s·ρ = (r + r_lo)ᵀQ⁻¹(r + r_lo) − eᵀQe.
-template <bool WithP>
-PW85_INLINE void compensated_from(double lambda, double const r[dim],
-                                  double const q1[sym], double const q2[sym],
-                                  double const hi[sym], double const lo[sym],
-                                  LdlSolution const &plain, Compensated *out,
+template <bool WithP, int D>
+PW85_INLINE void compensated_from(double lambda, double const *r,
+                                  double const *q1, double const *q2,
+                                  double const *hi, double const *lo,
+                                  LdlSolution<D> const &plain,
+                                  Compensated *out,
                                   double const *r_lo = nullptr) noexcept {
-  Ldl const &fac = plain.fac;
-  double s[dim], rho[dim], ds[dim] = {0.0, 0.0, 0.0};
+  Ldl<D> const &fac = plain.fac;
+  double s[D], rho[D], ds[D] = {};
   double const cond = ldl_cond_bound(hi, fac);
   if (PW85_UNLIKELY(cond > factor_dd_cond) &&
-      compensated_dd(lambda, r, q1, q2, WithP, out, r_lo))
+      compensated_dd<D>(lambda, r, q1, q2, WithP, out, r_lo))
     return;
   auto residual = [&]() {
-    compensated_residual(hi, lo, r, s, rho);
+    compensated_residual<D>(hi, lo, r, s, rho);
     if (r_lo != nullptr) {
       PW85_UNROLL
-      for (int i = 0; i < dim; ++i) rho[i] += r_lo[i];
+      for (int i = 0; i < D; ++i) rho[i] += r_lo[i];
     }
   };
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) s[i] = plain.s[i];
+  for (int i = 0; i < D; ++i) s[i] = plain.s[i];
   residual();
   bool const refine = cond > refine_cond;
   // The refined s is ds + ds_lo; ds_lo is kept where it may matter, when
   // Q(λ) is ill-conditioned (below p_carry_cond, Pᵢ from ds alone moves λ
   // by less than the tolerances of the tests measure).
   bool const carry = cond > p_carry_cond;
-  double ds_lo[dim];
+  double ds_lo[D];
   if (carry) {
     ldl_solve(fac, rho, ds);
-    split_sum(s, ds, ds, ds_lo);
+    split_sum<D>(s, ds, ds, ds_lo);
   } else if (refine || WithP) {
     ldl_solve(fac, rho, ds);
     PW85_UNROLL
-    for (int i = 0; i < dim; ++i) ds[i] += s[i];
+    for (int i = 0; i < D; ++i) ds[i] += s[i];
   }
   if (refine) {
     PW85_UNROLL
-    for (int i = 0; i < dim; ++i) s[i] = ds[i];
+    for (int i = 0; i < D; ++i) s[i] = ds[i];
     residual();
   }
-  double low = dot(s, rho);
-  if (r_lo != nullptr) low += dot(r_lo, s);
-  dd const rs = dd_add(dot_dd(r, s), low);  // rᵀQ⁻¹r − eᵀQe
+  double low = dot<D>(s, rho);
+  if (r_lo != nullptr) low += dot<D>(r_lo, s);
+  dd const rs = dd_add(dot_dd<D>(r, s), low);  // rᵀQ⁻¹r − eᵀQe
   dd const w = dd_mul(two_sum(1.0, -lambda), lambda);  // λ(1−λ)
   dd const value = dd_mul(w, rs);  // normalised: value.hi = dd_round(value)
   out->f = value.hi;
   out->f_lo = value.lo;
   if (WithP) {
     out->p_exp = 0;
-    p_from(q1, q2, ds, carry ? ds_lo : nullptr, out);
+    p_from<D>(q1, q2, ds, carry ? ds_lo : nullptr, out);
     if (PW85_UNLIKELY(!(out->p1 > p_floor && out->p2 > p_floor))) {
-      out->p_exp = scale_for_p(ds, carry ? ds_lo : nullptr);
-      p_from(q1, q2, ds, carry ? ds_lo : nullptr, out);
+      out->p_exp = scale_for_p<D>(ds, carry ? ds_lo : nullptr);
+      p_from<D>(q1, q2, ds, carry ? ds_lo : nullptr, out);
     }
   }
 }
@@ -255,23 +282,22 @@ PW85_INLINE void compensated_from(double lambda, double const r[dim],
 // (One function for both cases, so that a caller inlines the kernels
 // once: code size counts in the finish's loop.)
 // r_lo: as for compensated_from().
-template <bool WithP>
-PW85_INLINE bool evaluate_compensated(double lambda, double const r[dim],
-                                      double const q1[sym],
-                                      double const q2[sym], bool fast,
-                                      LdlSolution const *plain,
+template <bool WithP, int D = dim>
+PW85_INLINE bool evaluate_compensated(double lambda, double const *r,
+                                      double const *q1, double const *q2,
+                                      bool fast, LdlSolution<D> const *plain,
                                       Compensated *out,
                                       double const *r_lo = nullptr) noexcept {
-  double hi[sym], lo[sym];
-  combine_dd(lambda, q1, q2, hi, lo);
-  LdlSolution fresh;
+  double hi[sym_size(D)], lo[sym_size(D)];
+  combine_dd<D>(lambda, q1, q2, hi, lo);
+  LdlSolution<D> fresh;
   if (plain == nullptr) {
     if (PW85_UNLIKELY(!ldl_decomp_q(hi, &fresh.fac, fast)))
-      return compensated_dd(lambda, r, q1, q2, WithP, out, r_lo);
+      return compensated_dd<D>(lambda, r, q1, q2, WithP, out, r_lo);
     ldl_solve(fresh.fac, r, fresh.s);
     plain = &fresh;
   }
-  compensated_from<WithP>(lambda, r, q1, q2, hi, lo, *plain, out, r_lo);
+  compensated_from<WithP, D>(lambda, r, q1, q2, hi, lo, *plain, out, r_lo);
   return true;
 }
 

@@ -10,67 +10,81 @@ namespace {
 // Q = L·D·Lᵀ in double-double (the algorithm of ldl_decomp()), for Q(λ)
 // too ill-conditioned for a double factorisation: its backward error is of
 // order κ(Q)·2⁻¹⁰⁴ relative instead of κ(Q)·ε.
+// L = [[1, 0, 0], [l10, 1, 0], [l20, l21, 1]] and the pivots
+// d = (d0, d1, d2); in 2D their upper left block (l20, l21 unused).
+template <int D>
 struct LdlDd {
-  dd l10, l20, l21;  // L = [[1, 0, 0], [l10, 1, 0], [l20, l21, 1]]
-  dd d[dim];         // D = diag(d0, d1, d2)
+  dd l10, l20, l21;
+  dd d[D];
 };
 
 // Returns false when a pivot is not > 0.
-PW85_INLINE bool ldl_decomp_dd(dd const a[sym], LdlDd *f) noexcept {
+template <int D>
+PW85_INLINE bool ldl_decomp_dd(dd const *a, LdlDd<D> *f) noexcept {
   f->d[0] = a[0];
   if (!(a[0].hi > 0.0)) return false;
   f->l10 = dd_div(a[1], a[0]);
-  f->l20 = dd_div(a[2], a[0]);
-  f->d[1] = dd_sub(a[3], dd_mul(f->l10, a[1]));
+  if constexpr (D == 3) f->l20 = dd_div(a[2], a[0]);
+  f->d[1] = dd_sub(a[Layout<D>::diag[1]], dd_mul(f->l10, a[1]));
   if (!(f->d[1].hi > 0.0)) return false;
-  dd const e = dd_sub(a[4], dd_mul(f->l10, a[2]));  // L21·d1
-  f->l21 = dd_div(e, f->d[1]);
-  f->d[2] = dd_sub(dd_sub(a[5], dd_mul(f->l20, a[2])), dd_mul(f->l21, e));
-  return f->d[2].hi > 0.0;
+  if constexpr (D == 3) {
+    dd const e = dd_sub(a[4], dd_mul(f->l10, a[2]));  // L21·d1
+    f->l21 = dd_div(e, f->d[1]);
+    f->d[2] = dd_sub(dd_sub(a[5], dd_mul(f->l20, a[2])), dd_mul(f->l21, e));
+    return f->d[2].hi > 0.0;
+  }
+  return true;
 }
 
 // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ (a sum of non-negative terms) and s = Q⁻¹·r as
 // s_hi + s_lo, from z = L⁻¹·r, all in double-double; r + r_lo when r_lo
 // is not nullptr.
-PW85_INLINE dd ldl_solve_quad_dd(LdlDd const &f, double const r[dim],
-                                 double const *r_lo, double s[dim],
-                                 double s_lo[dim]) noexcept {
-  dd const z0{r[0], r_lo != nullptr ? r_lo[0] : 0.0};
-  dd const z1 =
-      dd_sub(dd{r[1], r_lo != nullptr ? r_lo[1] : 0.0}, dd_mul(f.l10, z0));
-  dd const z2 = dd_sub(
-      dd_sub(dd{r[2], r_lo != nullptr ? r_lo[2] : 0.0}, dd_mul(f.l20, z0)),
-      dd_mul(f.l21, z1));
-  dd const y0 = dd_div(z0, f.d[0]);
-  dd const y1 = dd_div(z1, f.d[1]);
-  dd const y2 = dd_div(z2, f.d[2]);
-  dd const x2 = y2;
-  dd const x1 = dd_sub(y1, dd_mul(f.l21, x2));
-  dd const x0 = dd_sub(dd_sub(y0, dd_mul(f.l10, x1)), dd_mul(f.l20, x2));
-  dd const x[dim] = {two_sum(x0.hi, x0.lo), two_sum(x1.hi, x1.lo),
-                     two_sum(x2.hi, x2.lo)};
+template <int D>
+PW85_INLINE dd ldl_solve_quad_dd(LdlDd<D> const &f, double const *r,
+                                 double const *r_lo, double *s,
+                                 double *s_lo) noexcept {
+  dd z[D], y[D], x[D];
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) {
-    s[i] = x[i].hi;
-    s_lo[i] = x[i].lo;
+  for (int i = 0; i < D; ++i) z[i] = dd{r[i], r_lo != nullptr ? r_lo[i] : 0.0};
+  z[1] = dd_sub(z[1], dd_mul(f.l10, z[0]));
+  if constexpr (D == 3)
+    z[2] = dd_sub(dd_sub(z[2], dd_mul(f.l20, z[0])), dd_mul(f.l21, z[1]));
+  PW85_UNROLL
+  for (int i = 0; i < D; ++i) y[i] = dd_div(z[i], f.d[i]);
+  x[D - 1] = y[D - 1];
+  if constexpr (D == 2) {
+    x[0] = dd_sub(y[0], dd_mul(f.l10, x[1]));
+  } else {
+    x[1] = dd_sub(y[1], dd_mul(f.l21, x[2]));
+    x[0] = dd_sub(dd_sub(y[0], dd_mul(f.l10, x[1])), dd_mul(f.l20, x[2]));
   }
-  return dd_add(dd_add(dd_mul(z0, y0), dd_mul(z1, y1)), dd_mul(z2, y2));
+  dd quad = dd_mul(z[0], y[0]);
+  PW85_UNROLL
+  for (int i = 0; i < D; ++i) {
+    dd const t = two_sum(x[i].hi, x[i].lo);
+    s[i] = t.hi;
+    s_lo[i] = t.lo;
+    if (i > 0) quad = dd_add(quad, dd_mul(z[i], y[i]));
+  }
+  return quad;
 }
 
 // Q = hi + lo factorised in double-double; false when a pivot is not > 0.
-PW85_INLINE bool factorise_dd(double const hi[sym], double const lo[sym],
-                              LdlDd *f) noexcept {
-  dd a[sym];
-  for (int k = 0; k < sym; ++k) a[k] = two_sum(hi[k], lo[k]);
+template <int D>
+PW85_INLINE bool factorise_dd(double const *hi, double const *lo,
+                              LdlDd<D> *f) noexcept {
+  dd a[sym_size(D)];
+  for (int k = 0; k < sym_size(D); ++k) a[k] = two_sum(hi[k], lo[k]);
   return ldl_decomp_dd(a, f);
 }
 
 // Q(λ) = hi + lo (combine_dd()) factorised in double-double; false when a
 // pivot is not > 0.
-PW85_INLINE bool factorise_q_dd(double lambda, double const q1[sym],
-                                double const q2[sym], LdlDd *f) noexcept {
-  double hi[sym], lo[sym];
-  combine_dd(lambda, q1, q2, hi, lo);
+template <int D>
+PW85_INLINE bool factorise_q_dd(double lambda, double const *q1,
+                                double const *q2, LdlDd<D> *f) noexcept {
+  double hi[sym_size(D)], lo[sym_size(D)];
+  combine_dd<D>(lambda, q1, q2, hi, lo);
   return factorise_dd(hi, lo, f);
 }
 
@@ -98,20 +112,20 @@ PW85_INLINE dd sum3(double t[], int n) noexcept {
 // error κ(Q)·2⁻¹⁰⁴, an ulp of f at κ near 4e15, enters squared. (Found by
 // fuzz-contact-raw: μ² 0.4996 ulp above a double, cond(Q1) = 3.9e15,
 // rounded the wrong way.)
-PW85_INLINE dd refined_quad(double const hi[sym], double const lo[sym],
-                            double const r[dim], double const *r_lo,
-                            double const s[dim],
-                            double const s_lo[dim]) noexcept {
-  double rho[dim];
+template <int D>
+PW85_INLINE dd refined_quad(double const *hi, double const *lo,
+                            double const *r, double const *r_lo,
+                            double const *s, double const *s_lo) noexcept {
+  double rho[D];
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) {
-    double t[2 + 7 * dim];
+  for (int i = 0; i < D; ++i) {
+    double t[2 + 7 * D];
     int n = 0;
     t[n++] = r[i];
     if (r_lo != nullptr) t[n++] = r_lo[i];
     PW85_UNROLL
-    for (int j = 0; j < dim; ++j) {
-      int const k = sym_index(i, j);
+    for (int j = 0; j < D; ++j) {
+      int const k = sym_index<D>(i, j);
       dd const a = two_prod(hi[k], s[j]);
       dd const b = two_prod(hi[k], s_lo[j]);
       dd const c = two_prod(lo[k], s[j]);
@@ -128,7 +142,7 @@ PW85_INLINE dd refined_quad(double const hi[sym], double const lo[sym],
   Dot2 acc{0.0, 0.0};
   double low = 0.0;
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) {
+  for (int i = 0; i < D; ++i) {
     acc.add_product(r[i], s[i]);
     acc.add_product(r[i], s_lo[i]);
     if (r_lo != nullptr) low += r_lo[i] * (s[i] + s_lo[i]);
@@ -138,44 +152,66 @@ PW85_INLINE dd refined_quad(double const hi[sym], double const lo[sym],
   return two_sum(acc.sum, acc.err);
 }
 
-}  // namespace
-
-PW85_FMA_CLONES
-bool compensated_dd(double lambda, double const r[dim], double const q1[sym],
-                    double const q2[sym], bool with_p, Compensated *out,
-                    double const *r_lo) noexcept {
+template <int D>
+PW85_INLINE bool compensated_dd_steps(double lambda, double const *r,
+                                      double const *q1, double const *q2,
+                                      bool with_p, Compensated *out,
+                                      double const *r_lo) noexcept {
   // f = λ(1−λ)·rᵀQ⁻¹r from the double-double factors, and Pᵢ = sᵀQᵢs from
   // s = s_hi + s_lo: sᵀQs = s_hiᵀQs_hi + 2·(Q·s_hi)·s_lo to second order
   // in s_lo. (From s rounded to double, Pᵢ would be off by up to
   // ε·√cond(Qᵢ) relative, and λ by as much.)
-  double hi[sym], lo[sym];
-  combine_dd(lambda, q1, q2, hi, lo);
-  LdlDd fdd;
+  double hi[sym_size(D)], lo[sym_size(D)];
+  combine_dd<D>(lambda, q1, q2, hi, lo);
+  LdlDd<D> fdd;
   if (!factorise_dd(hi, lo, &fdd)) return false;
-  double s[dim], s_lo[dim];
+  double s[D], s_lo[D];
   ldl_solve_quad_dd(fdd, r, r_lo, s, s_lo);
-  dd const quad = refined_quad(hi, lo, r, r_lo, s, s_lo);
+  dd const quad = refined_quad<D>(hi, lo, r, r_lo, s, s_lo);
   dd const value = dd_mul(dd_mul(two_sum(1.0, -lambda), lambda), quad);
   out->f = value.hi;
   out->f_lo = value.lo;
   if (with_p) {
     out->p_exp = 0;
-    p_from(q1, q2, s, s_lo, out);
+    p_from<D>(q1, q2, s, s_lo, out);
     if (!(out->p1 > p_floor && out->p2 > p_floor)) {
-      out->p_exp = scale_for_p(s, s_lo);
-      p_from(q1, q2, s, s_lo, out);
+      out->p_exp = scale_for_p<D>(s, s_lo);
+      p_from<D>(q1, q2, s, s_lo, out);
     }
   }
   return true;
 }
 
-PW85_FMA_CLONES
-bool solve_dd(double lambda, double const r[dim], double const q1[sym],
-              double const q2[sym], double s[dim], double s_lo[dim]) noexcept {
-  LdlDd fdd;
-  if (!factorise_q_dd(lambda, q1, q2, &fdd)) return false;
+template <int D>
+PW85_INLINE bool solve_dd_steps(double lambda, double const *r,
+                                double const *q1, double const *q2, double *s,
+                                double *s_lo) noexcept {
+  LdlDd<D> fdd;
+  if (!factorise_q_dd<D>(lambda, q1, q2, &fdd)) return false;
   ldl_solve_quad_dd(fdd, r, nullptr, s, s_lo);
   return true;
 }
+
+}  // namespace
+
+// The entry points, one per dimension, each compiled for CPUs with and
+// without FMA (PW85_FMA_CLONES: clang's target_clones takes explicit
+// specialisations, not templates).
+#define PW85_COMPENSATED_DD_ENTRIES(D)                                        \
+  template <>                                                                 \
+  PW85_FMA_CLONES bool compensated_dd<D>(                                     \
+      double lambda, double const *r, double const *q1, double const *q2,     \
+      bool with_p, Compensated *out, double const *r_lo) noexcept {           \
+    return compensated_dd_steps<D>(lambda, r, q1, q2, with_p, out, r_lo);     \
+  }                                                                           \
+  template <>                                                                 \
+  PW85_FMA_CLONES bool solve_dd<D>(double lambda, double const *r,            \
+                                   double const *q1, double const *q2,        \
+                                   double *s, double *s_lo) noexcept {        \
+    return solve_dd_steps<D>(lambda, r, q1, q2, s, s_lo);                     \
+  }
+
+PW85_COMPENSATED_DD_ENTRIES(2)
+PW85_COMPENSATED_DD_ENTRIES(3)
 
 }  // namespace pw85::detail

@@ -18,16 +18,16 @@
 
 namespace pw85::detail {
 
-template <bool Fast>
-Status solve(Problem const &p, double out[2], double const *r_lo) noexcept {
+template <bool Fast, int D>
+Status solve(Problem<D> const &p, double out[2], double const *r_lo) noexcept {
   // 3. Warm start (eq. (5.9)); 4. Newton on ω from there.
   return solve_after_newton<Fast>(
       p, newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter), out, r_lo);
 }
 
-template <bool Fast>
-Status solve_after_newton(Problem const &p, NewtonResult newton, double out[2],
-                          double const *r_lo) noexcept {
+template <bool Fast, int D>
+Status solve_after_newton(Problem<D> const &p, NewtonResult<D> newton,
+                          double out[2], double const *r_lo) noexcept {
   // 5. Brent's method certifies the maximum, about Newton's last point if
   // the estimate lies well inside the bracket there (f at that point is
   // then known), else about the estimate.
@@ -62,7 +62,7 @@ Status solve_after_newton(Problem const &p, NewtonResult newton, double out[2],
   // reuses) when Newton's last step from there was below finish_reuse
   // (relative), else from the estimate.
   double const c = newton.last.lambda;
-  FinishStart start{newton.lambda, newton.last.domega, nullptr, r_lo};
+  FinishStart<D> start{newton.lambda, newton.last.domega, nullptr, r_lo};
   if (newton.last_within(finish_reuse * std::min(c, 1.0 - c))) {
     start.lambda = c;
     start.plain = &newton.last.sol;
@@ -80,7 +80,8 @@ Status solve_after_newton(Problem const &p, NewtonResult newton, double out[2],
   // stands: f is flat there).
   double const near = std::min(finished.lambda, 1.0 - finished.lambda);
   double const h = near * finished.slope;
-  double const cond = std::max(trace(p.q1) * p.tinv1, trace(p.q2) * p.tinv2);
+  double const cond =
+      std::max(trace<D>(p.q1) * p.tinv1, trace<D>(p.q2) * p.tinv2);
   if (PW85_UNLIKELY(!(h >= flat_slope && h * h >= flat_cond_slope2 * cond)) &&
       r_lo == nullptr)
     finished.lambda = polish<Fast>(p, finished.lambda);
@@ -89,22 +90,26 @@ Status solve_after_newton(Problem const &p, NewtonResult newton, double out[2],
   return Status::success;
 }
 
-template Status solve<true>(Problem const &, double[2], double const *) noexcept;
-template Status solve<false>(Problem const &, double[2], double const *) noexcept;
-template Status solve_after_newton<true>(Problem const &, NewtonResult,
-                                         double[2], double const *) noexcept;
-template Status solve_after_newton<false>(Problem const &, NewtonResult,
-                                          double[2], double const *) noexcept;
+#define PW85_SOLVE_INSTANCES(Fast, D)                                       \
+  template Status solve<Fast, D>(Problem<D> const &, double[2],             \
+                                 double const *) noexcept;                  \
+  template Status solve_after_newton<Fast, D>(                              \
+      Problem<D> const &, NewtonResult<D>, double[2], double const *) noexcept;
+PW85_SOLVE_INSTANCES(true, 2)
+PW85_SOLVE_INSTANCES(false, 2)
+PW85_SOLVE_INSTANCES(true, 3)
+PW85_SOLVE_INSTANCES(false, 3)
 
 namespace {
 
 // Inline, so that contact_function() keeps the problem in its own frame.
 // r_lo: nullptr, or the low part of r (contact_function_dd()).
-PW85_INLINE Status search(double const r[dim], double const q1[sym],
-                          double const q2[sym], Contact *c,
+template <int D>
+PW85_INLINE Status search(double const *r, double const *q1, double const *q2,
+                          Contact<D> *c,
                           double const *r_lo = nullptr) noexcept {
   // 2. Rescaling, and the factorisations of Q1 and Q2.
-  Problem &p = c->p;
+  Problem<D> &p = c->p;
   Status status = prepare(r, q1, q2, &p);
   if (status != Status::success) return status;
   if (p.r_is_zero) {  // coincident centres: f ≡ 0, λ is arbitrary
@@ -116,14 +121,14 @@ PW85_INLINE Status search(double const r[dim], double const q1[sym],
   orient(&p);
   // r_lo scaled as r (exact but for underflow, an error below 2⁻¹⁰⁷⁴ of
   // the scaled |r| ≥ ½); orient() leaves r as it is.
-  double lo[dim];
+  double lo[D];
   if (r_lo != nullptr)
-    for (int k = 0; k < dim; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
+    for (int k = 0; k < D; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
   double const *const scaled_lo = r_lo != nullptr ? lo : nullptr;
   // 3.–7.
   double res[2];
-  status = p.moderate ? solve<true>(p, res, scaled_lo)
-                      : solve<false>(p, res, scaled_lo);
+  status = p.moderate ? solve<true, D>(p, res, scaled_lo)
+                      : solve<false, D>(p, res, scaled_lo);
   if (status != Status::success) return status;
   // Far beyond the domain (forms singular in double, cond(Qᵢ) ≳ 1e300) the
   // search's f may be NaN: the forms cannot be worked with in double.
@@ -136,17 +141,20 @@ PW85_INLINE Status search(double const r[dim], double const q1[sym],
 
 }  // namespace
 
-double floored_mu2(Problem const &p, double mu2) noexcept {
+template <int D>
+double floored_mu2(Problem<D> const &p, double mu2) noexcept {
   // 8. Floor: beyond the documented domain (cond(Qᵢ) far above 1/ε) the
   // computed f can be meaningless; μ² never falls below the rigorous sphere
   // bound (sphere_lower_bound_x256()) ≤ |r|²/(tr Q1 + tr Q2), which is
   // computed only when μ² is below the latter. Both scaled by 2^8, so that
   // neither overflows.
   int shift = p.shift;
+  // (tr Q1 + tr Q2)·2^−8, summed term by term from Q1's first entry.
   constexpr double s = 0x1p-8;
-  double const tr_s = s * p.q1[0] + s * p.q1[3] + s * p.q1[5] + s * p.q2[0] +
-                      s * p.q2[3] + s * p.q2[5];
-  if (!(mu2 * tr_s >= s * dot(p.r, p.r))) {
+  double tr_s = scaled_trace<D>(p.q1);
+  PW85_UNROLL
+  for (int i = 0; i < D; ++i) tr_s += s * p.q2[Layout<D>::diag[i]];
+  if (!(mu2 * tr_s >= s * dot<D>(p.r, p.r))) {
     double const floor_x256 = sphere_lower_bound_x256(p);
     if (!(mu2 * 256.0 >= floor_x256)) {  // also when mu2 is NaN
       mu2 = floor_x256;
@@ -157,14 +165,16 @@ double floored_mu2(Problem const &p, double mu2) noexcept {
   return times_pow2(mu2, shift);
 }
 
-Status contact_search(double const r[dim], double const q1[sym],
-                      double const q2[sym], Contact *c) noexcept {
+template <int D>
+Status contact_search(double const *r, double const *q1, double const *q2,
+                      Contact<D> *c) noexcept {
   return search(r, q1, q2, c);
 }
 
 namespace {
 
-PW85_INLINE Status contact_out(Status status, Contact const &c,
+template <int D>
+PW85_INLINE Status contact_out(Status status, Contact<D> const &c,
                                double out[2]) noexcept {
   if (status != Status::success) return status;
   out[1] = c.p.swapped ? 1.0 - c.lambda : c.lambda;
@@ -178,19 +188,33 @@ PW85_INLINE Status contact_out(Status status, Contact const &c,
 
 }  // namespace
 
-Status contact_function(double const r[dim], double const q1[sym],
-                        double const q2[sym], double out[2]) noexcept {
-  Contact c;
+template <int D>
+Status contact_function(double const *r, double const *q1, double const *q2,
+                        double out[2]) noexcept {
+  Contact<D> c;
   Status const status = search(r, q1, q2, &c);
   return contact_out(status, c, out);
 }
 
-Status contact_function_dd(double const r[dim], double const r_lo[dim],
-                           double const q1[sym], double const q2[sym],
+template <int D>
+Status contact_function_dd(double const *r, double const *r_lo,
+                           double const *q1, double const *q2,
                            double out[2]) noexcept {
-  Contact c;
+  Contact<D> c;
   Status const status = search(r, q1, q2, &c, r_lo);
   return contact_out(status, c, out);
 }
+
+#define PW85_CONTACT_INSTANCES(D)                                           \
+  template double floored_mu2<D>(Problem<D> const &, double) noexcept;      \
+  template Status contact_search<D>(double const *, double const *,         \
+                                    double const *, Contact<D> *) noexcept; \
+  template Status contact_function<D>(double const *, double const *,       \
+                                      double const *, double[2]) noexcept;  \
+  template Status contact_function_dd<D>(double const *, double const *,    \
+                                         double const *, double const *,    \
+                                         double[2]) noexcept;
+PW85_CONTACT_INSTANCES(2)
+PW85_CONTACT_INSTANCES(3)
 
 }  // namespace pw85::detail

@@ -133,20 +133,28 @@ int sign_of_sum(Term const *terms, int n) noexcept {
 
 }  // namespace
 
-bool exactly_positive_definite(double const q[sym]) noexcept {
-  if (!all_finite<sym>(q)) return false;
+template <int D>
+bool exactly_positive_definite(double const *q) noexcept {
+  if (!all_finite<sym_size(D)>(q)) return false;
   // Sylvester's criterion: Q is positive definite if and only if its
   // leading principal minors are positive.
   if (!(q[0] > 0.0)) return false;
-  Term const minor2[2] = {product(0, false, q[0], q[3], 1.0),
+  Term const minor2[2] = {product(0, false, q[0], q[Layout<D>::diag[1]], 1.0),
                           product(0, true, q[1], q[1], 1.0)};
   if (sign_of_sum(minor2, 2) <= 0) return false;
-  // det Q = Q00·Q11·Q22 + 2·Q01·Q12·Q02 − Q00·Q12² − Q11·Q02² − Q22·Q01².
-  Term const det[5] = {
-      product(0, false, q[0], q[3], q[5]), product(1, false, q[1], q[4], q[2]),
-      product(0, true, q[0], q[4], q[4]), product(0, true, q[3], q[2], q[2]),
-      product(0, true, q[5], q[1], q[1])};
-  return sign_of_sum(det, 5) > 0;
+  if constexpr (D == 3) {
+    // det Q = Q00·Q11·Q22 + 2·Q01·Q12·Q02 − Q00·Q12² − Q11·Q02² − Q22·Q01².
+    Term const det[5] = {
+        product(0, false, q[0], q[3], q[5]),
+        product(1, false, q[1], q[4], q[2]),
+        product(0, true, q[0], q[4], q[4]), product(0, true, q[3], q[2], q[2]),
+        product(0, true, q[5], q[1], q[1])};
+    return sign_of_sum(det, 5) > 0;
+  }
+  return true;  // in 2D, the two leading minors are all
 }
+
+template bool exactly_positive_definite<2>(double const *) noexcept;
+template bool exactly_positive_definite<3>(double const *) noexcept;
 
 }  // namespace pw85::detail

@@ -7,17 +7,19 @@
 
 #include "checks.hpp"
 #include "dd.hpp"
+#include "scaling.hpp"
 #include "spheroid.hpp"
 
 namespace pw85::detail {
 
 namespace {
 
-// aₘ² exactly, as double-doubles; false when one is not > 0 (invalid) or
-// leaves the normal range (*range).
-bool squares(double const a[dim], dd a2[dim], bool *range) noexcept {
+// aₘ² exactly, as double-doubles (D of them); false when one is not > 0
+// (invalid) or leaves the normal range (*range).
+template <int D>
+bool squares(double const *a, dd *a2, bool *range) noexcept {
   *range = true;
-  for (int m = 0; m < dim; ++m) {
+  for (int m = 0; m < D; ++m) {
     if (!(a[m] > 0.0)) return false;
     a2[m] = two_prod(a[m], a[m]);
     if (!(a2[m].hi >= DBL_MIN && a2[m].hi <= DBL_MAX)) *range = false;
@@ -28,12 +30,14 @@ bool squares(double const a[dim], dd a2[dim], bool *range) noexcept {
 // q[k] = Σₘ R_im·R_jm·aₘ² for entry k = (i, j), in double-double, rounded
 // once. Each product and sum errs by at most a few 2⁻¹⁰⁶ of the magnitudes
 // involved: less than 2⁻¹⁰⁰·Σₘ |R_im·R_jm|·aₘ² in all (pw85.h).
-void form(dd const r[dim * dim], dd const a2[dim], double q[sym]) noexcept {
-  for (int k = 0; k < sym; ++k) {
-    int const i = row_of[k], j = col_of[k];
+// R is D × D, row by row.
+template <int D>
+void form(dd const *r, dd const *a2, double *q) noexcept {
+  for (int k = 0; k < sym_size(D); ++k) {
+    int const i = Layout<D>::row[k], j = Layout<D>::col[k];
     dd acc{0.0, 0.0};
-    for (int m = 0; m < dim; ++m)
-      acc = dd_add(acc, dd_mul(dd_mul(r[dim * i + m], r[dim * j + m]), a2[m]));
+    for (int m = 0; m < D; ++m)
+      acc = dd_add(acc, dd_mul(dd_mul(r[D * i + m], r[D * j + m]), a2[m]));
     q[k] = acc.hi;  // dd_add normalises: hi is hi + lo rounded
   }
 }
@@ -46,7 +50,7 @@ Status ellipsoid_rotation(double const a[dim], double const rot[dim * dim],
     return Status::not_finite;
   dd a2[dim];
   bool in_range = true;
-  if (!squares(a, a2, &in_range)) return Status::invalid_argument;
+  if (!squares<dim>(a, a2, &in_range)) return Status::invalid_argument;
   // RᵀR = I to PW85_UNIT_TOL, entry by entry (plain double suffices: the
   // tolerance is far above its rounding).
   for (int i = 0; i < dim; ++i)
@@ -59,7 +63,7 @@ Status ellipsoid_rotation(double const a[dim], double const rot[dim * dim],
   if (!in_range) return Status::out_of_range;
   dd r[dim * dim];
   for (int k = 0; k < dim * dim; ++k) r[k] = dd{rot[k], 0.0};
-  form(r, a2, q);
+  form<dim>(r, a2, q);
   return Status::success;
 }
 
@@ -68,7 +72,7 @@ Status ellipsoid_quaternion(double const a[dim], double const p[4],
   if (!(all_finite<dim>(a) && all_finite<4>(p))) return Status::not_finite;
   dd a2[dim];
   bool in_range = true;
-  if (!squares(a, a2, &in_range)) return Status::invalid_argument;
+  if (!squares<dim>(a, a2, &in_range)) return Status::invalid_argument;
   // n = ‖p‖² and the products pₖ·pₗ, exactly (two_prod), barring underflow.
   dd pp[4][4];
   for (int k = 0; k < 4; ++k)
@@ -91,7 +95,63 @@ Status ellipsoid_quaternion(double const a[dim], double const p[4],
   r[6] = dd_mul(c, dd_sub(pp[x][z], pp[w][y]));  // R20
   r[5] = dd_mul(c, dd_sub(pp[y][z], pp[w][x]));  // R12
   r[7] = dd_mul(c, dd_add(pp[y][z], pp[w][x]));  // R21
-  form(r, a2, q);
+  form<dim>(r, a2, q);
+  return Status::success;
+}
+
+Status ellipse_angle(double const a[2], double theta, double q[3]) noexcept {
+  if (!(all_finite<2>(a) && std::isfinite(theta))) return Status::not_finite;
+  dd a2[2];
+  bool in_range = true;
+  if (!squares<2>(a, a2, &in_range)) return Status::invalid_argument;
+  if (!in_range) return Status::out_of_range;
+  double const c = std::cos(theta), s = std::sin(theta);
+  dd const r[4] = {{c, 0.0}, {-s, 0.0}, {s, 0.0}, {c, 0.0}};
+  form<2>(r, a2, q);
+  return Status::success;
+}
+
+Status ellipse_principal_axes(double const q[3], double a[2],
+                              double *theta) noexcept {
+  if (!all_finite<3>(q)) return Status::not_finite;
+  if (!is_positive_definite<2>(q)) return Status::not_positive_definite;
+  // Q·2^−2e (exact but for entries far below the largest, which underflow
+  // only where Q is singular to double anyway): 2·Q01 and Q00 − Q11 do not
+  // overflow, and aⱼ = √(aⱼ² of the scaled Q)·2^e exactly.
+  int const e = exponent(std::fmax(q[0], q[2])) / 2;
+  double const s[3] = {times_pow2(q[0], -2 * e), times_pow2(q[1], -2 * e),
+                       times_pow2(q[2], -2 * e)};
+  // The eigenvector of the larger eigenvalue of [[s0, s1], [s1, s2]] is at
+  // angle ½·atan2(2·s1, s0 − s2) (the double-angle form of tan 2θ =
+  // 2·s1/(s0 − s2)), in [−π/2, π/2]; −π/2 is the same axis as π/2.
+  double t = 0.5 * std::atan2(2.0 * s[1], s[0] - s[2]);
+  if (t <= -0.5 * M_PI) t = 0.5 * M_PI;
+  double const c = std::cos(t), n = std::sin(t);
+  // The Rayleigh quotients vᵀSv/vᵀv of v = (c, n) and w = (−n, c), in
+  // double-double (S stored: vᵀSv = s0·v0² + 2·s1·v0·v1 + s2·v1²).
+  double const dirs[2][2] = {{c, n}, {-n, c}};
+  double axes[2];
+  for (int j = 0; j < 2; ++j) {
+    dd const x = two_prod(dirs[j][0], dirs[j][0]);
+    dd const xy = two_prod(dirs[j][0], dirs[j][1]);
+    dd const y = two_prod(dirs[j][1], dirs[j][1]);
+    dd const num = dd_add(dd_add(dd_mul(x, s[0]), dd_mul(xy, 2.0 * s[1])),
+                          dd_mul(y, s[2]));
+    dd const quotient = dd_div(num, dd_add(x, y));
+    if (!(quotient.hi > 0.0)) return Status::out_of_range;
+    axes[j] = times_pow2(dd_round(dd_sqrt(quotient)), e);
+  }
+  // (atan2's choice makes axes[0] the larger, but for rounding where the
+  // two are equal to the last bits.)
+  if (axes[1] > axes[0]) {
+    double const tmp = axes[0];
+    axes[0] = axes[1];
+    axes[1] = tmp;
+    t = t > 0.0 ? t - 0.5 * M_PI : t + 0.5 * M_PI;
+  }
+  a[0] = axes[0];
+  a[1] = axes[1];
+  *theta = t;
   return Status::success;
 }
 

@@ -5,7 +5,7 @@
 #define PW85_SRC_ELLIPSOID_HPP
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
@@ -35,6 +35,18 @@ Status principal_axes(double const q[sym], double a[dim],
 // a and p are written on success only.
 Status principal_axes_quaternion(double const q[sym], double a[dim],
                                  double p[4]) noexcept;
+
+// pw85_2d_ellipse(): Q = R(θ)·diag(a²)·R(θ)ᵀ in double-double, rounded
+// once, R(θ) from cos θ and sin θ in double. Pointers valid. Statuses as
+// ellipsoid_rotation(); q is written on success only.
+Status ellipse_angle(double const a[2], double theta, double q[3]) noexcept;
+
+// pw85_2d_principal_axes(): θ in closed form, the semi-axes from
+// Rayleigh quotients in double-double. Pointers valid. Returns
+// Status::success, not_finite, not_positive_definite or out_of_range; a
+// and theta are written on success only.
+Status ellipse_principal_axes(double const q[3], double a[2],
+                              double *theta) noexcept;
 
 // pw85_spheroid_checked(): the preconditions of pw85_spheroid() checked
 // (finite, a > 0, c > 0, |‖n‖² − 1| ≤ unit_tol, a² and c² normal), then

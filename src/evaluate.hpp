@@ -14,7 +14,7 @@
 #include "compiler.hpp"
 #include "ldl.hpp"
 #include "problem.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
@@ -22,12 +22,12 @@ namespace pw85::detail {
 // rᵀ·Q⁻¹·r = Σ zᵢ²/dᵢ with z = L⁻¹·r, one triangular solve instead of the
 // two of ch. 4, eq. (4), no square root, and no cancellation. Returns false
 // when Q(λ) does not factorise. fast: see ldl_decomp_q().
-PW85_INLINE bool f_plain(double lambda, double const r[dim],
-                         double const q1[sym], double const q2[sym],
-                         bool fast, double *value) noexcept {
-  double q[sym];
-  combine(lambda, q1, q2, q);
-  Ldl fac;
+template <int D>
+PW85_INLINE bool f_plain(double lambda, double const *r, double const *q1,
+                         double const *q2, bool fast, double *value) noexcept {
+  double q[sym_size(D)];
+  combine<D>(lambda, q1, q2, q);
+  Ldl<D> fac;
   if (!ldl_decomp_q(q, &fac, fast)) return false;
   *value = lambda * (1.0 - lambda) * ldl_quad_inverse(fac, r);
   return true;
@@ -37,10 +37,11 @@ PW85_INLINE bool f_plain(double lambda, double const r[dim],
 // rounding) or f is not finite: 0 is f at the ends of [0, 1], which a
 // maximisation never prefers. The objective of Brent's method, which
 // needs a finite value everywhere.
-template <bool Fast>
-PW85_INLINE double neg_f_or_zero(double lambda, Problem const &p) noexcept {
+template <bool Fast, int D>
+PW85_INLINE double neg_f_or_zero(double lambda, Problem<D> const &p) noexcept {
   double value = 0.0;
-  if (!f_plain(lambda, p.r, p.q1, p.q2, Fast, &value) || !std::isfinite(value))
+  if (!f_plain<D>(lambda, p.r, p.q1, p.q2, Fast, &value) ||
+      !std::isfinite(value))
     return 0.0;
   return -value;
 }
@@ -50,12 +51,13 @@ PW85_INLINE double neg_f_or_zero(double lambda, Problem const &p) noexcept {
 // ω(λ) = λ·ρ − (1 − λ) with ρ = √(P2/P1) (eq. (5.6)): ω = (μ2 − μ1)/√P1
 // has the sign of g = μ2² − μ1² (ch. 5, eq. (4)) but is linear for two
 // spheres and nearly so otherwise, where g varies sharply near λ = 0 or 1.
+template <int D = dim>
 struct PlainPoint {
   double lambda;
   double trace_q;       // tr(Q(λ))
-  LdlSolution sol;      // the factors of Q(λ) and s
-  double q1s[dim];      // Q1·s
-  double q2s[dim];      // Q2·s
+  LdlSolution<D> sol;   // the factors of Q(λ) and s
+  double q1s[D];        // Q1·s
+  double q2s[D];        // Q2·s
   double p1, p2;        // Pᵢ = sᵀ·Qᵢ·s
   double root_p1;       // √P1
   double root_p2;       // √P2
@@ -66,20 +68,20 @@ struct PlainPoint {
 
 // Returns false when Q(λ) does not factorise, P1 or P2 is not > 0, or f or
 // ω is not finite.
-template <bool Fast>
-PW85_INLINE bool evaluate_plain(double lambda, Problem const &p,
-                                PlainPoint *pt) noexcept {
-  double q[sym];
-  combine(lambda, p.q1, p.q2, q);
+template <bool Fast, int D>
+PW85_INLINE bool evaluate_plain(double lambda, Problem<D> const &p,
+                                PlainPoint<D> *pt) noexcept {
+  double q[sym_size(D)];
+  combine<D>(lambda, p.q1, p.q2, q);
   pt->lambda = lambda;
-  pt->trace_q = trace(q);
-  Ldl &fac = pt->sol.fac;
+  pt->trace_q = trace<D>(q);
+  Ldl<D> &fac = pt->sol.fac;
   if (!ldl_decomp_q(q, &fac, Fast)) return false;
   double const quad = ldl_solve_quad(fac, p.r, pt->sol.s);
-  sym_mul(p.q1, pt->sol.s, pt->q1s);
-  sym_mul(p.q2, pt->sol.s, pt->q2s);
-  pt->p1 = dot(pt->sol.s, pt->q1s);
-  pt->p2 = dot(pt->sol.s, pt->q2s);
+  sym_mul<D>(p.q1, pt->sol.s, pt->q1s);
+  sym_mul<D>(p.q2, pt->sol.s, pt->q2s);
+  pt->p1 = dot<D>(pt->sol.s, pt->q1s);
+  pt->p2 = dot<D>(pt->sol.s, pt->q2s);
   if (!(pt->p1 > 0.0 && pt->p2 > 0.0)) return false;
   double const mu = 1.0 - lambda;
   pt->root_p1 = std::sqrt(pt->p1);
@@ -99,20 +101,21 @@ struct NewtonStep {
 // Returns false when the step is not finite. With v = Q⁻¹·(Q2 − Q1)·s,
 // s′ = −v (ch. 4, eq. (5)), so Pᵢ′ = −2·sᵀ·Qᵢ·v and
 // ρ′ = (ρ/2)·(P2′/P2 − P1′/P1) (eq. (5.7)).
-PW85_INLINE bool newton_step(PlainPoint const &pt, NewtonStep *step) noexcept {
-  Ldl const &fac = pt.sol.fac;
+template <int D>
+PW85_INLINE bool newton_step(PlainPoint<D> const &pt, NewtonStep *step) noexcept {
+  Ldl<D> const &fac = pt.sol.fac;
   double const lambda = pt.lambda;
   double const p1 = pt.p1, p2 = pt.p2;
   // aᵢ = sᵀQᵢv = zᵢᵀ·D⁻¹·(z2 − z1) with zᵢ = L⁻¹Qᵢs, since
   // v = L⁻ᵀD⁻¹L⁻¹(Q2 − Q1)s: two forward substitutions side by side
   // instead of a forward and a backward one in a row.
-  double z1[dim], z2[dim], y[dim];
+  double z1[D], z2[D], y[D];
   ldl_forward(fac, pt.q1s, z1);
   ldl_forward(fac, pt.q2s, z2);
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) y[i] = (z2[i] - z1[i]) * fac.inv_d[i];
-  double const a1 = dot(z1, y);
-  double const a2 = dot(z2, y);
+  for (int i = 0; i < D; ++i) y[i] = (z2[i] - z1[i]) * fac.inv_d[i];
+  double const a1 = dot<D>(z1, y);
+  double const a2 = dot<D>(z2, y);
   // ρ′/ρ = sᵀQ1v/P1 − sᵀQ2v/P2. The step λ − ω/ω′ is computed as
   // (1 + λ²ρ′)/ω′ (eq. (5.8)), which does not cancel when the root is far
   // smaller than λ (ρ ≫ 1: a thin disc), and with both terms multiplied by
@@ -143,7 +146,8 @@ struct PlainBounds {
 };
 
 // μ1² and μ2² of *b.
-PW85_INLINE void plain_mu_sq(PlainPoint const &pt, PlainBounds *b) noexcept {
+template <int D>
+PW85_INLINE void plain_mu_sq(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   double const lambda = pt.lambda, mu = 1.0 - lambda;
   b->mu1_sq = mu * mu * pt.p1;
   b->mu2_sq = lambda * lambda * pt.p2;
@@ -151,13 +155,15 @@ PW85_INLINE void plain_mu_sq(PlainPoint const &pt, PlainBounds *b) noexcept {
 
 // κ̄ of *b (its margins' only cost, a trace of Q⁻¹ from the factors);
 // returns false when it is not finite.
-PW85_INLINE bool plain_cond(PlainPoint const &pt, PlainBounds *b) noexcept {
+template <int D>
+PW85_INLINE bool plain_cond(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   b->cond = pt.trace_q * ldl_trace_inverse(pt.sol.fac);
   return std::isfinite(b->cond);
 }
 
 // All of *b; returns false when κ̄ is not finite.
-PW85_INLINE bool plain_bounds(PlainPoint const &pt, PlainBounds *b) noexcept {
+template <int D>
+PW85_INLINE bool plain_bounds(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   plain_mu_sq(pt, b);
   return plain_cond(pt, b);
 }

@@ -10,16 +10,34 @@
 
 namespace pw85::detail {
 
-PW85_FMA_CLONES
-bool f_compensated(double lambda, double const r[dim], double const q1[sym],
-                   double const q2[sym], double *value) noexcept {
+namespace {
+
+template <int D>
+PW85_INLINE bool f_value(double lambda, double const *r, double const *q1,
+                         double const *q2, double *value) noexcept {
   Compensated a;
-  if (!evaluate_compensated<false>(lambda, r, q1, q2, false, nullptr, &a))
+  if (!evaluate_compensated<false, D>(lambda, r, q1, q2, false, nullptr, &a))
     return false;
   // f ≥ 0 on [0, 1], where Q(λ) is positive definite; a negative value is
   // rounding error (cond(Q(λ)) beyond ~1e14), and 0 is nearer the truth.
   *value = lambda >= 0.0 && lambda <= 1.0 && a.f < 0.0 ? 0.0 : a.f;
   return true;
+}
+
+}  // namespace
+
+template <>
+PW85_FMA_CLONES bool f_compensated<2>(double lambda, double const *r,
+                                      double const *q1, double const *q2,
+                                      double *value) noexcept {
+  return f_value<2>(lambda, r, q1, q2, value);
+}
+
+template <>
+PW85_FMA_CLONES bool f_compensated<3>(double lambda, double const *r,
+                                      double const *q1, double const *q2,
+                                      double *value) noexcept {
+  return f_value<3>(lambda, r, q1, q2, value);
 }
 
 void residual(double lambda, double const r[dim], double const q1[sym],

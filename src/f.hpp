@@ -4,7 +4,7 @@
 #ifndef PW85_SRC_F_HPP
 #define PW85_SRC_F_HPP
 
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
@@ -12,8 +12,17 @@ namespace pw85::detail {
 // (compensated.hpp): accurate to about one ulp while cond(Q(λ)) is below
 // ~1e10; never below 0 for λ in [0, 1]. Returns false when Q(λ) is not
 // positive definite to the resolution of its factorisation.
-bool f_compensated(double lambda, double const r[dim], double const q1[sym],
-                   double const q2[sym], double *f) noexcept;
+// Specialised for D = 2 and 3 (f.cpp).
+template <int D = dim>
+bool f_compensated(double lambda, double const *r, double const *q1,
+                   double const *q2, double *f) noexcept;
+
+template <>
+bool f_compensated<2>(double, double const *, double const *, double const *,
+                      double *) noexcept;
+template <>
+bool f_compensated<3>(double, double const *, double const *, double const *,
+                      double *) noexcept;
 
 // out = {f(λ), g(λ), g′(λ)} with g = μ2² − μ1² (docs/optimisation.rst, eqs. (5.4)–(5.5)),
 // f compensated, g and g′ in plain double from the Cholesky factors.

@@ -10,6 +10,7 @@
 #include "batch.hpp"
 #include "pw85.h"
 #include "status.hpp"
+#include "sym.hpp"
 
 namespace pw85::facade {
 
@@ -88,6 +89,54 @@ int run_items(std::size_t n, bool pointers_ok, bool strides_ok, int *status,
   return pw85::detail::run_batch(n, pw85::detail::batch_threads(threads, n),
                                  run_range<Item>, &batch)
       .code;
+}
+
+// The inputs of a batch of pairs: base pointers and strides in doubles.
+struct Pairs {
+  double const *r12, *q1, *q2;
+  std::size_t r12_stride, q1_stride, q2_stride;
+  double const *r(std::size_t i) const noexcept { return r12 + i * r12_stride; }
+  double const *a(std::size_t i) const noexcept { return q1 + i * q1_stride; }
+  double const *b(std::size_t i) const noexcept { return q2 + i * q2_stride; }
+};
+
+// A batch of pairs in D dimensions (vectors of D doubles, forms of
+// sym_size(D)), shared by pw85.cpp and pw85_2d.cpp. outputs_ok: no output
+// pointer is NULL.
+template <int D, class Pair>
+int run_pairs(std::size_t n, Pairs const &in, bool outputs_ok, int *status,
+              int threads, Pair pair) noexcept {
+  constexpr std::size_t sym = pw85::detail::sym_size(D);
+  return run_items(
+      n, in.r12 != nullptr && in.q1 != nullptr && in.q2 != nullptr && outputs_ok,
+      valid_stride(in.r12_stride, D) && valid_stride(in.q1_stride, sym) &&
+          valid_stride(in.q2_stride, sym),
+      status, threads, pair);
+}
+
+// A batch of pairs in D dimensions whose pair i writes `out + size·i`
+// (outputs of type T) by one(r12, q1, q2, out_i), a single-pair function
+// that returns a PW85_* status.
+template <int D, class T, class One>
+int pairs_batch(std::size_t n, Pairs const &in, T *out, std::size_t size,
+                int *status, int threads, One one) noexcept {
+  return run_pairs<D>(n, in, out != nullptr, status, threads,
+                      [in, out, size, one](std::size_t i) noexcept {
+                        return one(in.r(i), in.a(i), in.b(i), out + size * i);
+                      });
+}
+
+// The same with two outputs, `out + size·i` and `out2 + size2·i`.
+template <int D, class One>
+int pairs_batch2(std::size_t n, Pairs const &in, double *out,
+                 std::size_t size, double *out2, std::size_t size2,
+                 int *status, int threads, One one) noexcept {
+  return run_pairs<D>(
+      n, in, out != nullptr && out2 != nullptr, status, threads,
+      [in, out, size, out2, size2, one](std::size_t i) noexcept {
+        return one(in.r(i), in.a(i), in.b(i), out + size * i,
+                   out2 + size2 * i);
+      });
 }
 
 }  // namespace pw85::facade

@@ -52,11 +52,9 @@ struct Best {
   }
 };
 
-}  // namespace
-
-PW85_FMA_CLONES
-bool finish(Problem const &p, FinishStart const &start,
-            Finished *out) noexcept {
+template <int D>
+PW85_INLINE bool finish_steps(Problem<D> const &p, FinishStart<D> const &start,
+                              Finished *out) noexcept {
   double lambda = start.lambda;
   // The slope of the next step, and whether it is local: the start's plain
   // ω′ (at or next to the start) is; a secant is where its two points lie
@@ -77,7 +75,7 @@ bool finish(Problem const &p, FinishStart const &start,
   double least = start.domega;
   // The plain factors and solution at the current λ, where known: those
   // of the start, if given, until λ moves.
-  LdlSolution const *plain = start.plain;
+  LdlSolution<D> const *plain = start.plain;
   Best best;
   double prev_lambda = 0.0, prev_omega = 0.0;
   // The root of the compensated ω lies in (lo, hi): narrowed by the sign of
@@ -94,8 +92,8 @@ bool finish(Problem const &p, FinishStart const &start,
   int fall = 10;  // the exponent of the next fallback step towards an end
   for (int evaluations = 1; evaluations <= finish_iter; ++evaluations) {
     Compensated a;
-    if (!evaluate_compensated<true>(lambda, p.r, p.q1, p.q2, p.moderate,
-                                    plain, &a, start.r_lo))
+    if (!evaluate_compensated<true, D>(lambda, p.r, p.q1, p.q2, p.moderate,
+                                       plain, &a, start.r_lo))
       break;
     double const omega = omega_of(lambda, a);
     best.see(a.f, lambda, omega);
@@ -204,6 +202,20 @@ bool finish(Problem const &p, FinishStart const &start,
   out->mu2 = best.f;
   out->slope = NAN;
   return true;
+}
+
+}  // namespace
+
+PW85_FMA_CLONES
+bool finish(Problem<2> const &p, FinishStart<2> const &start,
+            Finished *out) noexcept {
+  return finish_steps(p, start, out);
+}
+
+PW85_FMA_CLONES
+bool finish(Problem<3> const &p, FinishStart<3> const &start,
+            Finished *out) noexcept {
+  return finish_steps(p, start, out);
 }
 
 }  // namespace pw85::detail

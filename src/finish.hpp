@@ -9,13 +9,14 @@
 
 namespace pw85::detail {
 
+template <int D = dim>
 struct FinishStart {
   double lambda;  // where the compensated steps start
   double domega;  // the plain ω′ there (or nearby): the first slope; NaN
                   // if none is known
   // The plain factors and solution at lambda, when the caller has them
   // (Newton's last point), else nullptr.
-  LdlSolution const *plain;
+  LdlSolution<D> const *plain;
   // nullptr, or the low part of the problem's r (scaled as p.r): the
   // compensated evaluations are then those of p.r + r_lo
   // (compensated_from()).
@@ -37,7 +38,12 @@ struct Finished {
 // compensated f evaluated (each is a lower bound of μ², to rounding). When
 // the steps do not settle, the largest f evaluated and its λ. Returns false
 // when Q(λ) failed to factorise at the start (rounding only).
-bool finish(Problem const &p, FinishStart const &start,
+// One function per dimension, each compiled for CPUs with and without FMA
+// (PW85_FMA_CLONES); the dimension-generic body is finish_steps()
+// (finish.cpp).
+bool finish(Problem<2> const &p, FinishStart<2> const &start,
+            Finished *out) noexcept;
+bool finish(Problem<3> const &p, FinishStart<3> const &start,
             Finished *out) noexcept;
 
 }  // namespace pw85::detail

@@ -6,28 +6,49 @@
 #define PW85_SRC_GEOMETRY_HPP
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
-// Offsets of the outputs (pw85.h, PW85_GEOM_* and PW85_DERIV_*).
+// Offsets of the outputs in D dimensions (pw85.h, PW85_GEOM_* and
+// PW85_DERIV_*; pw85_2d.h, PW85_2D_GEOM_* and PW85_2D_DERIV_*). The
+// geometry: μ², λ, the contact point (D), the normal (D). The derivatives
+// of μ²: by r12 (D), by a rotation of each form about its centre (a
+// rotation vector in 3D, an angle in 2D: rot_size entries each), by the
+// stored entries of each form (sym_size(D) each).
+template <int D>
+struct Outputs {
+  static constexpr int mu2 = 0, lambda = 1, point = 2, normal = 2 + D,
+                       size = 2 + 2 * D;
+  static constexpr int rot_size = D == 3 ? 3 : 1;
+  static constexpr int r12 = 0, rot1 = D, rot2 = D + rot_size,
+                       q1 = D + 2 * rot_size, q2 = q1 + sym_size(D),
+                       deriv_size = q2 + sym_size(D);
+};
+
 namespace geom {
-constexpr int mu2 = 0, lambda = 1, point = 2, normal = 5, size = 8;
+using O = Outputs<dim>;
+constexpr int mu2 = O::mu2, lambda = O::lambda, point = O::point,
+              normal = O::normal, size = O::size;
 }  // namespace geom
 namespace deriv {
-constexpr int r12 = 0, rot1 = 3, rot2 = 6, q1 = 9, q2 = 15, size = 21;
+using O = Outputs<dim>;
+constexpr int r12 = O::r12, rot1 = O::rot1, rot2 = O::rot2, q1 = O::q1,
+              q2 = O::q2, size = O::deriv_size;
 }  // namespace deriv
 
 // pw85_contact_geometry() (d == nullptr) and pw85_contact_derivatives(),
-// for input that passed check_pointers_and_finite(). Returns
+// and their 2D counterparts (D = 2; geometry of Outputs<D>::size doubles,
+// d of Outputs<D>::deriv_size), for input that passed
+// check_pointers_and_finite(). Returns
 // Status::success; Status::out_of_range with every output written when one
 // overflows; the statuses of contact_search() with nothing written; or
 // Status::out_of_range, nothing written, when Q(λ) does not factorise at
 // the maximiser, in double-double nor in double (far beyond the domain:
 // entries spanning most of the range of a double).
-Status contact_geometry(double const r[dim], double const q1[sym],
-                        double const q2[sym], double geometry[geom::size],
-                        double d[deriv::size]) noexcept;
+template <int D = dim>
+Status contact_geometry(double const *r, double const *q1, double const *q2,
+                        double *geometry, double *d) noexcept;
 
 }  // namespace pw85::detail
 

@@ -12,7 +12,6 @@
 #include "problem.hpp"
 #include "tolerances.hpp"
 #include "warm_start.hpp"
-#include "warm_start.hpp"
 
 namespace pw85::detail {
 
@@ -67,16 +66,18 @@ enum class NewtonStop {
 };
 
 // The last point where ω was evaluated, with what the later stages reuse.
+template <int D = dim>
 struct LastPoint {
   double lambda;
   double f;       // as neg_f_or_zero() computes it (negated)
   double domega;  // ω′
-  LdlSolution sol;
+  LdlSolution<D> sol;
 };
 
+template <int D = dim>
 struct NewtonResult {
   double lambda;  // the estimate of the root: the last iterate
-  LastPoint last;
+  LastPoint<D> last;
   NewtonStop stop;
   Bracket bracket;
 
@@ -94,7 +95,10 @@ struct NewtonResult {
 
 // Visits nothing (newton_on_omega()'s default).
 struct NoVisit {
-  bool operator()(PlainPoint const &, double) const noexcept { return false; }
+  template <int D>
+  bool operator()(PlainPoint<D> const &, double) const noexcept {
+    return false;
+  }
 };
 
 // At most max_steps safeguarded Newton steps on ω from λ (eqs. (5.6)–(5.8)).
@@ -102,14 +106,15 @@ struct NoVisit {
 // size of the step that led there (+∞ at the first): true stops the
 // iteration there (NewtonStop::visitor; the overlap test's filters, which
 // decide on the way). Without a visitor, the search's Newton.
-template <bool Fast, class Visit = NoVisit>
-NewtonResult newton_on_omega(Problem const &p, double lambda, int max_steps,
-                             Visit &&visit = Visit{}) noexcept {
+template <bool Fast, int D, class Visit = NoVisit>
+NewtonResult<D> newton_on_omega(Problem<D> const &p, double lambda,
+                                int max_steps,
+                                Visit &&visit = Visit{}) noexcept {
   // last.sol is left unset until a point is evaluated: it is read only
   // after convergence (last_within()), never when the first point stops
   // the iteration (not evaluable, or a visitor: the overlap test's common
   // path, where setting it cost 22 instructions a call).
-  NewtonResult out;
+  NewtonResult<D> out;
   out.lambda = lambda;
   out.last.lambda = lambda;
   out.last.f = 0.0;
@@ -121,7 +126,7 @@ NewtonResult newton_on_omega(Problem const &p, double lambda, int max_steps,
   };
   double h = HUGE_VAL;  // the relative size of the step to λ
   for (int k = 0; k < max_steps; ++k) {
-    PlainPoint pt;
+    PlainPoint<D> pt;
     NewtonStep step;
     if (!evaluate_plain<Fast>(lambda, p, &pt)) {
       out.stop = NewtonStop::not_evaluable;
@@ -135,7 +140,7 @@ NewtonResult newton_on_omega(Problem const &p, double lambda, int max_steps,
       out.stop = NewtonStop::not_evaluable;
       return out;
     }
-    out.last = LastPoint{lambda, pt.f, step.domega, pt.sol};
+    out.last = LastPoint<D>{lambda, pt.f, step.domega, pt.sol};
     if (pt.omega == 0.0) {
       out.stop = NewtonStop::root;
       return out;

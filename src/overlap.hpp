@@ -5,7 +5,7 @@
 #define PW85_SRC_OVERLAP_HPP
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
@@ -13,7 +13,8 @@ namespace pw85::detail {
 // μ² < 1 (overlap), +1 when μ² > 1 (disjoint), 0 when |μ² − 1| ≤ 4ε
 // (tangent). Returns Status::success, Status::not_positive_definite,
 // Status::out_of_range or Status::no_memory, as contact_function().
-Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
+template <int D = dim>
+Status overlap(double const *r, double const *q1, double const *q2,
                int *result) noexcept;
 
 // overlap() of r + r_lo, a double-double (|r_lo_k| ≤ ulp(r_k)/2; r_lo
@@ -25,9 +26,9 @@ Status overlap(double const r[dim], double const q1[sym], double const q2[sym],
 // each filter's margin (tolerances.hpp: 16ε for the sphere bound's 7.5ε;
 // 32ε·κ̄ ≥ 96ε·√κ̄ (κ̄ ≥ 9) for estimates off by 8ε·κ̄), so that a
 // filter's decision holds for r + r_lo.
-Status overlap_dd(double const r[dim], double const r_lo[dim],
-                  double const q1[sym], double const q2[sym],
-                  int *result) noexcept;
+template <int D = dim>
+Status overlap_dd(double const *r, double const *r_lo, double const *q1,
+                  double const *q2, int *result) noexcept;
 
 }  // namespace pw85::detail
 

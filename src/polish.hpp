@@ -20,47 +20,51 @@
 namespace pw85::detail {
 
 // A usable solution: finite, with a finite low part, and not zero.
-PW85_INLINE bool usable(double const s[dim], double const s_lo[dim]) noexcept {
-  return all_finite<dim>(s) && all_finite<dim>(s_lo) &&
-         (s[0] != 0.0 || s[1] != 0.0 || s[2] != 0.0);
+template <int D = dim>
+PW85_INLINE bool usable(double const *s, double const *s_lo) noexcept {
+  bool nonzero = false;
+  for (int i = 0; i < D; ++i) nonzero = nonzero || s[i] != 0.0;
+  return all_finite<D>(s) && all_finite<D>(s_lo) && nonzero;
 }
 
 // s = Q(λ)⁻¹·r as s + s_lo (tolerances.hpp, geometry_refine_cond); false
 // when no factorisation succeeds, or s is not finite or is zero (both only
 // far beyond the domain).
-PW85_INLINE bool solve_accurately(Problem const &p, double lambda, double s[dim],
-                      double s_lo[dim]) noexcept {
-  double hi[sym], lo[sym];
-  combine_dd(lambda, p.q1, p.q2, hi, lo);
-  Ldl fac;
+template <int D>
+PW85_INLINE bool solve_accurately(Problem<D> const &p, double lambda,
+                                  double *s, double *s_lo) noexcept {
+  double hi[sym_size(D)], lo[sym_size(D)];
+  combine_dd<D>(lambda, p.q1, p.q2, hi, lo);
+  Ldl<D> fac;
   bool const plain = ldl_decomp(hi, &fac);
   if (plain && ldl_cond_bound(hi, fac) <= geometry_refine_cond) {
-    double rho[dim], ds[dim];
+    double rho[D], ds[D];
     ldl_solve(fac, p.r, s);
-    compensated_residual(hi, lo, p.r, s, rho);
+    compensated_residual<D>(hi, lo, p.r, s, rho);
     ldl_solve(fac, rho, ds);
-    split_sum(s, ds, s, s_lo);
-    if (usable(s, s_lo)) return true;
+    split_sum<D>(s, ds, s, s_lo);
+    if (usable<D>(s, s_lo)) return true;
   }
-  if (solve_dd(lambda, p.r, p.q1, p.q2, s, s_lo) && usable(s, s_lo))
+  if (solve_dd<D>(lambda, p.r, p.q1, p.q2, s, s_lo) && usable<D>(s, s_lo))
     return true;
   // Beyond the domain (entries spanning most of the range of a double),
   // where even the double-double factors fail: the plain solve, if any.
   if (!plain) return false;
   ldl_solve(fac, p.r, s);
   PW85_UNROLL
-  for (int i = 0; i < dim; ++i) s_lo[i] = 0.0;
-  return usable(s, s_lo);
+  for (int i = 0; i < D; ++i) s_lo[i] = 0.0;
+  return usable<D>(s, s_lo);
 }
 
 // sᵀ·A·s for s = s + s_lo, as a double-double: the products of s exact
 // (Dot2), the tail to first order, 2·(A·s)·s_lo.
-PW85_INLINE dd quad_form_dd2(double const a[sym], double const s[dim],
-                             double const s_lo[dim]) noexcept {
-  Dot2 acc = quad_form_acc(a, s);
-  double t[dim];
-  sym_mul(a, s, t);
-  acc.err += 2.0 * dot(t, s_lo);
+template <int D>
+PW85_INLINE dd quad_form_dd2(double const *a, double const *s,
+                             double const *s_lo) noexcept {
+  Dot2 acc = quad_form_acc<D>(a, s);
+  double t[D];
+  sym_mul<D>(a, s, t);
+  acc.err += 2.0 * dot<D>(t, s_lo);
   return two_sum(acc.sum, acc.err);
 }
 
@@ -69,11 +73,12 @@ PW85_INLINE dd quad_form_dd2(double const a[sym], double const s[dim],
 // maximum (small ω′), the error of ω in double alone, a few ε, would move
 // its root by a few ε/ω′ (2e-12 relative where f″·λ²/μ² = −1.5e-5).
 // s is scaled to order one first (Pᵢ do not underflow; ρ is unchanged).
-PW85_INLINE double omega_dd(double lambda, Problem const &p, double s[dim],
-                            double s_lo[dim]) noexcept {
-  scale_for_p(s, s_lo);
-  dd const p1 = quad_form_dd2(p.q1, s, s_lo);
-  dd const p2 = quad_form_dd2(p.q2, s, s_lo);
+template <int D>
+PW85_INLINE double omega_dd(double lambda, Problem<D> const &p, double *s,
+                            double *s_lo) noexcept {
+  scale_for_p<D>(s, s_lo);
+  dd const p1 = quad_form_dd2<D>(p.q1, s, s_lo);
+  dd const p2 = quad_form_dd2<D>(p.q2, s, s_lo);
   // P2 scaled by an even power of two towards P1 (exact), so that ρ does
   // not overflow where λ·ρ is near 1 (lambda_rho()).
   int e = exponent(p2.hi) - exponent(p1.hi);
@@ -100,15 +105,15 @@ PW85_INLINE double omega_dd(double lambda, Problem const &p, double s[dim],
 // ω changes sign. Found by fuzz-geometry: λ 0.6 % off from the search at
 // a maximum so flat that eight steps of 1e-3 fell short (tests/fuzz/
 // corpus/contact-raw/regress-geo-flat-*).
-template <bool Fast>
-PW85_INLINE double polish(Problem const &p, double lambda0) noexcept {
+template <bool Fast, int D>
+PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
   double lambda = lambda0;
   double prev_lambda = NAN, prev_omega = NAN;
   double radius = polish_max_step;
   for (int k = 0; k < polish_iter; ++k) {
-    PlainPoint pt;
+    PlainPoint<D> pt;
     NewtonStep plain_step;
-    double s[dim], s_lo[dim];
+    double s[D], s_lo[D];
     if (!evaluate_plain<Fast>(lambda, p, &pt) ||
         !newton_step(pt, &plain_step) ||
         !solve_accurately(p, lambda, s, s_lo))

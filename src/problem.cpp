@@ -6,11 +6,17 @@
 
 namespace pw85::detail {
 
-Status prepare_uncertified(double const q1[sym], double const q2[sym],
+template <int D>
+Status prepare_uncertified(double const *q1, double const *q2,
                            bool factorised) noexcept {
-  if (!is_positive_definite(q1) || !is_positive_definite(q2))
+  if (!is_positive_definite<D>(q1) || !is_positive_definite<D>(q2))
     return Status::not_positive_definite;
   return factorised ? Status::success : Status::out_of_range;
 }
+
+template Status prepare_uncertified<2>(double const *, double const *,
+                                       bool) noexcept;
+template Status prepare_uncertified<3>(double const *, double const *,
+                                       bool) noexcept;
 
 }  // namespace pw85::detail

@@ -15,9 +15,10 @@
 
 namespace pw85::detail {
 
-struct Problem : Scaled {
-  Ldl f1;      // Q1 = L·D·Lᵀ
-  Ldl f2;      // Q2 = L·D·Lᵀ
+template <int D = dim>
+struct Problem : Scaled<D> {
+  Ldl<D> f1;   // Q1 = L·D·Lᵀ
+  Ldl<D> f2;   // Q2 = L·D·Lᵀ
   double a1;   // rᵀ·Q1⁻¹·r
   double a2;   // rᵀ·Q2⁻¹·r
   double tinv1;  // tr(Q1⁻¹) (ldl_trace_inverse() of f1)
@@ -28,7 +29,8 @@ struct Problem : Scaled {
 };
 
 // aᵢ = rᵀ·Qᵢ⁻¹·r from the factors.
-inline void quads(Problem *p) noexcept {
+template <int D>
+inline void quads(Problem<D> *p) noexcept {
   p->a1 = ldl_quad_inverse(p->f1, p->r);
   p->a2 = ldl_quad_inverse(p->f2, p->r);
 }
@@ -41,21 +43,23 @@ inline void quads(Problem *p) noexcept {
 // maximiser near 1 is computed as one near 0, in the variable that keeps
 // its digits (1 − λ* may not be representable as 1 − a double, but it is
 // as a double).
-inline void orient(Problem *p) noexcept {
+template <int D>
+inline void orient(Problem<D> *p) noexcept {
+  constexpr int n = sym_size(D);
   bool swap = p->a1 < p->a2;
   if (p->a1 == p->a2) {  // the first entry that differs decides
     int k = 0;
-    while (k < sym && p->q1[k] == p->q2[k]) ++k;
-    swap = k < sym && p->q2[k] < p->q1[k];
+    while (k < n && p->q1[k] == p->q2[k]) ++k;
+    swap = k < n && p->q2[k] < p->q1[k];
   }
   p->swapped = swap;
   if (!swap) return;
-  for (int k = 0; k < sym; ++k) {
+  for (int k = 0; k < n; ++k) {
     double const t = p->q1[k];
     p->q1[k] = p->q2[k];
     p->q2[k] = t;
   }
-  Ldl const f = p->f1;
+  Ldl<D> const f = p->f1;
   p->f1 = p->f2;
   p->f2 = f;
   double const a = p->a1;
@@ -73,8 +77,14 @@ inline void orient(Problem *p) noexcept {
 // (factorised false: its diagonal spans, with the other's, more than the
 // range of a double, or it is singular to the precision of double) gives
 // Status::out_of_range; else Status::success (the factors stand).
-Status prepare_uncertified(double const q1[sym], double const q2[sym],
+template <int D>
+Status prepare_uncertified(double const *q1, double const *q2,
                            bool factorised) noexcept;
+
+extern template Status prepare_uncertified<2>(double const *, double const *,
+                                              bool) noexcept;
+extern template Status prepare_uncertified<3>(double const *, double const *,
+                                              bool) noexcept;
 
 // rescale(), then the factorisations of Q1 and Q2, which prove them
 // positive definite (ldl_certifies()) on the fast path; else the rule of
@@ -82,20 +92,32 @@ Status prepare_uncertified(double const q1[sym], double const q2[sym],
 // are not yet computed (quads()), nor the problem oriented (orient()).
 // Input: finite. Returns Status::success, Status::not_positive_definite or
 // Status::out_of_range. Inline: it runs on every call.
-inline Status prepare(double const r[dim], double const q1[sym],
-                      double const q2[sym], Problem *p) noexcept {
+template <int D>
+inline Status prepare(double const *r, double const *q1, double const *q2,
+                      Problem<D> *p) noexcept {
   p->swapped = false;
-  bool const factorised = rescale(r, q1, q2, p) &&
+  bool const factorised = rescale<D>(r, q1, q2, p) &&
                           ldl_decomp(p->q1, &p->f1) &&
                           ldl_decomp(p->q2, &p->f2);
   if (PW85_UNLIKELY(!factorised))
-    return prepare_uncertified(q1, q2, false);
+    return prepare_uncertified<D>(q1, q2, false);
   p->tinv1 = ldl_trace_inverse(p->f1);
   p->tinv2 = ldl_trace_inverse(p->f2);
-  if (PW85_UNLIKELY(!(ldl_certifies(p->q1, p->tinv1) &&
-                      ldl_certifies(p->q2, p->tinv2))))
-    return prepare_uncertified(q1, q2, true);
+  if (PW85_UNLIKELY(!(ldl_certifies<D>(p->q1, p->tinv1) &&
+                      ldl_certifies<D>(p->q2, p->tinv2))))
+    return prepare_uncertified<D>(q1, q2, true);
   return Status::success;
+}
+
+// tr(Q)·2^−8, the terms scaled before they are summed (exact, barring
+// underflow), so that the sum does not overflow.
+template <int D>
+PW85_INLINE double scaled_trace(double const *q) noexcept {
+  constexpr double s = 0x1p-8;
+  double t = s * q[0];
+  PW85_UNROLL
+  for (int i = 1; i < D; ++i) t += s * q[Layout<D>::diag[i]];
+  return t;
 }
 
 // A lower bound of μ² valid for every input, times 2^8: each ellipsoid
@@ -108,12 +130,11 @@ inline Status prepare(double const r[dim], double const q1[sym],
 // changes no rounding: no trace or square overflows, however close the
 // rescaled diagonals come to 2^1024 (which rescale() allows), and the
 // result is a normal double.
-inline double sphere_lower_bound_x256(Problem const &p) noexcept {
-  constexpr double s = 0x1p-8;
-  double const radii =
-      std::sqrt(s * p.q1[0] + s * p.q1[3] + s * p.q1[5]) +
-      std::sqrt(s * p.q2[0] + s * p.q2[3] + s * p.q2[5]);  // true radii / 16
-  return dot(p.r, p.r) / (radii * radii) * (1.0 - sphere_margin);
+template <int D>
+inline double sphere_lower_bound_x256(Problem<D> const &p) noexcept {
+  double const radii = std::sqrt(scaled_trace<D>(p.q1)) +
+                       std::sqrt(scaled_trace<D>(p.q2));  // true radii / 16
+  return dot<D>(p.r, p.r) / (radii * radii) * (1.0 - sphere_margin);
 }
 
 }  // namespace pw85::detail

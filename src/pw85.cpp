@@ -13,6 +13,7 @@
 #include "ellipsoid.hpp"
 #include "f.hpp"
 #include "facade.hpp"
+#include "facade_pairs.hpp"
 #include "geometry.hpp"
 #include "overlap.hpp"
 #include "spheroid.hpp"
@@ -49,54 +50,18 @@ using pw85::facade::run_items;
 using pw85::facade::to_code;
 using pw85::facade::valid_stride;
 
-// The single-pair functions, shared by their exported names and the
-// batches (an exported function called inside the library would go
-// through the PLT).
-inline int contact_function_one(double const *r12, double const *q1,
-                                double const *q2, double *out) noexcept {
-  Status const status = core::check_pointers_and_finite(r12, q1, q2, out);
-  if (status != Status::success) return to_code(status);
-  return to_code(core::contact_function(r12, q1, q2, out));
-}
-
-inline int overlap_one(double const *r12, double const *q1, double const *q2,
-                       int *result) noexcept {
-  Status const status = core::check_pointers_and_finite(r12, q1, q2, result);
-  if (status != Status::success) return to_code(status);
-  return to_code(core::overlap(r12, q1, q2, result));
-}
-
-// d: nullptr for pw85_contact_geometry().
-inline int geometry_one(double const *r12, double const *q1, double const *q2,
-                        double *geometry, double *d) noexcept {
-  Status const status = core::check_pointers_and_finite(r12, q1, q2, geometry);
-  if (status != Status::success) return to_code(status);
-  return to_code(core::contact_geometry(r12, q1, q2, geometry, d));
-}
-
+// The single-pair functions, shared with pw85_2d.cpp (facade_pairs.hpp).
+constexpr int D = PW85_DIM;
+using pw85::facade::contact_function_one;
+using pw85::facade::f_neg_one;
+using pw85::facade::geometry_only;
+using pw85::facade::overlap_one;
+using pw85::facade::with_derivatives;
 // ---------------------------------------------------------------------------
 // Batches (pw85.h, "Batches").
 
-// The inputs of a batch of pairs: base pointers and strides in doubles.
-struct Pairs {
-  double const *r12, *q1, *q2;
-  std::size_t r12_stride, q1_stride, q2_stride;
-  double const *r(std::size_t i) const noexcept { return r12 + i * r12_stride; }
-  double const *a(std::size_t i) const noexcept { return q1 + i * q1_stride; }
-  double const *b(std::size_t i) const noexcept { return q2 + i * q2_stride; }
-};
-
-// A batch of pairs. outputs_ok: no output pointer is NULL.
-template <class Pair>
-int run(std::size_t n, Pairs const &in, bool outputs_ok, int *status,
-        int threads, Pair pair) noexcept {
-  return run_items(
-      n, in.r12 != nullptr && in.q1 != nullptr && in.q2 != nullptr && outputs_ok,
-      valid_stride(in.r12_stride, PW85_DIM) &&
-          valid_stride(in.q1_stride, PW85_SYM) &&
-          valid_stride(in.q2_stride, PW85_SYM),
-      status, threads, pair);
-}
+using pw85::facade::pairs_batch;
+using pw85::facade::pairs_batch2;
 
 // pw85_spheroid() with the statuses of its batch: PW85_EDOM for a
 // non-finite input (q untouched), PW85_ERANGE for a non-finite entry of q
@@ -170,16 +135,7 @@ void pw85_spheroid(double a, double c, double const n[PW85_DIM],
 
 double pw85_f_neg(double lambda,
                   double const params[PW85_DIM + 2 * PW85_SYM]) noexcept {
-  if (params == nullptr) return NAN;
-  double const *r12 = params;
-  double const *q1 = params + PW85_DIM;
-  double const *q2 = q1 + PW85_SYM;
-  double value = 0.0;
-  if (!core::valid_f_input(lambda, r12, q1, q2) ||
-      !core::is_positive_definite(q1) || !core::is_positive_definite(q2) ||
-      !core::f_compensated(lambda, r12, q1, q2, &value))
-    return NAN;
-  return -value;
+  return f_neg_one<D>(lambda, params);
 }
 
 void pw85__residual(double lambda, double const r12[PW85_DIM],
@@ -190,12 +146,12 @@ void pw85__residual(double lambda, double const r12[PW85_DIM],
 
 int pw85_contact_function(double const r12[PW85_DIM], double const q1[PW85_SYM],
                           double const q2[PW85_SYM], double out[2]) noexcept {
-  return contact_function_one(r12, q1, q2, out);
+  return contact_function_one<D>(r12, q1, q2, out);
 }
 
 int pw85_overlap(double const r12[PW85_DIM], double const q1[PW85_SYM],
                  double const q2[PW85_SYM], int *result) noexcept {
-  return overlap_one(r12, q1, q2, result);
+  return overlap_one<D>(r12, q1, q2, result);
 }
 
 int pw85_ellipsoid_rotation(double const a[PW85_DIM],
@@ -232,7 +188,7 @@ int pw85_spheroid_checked(double a, double c, double const n[PW85_DIM],
 int pw85_contact_geometry(double const r12[PW85_DIM],
                           double const q1[PW85_SYM], double const q2[PW85_SYM],
                           double out[PW85_GEOM_SIZE]) noexcept {
-  return geometry_one(r12, q1, q2, out, nullptr);
+  return geometry_only<D>(r12, q1, q2, out);
 }
 
 int pw85_contact_derivatives(double const r12[PW85_DIM],
@@ -240,10 +196,7 @@ int pw85_contact_derivatives(double const r12[PW85_DIM],
                              double const q2[PW85_SYM],
                              double geometry[PW85_GEOM_SIZE],
                              double d[PW85_DERIV_SIZE]) noexcept {
-  Status status = core::check_pointers_and_finite(r12, q1, q2, geometry);
-  if (status == Status::success && d == nullptr) status = Status::null_pointer;
-  if (status != Status::success) return to_code(status);
-  return to_code(core::contact_geometry(r12, q1, q2, geometry, d));
+  return with_derivatives<D>(r12, q1, q2, geometry, d);
 }
 
 int pw85_batch_threads(int threads, size_t n) noexcept {
@@ -255,23 +208,18 @@ int pw85_contact_function_batch(size_t n, double const *r12,
                                 size_t q1_stride, double const *q2,
                                 size_t q2_stride, double *out, int *status,
                                 int threads) noexcept {
-  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
-  return run(n, in, out != nullptr, status, threads,
-             [in, out](std::size_t i) noexcept {
-               return contact_function_one(in.r(i), in.a(i), in.b(i),
-                                           out + 2 * i);
-             });
+  return pairs_batch<PW85_DIM>(
+      n, {r12, q1, q2, r12_stride, q1_stride, q2_stride}, out, 2, status,
+      threads, contact_function_one<D>);
 }
 
 int pw85_overlap_batch(size_t n, double const *r12, size_t r12_stride,
                        double const *q1, size_t q1_stride, double const *q2,
                        size_t q2_stride, int *result, int *status,
                        int threads) noexcept {
-  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
-  return run(n, in, result != nullptr, status, threads,
-             [in, result](std::size_t i) noexcept {
-               return overlap_one(in.r(i), in.a(i), in.b(i), result + i);
-             });
+  return pairs_batch<PW85_DIM>(
+      n, {r12, q1, q2, r12_stride, q1_stride, q2_stride}, result, 1, status,
+      threads, overlap_one<D>);
 }
 
 int pw85_contact_geometry_batch(size_t n, double const *r12,
@@ -279,12 +227,9 @@ int pw85_contact_geometry_batch(size_t n, double const *r12,
                                 size_t q1_stride, double const *q2,
                                 size_t q2_stride, double *out, int *status,
                                 int threads) noexcept {
-  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
-  return run(n, in, out != nullptr, status, threads,
-             [in, out](std::size_t i) noexcept {
-               return geometry_one(in.r(i), in.a(i), in.b(i),
-                                   out + PW85_GEOM_SIZE * i, nullptr);
-             });
+  return pairs_batch<PW85_DIM>(
+      n, {r12, q1, q2, r12_stride, q1_stride, q2_stride}, out,
+      PW85_GEOM_SIZE, status, threads, geometry_only<D>);
 }
 
 int pw85_contact_derivatives_batch(size_t n, double const *r12,
@@ -293,13 +238,10 @@ int pw85_contact_derivatives_batch(size_t n, double const *r12,
                                    size_t q2_stride, double *geometry,
                                    double *d, int *status,
                                    int threads) noexcept {
-  Pairs const in{r12, q1, q2, r12_stride, q1_stride, q2_stride};
-  return run(n, in, geometry != nullptr && d != nullptr, status, threads,
-             [in, geometry, d](std::size_t i) noexcept {
-               return geometry_one(in.r(i), in.a(i), in.b(i),
-                                   geometry + PW85_GEOM_SIZE * i,
-                                   d + PW85_DERIV_SIZE * i);
-             });
+  return pairs_batch2<PW85_DIM>(
+      n, {r12, q1, q2, r12_stride, q1_stride, q2_stride}, geometry,
+      PW85_GEOM_SIZE, d, PW85_DERIV_SIZE, status, threads,
+      with_derivatives<D>);
 }
 
 int pw85_spheroid_batch(size_t n, double const *a, size_t a_stride,

@@ -11,14 +11,25 @@ namespace pw85::detail {
 
 namespace {
 
-// The smallest and largest |x| of the diagonals of q1 and q2, written out:
-// -O2 leaves loops rolled, and this runs on every call.
-void diagonal_range(double const q1[sym], double const q2[sym], double *lo,
+// The smallest and largest |x| of the diagonals of q1 and q2, written out
+// as a tree of min and max: -O2 leaves loops rolled, and this runs on
+// every call.
+template <int D>
+void diagonal_range(double const *q1, double const *q2, double *lo,
                     double *hi) noexcept {
-  double const a = std::fabs(q1[0]), b = std::fabs(q1[3]), c = std::fabs(q1[5]);
-  double const d = std::fabs(q2[0]), e = std::fabs(q2[3]), f = std::fabs(q2[5]);
-  *lo = std::min(std::min(std::min(a, b), std::min(c, d)), std::min(e, f));
-  *hi = std::max(std::max(std::max(a, b), std::max(c, d)), std::max(e, f));
+  constexpr int k = Layout<D>::diag[1];
+  double const a = std::fabs(q1[0]), b = std::fabs(q1[k]);
+  double const c = std::fabs(q2[0]), d = std::fabs(q2[k]);
+  if constexpr (D == 2) {
+    *lo = std::min(std::min(a, b), std::min(c, d));
+    *hi = std::max(std::max(a, b), std::max(c, d));
+  } else {
+    // Q1's last diagonal entry e, Q2's f; the same tree as in 2D with
+    // their pair beside it.
+    double const e = std::fabs(q1[5]), f = std::fabs(q2[5]);
+    *lo = std::min(std::min(std::min(a, b), std::min(e, c)), std::min(d, f));
+    *hi = std::max(std::max(std::max(a, b), std::max(e, c)), std::max(d, f));
+  }
 }
 
 // y = x·2^k for N entries: exact unless a result leaves the normal range.
@@ -58,22 +69,24 @@ double times_pow2(double x, int k) noexcept {
   return k >= -1022 && k <= 1023 ? x * pow2(k) : std::ldexp(x, k);
 }
 
-bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
-             Scaled *s) noexcept {
-  double const rmax =
-      std::max(std::max(std::fabs(r[0]), std::fabs(r[1])), std::fabs(r[2]));
+template <int D>
+bool rescale(double const *r, double const *q1, double const *q2,
+             Scaled<D> *s) noexcept {
+  double rmax = std::fabs(r[0]);
+  PW85_UNROLL
+  for (int i = 1; i < D; ++i) rmax = std::max(rmax, std::fabs(r[i]));
   s->r_is_zero = rmax == 0.0;
   int const er = exponent(rmax);
   // The exponent is monotone in |x|: those of the extreme diagonal entries
   // are the extreme exponents.
   double dmin = 0.0, dmax = 0.0;
-  diagonal_range(q1, q2, &dmin, &dmax);
+  diagonal_range<D>(q1, q2, &dmin, &dmax);
   int const emin = exponent(dmin);
   int const emax = exponent(dmax);
   int const eq = emin + (emax - emin) / 2;
-  scale_n<dim>(r, -er, s->r);
-  scale_n<sym>(q1, -eq, s->q1);
-  scale_n<sym>(q2, -eq, s->q2);
+  scale_n<D>(r, -er, s->r);
+  scale_n<sym_size(D)>(q1, -eq, s->q1);
+  scale_n<sym_size(D)>(q2, -eq, s->q2);
   s->shift = 2 * er - eq;
   s->r_exp = er;
   s->q_exp = eq;
@@ -85,5 +98,10 @@ bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
   // indefinite: its factorisation then fails on a non-finite pivot.
   return emax - eq <= 1024;
 }
+
+template bool rescale<2>(double const *, double const *, double const *,
+                         Scaled<2> *) noexcept;
+template bool rescale<3>(double const *, double const *, double const *,
+                         Scaled<3> *) noexcept;
 
 }  // namespace pw85::detail

@@ -3,7 +3,7 @@
 #ifndef PW85_SRC_SCALING_HPP
 #define PW85_SRC_SCALING_HPP
 
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
@@ -23,10 +23,11 @@ double times_pow2(double x, int k) noexcept;
 // μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2), λ unchanged): r to order
 // one, Q1 and Q2 so that their diagonals (which bound every entry of a
 // positive definite matrix) straddle one. μ²(input) = μ²(scaled)·2^shift.
+template <int D = dim>
 struct Scaled {
-  double r[dim];
-  double q1[sym];
-  double q2[sym];
+  double r[D];
+  double q1[sym_size(D)];
+  double q2[sym_size(D)];
   int shift;       // 2·r_exp − q_exp
   int r_exp;       // r = r(scaled)·2^r_exp
   int q_exp;       // Qᵢ = Qᵢ(scaled)·2^q_exp
@@ -41,8 +42,14 @@ struct Scaled {
 // Q2 span more than the range of a double, so that a rescaled diagonal
 // entry overflows (decided from the exponents; an off-diagonal entry that
 // overflows leaves the form indefinite, which its factorisation rejects).
-bool rescale(double const r[dim], double const q1[sym], double const q2[sym],
-             Scaled *s) noexcept;
+template <int D>
+bool rescale(double const *r, double const *q1, double const *q2,
+             Scaled<D> *s) noexcept;
+
+extern template bool rescale<2>(double const *, double const *,
+                                double const *, Scaled<2> *) noexcept;
+extern template bool rescale<3>(double const *, double const *,
+                                double const *, Scaled<3> *) noexcept;
 
 }  // namespace pw85::detail
 

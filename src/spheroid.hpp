@@ -3,7 +3,7 @@
 #ifndef PW85_SRC_SPHEROID_HPP
 #define PW85_SRC_SPHEROID_HPP
 
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 

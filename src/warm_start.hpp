@@ -6,7 +6,7 @@
 
 #include "ldl.hpp"
 #include "problem.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
@@ -33,7 +33,8 @@ inline double warm_start(double a1, double a2) noexcept {
   return a1 < a2 ? below_one : 0.5;
 }
 
-inline double warm_start(Problem const &p) noexcept {
+template <int D>
+inline double warm_start(Problem<D> const &p) noexcept {
   return warm_start(p.a1, p.a2);
 }
 
@@ -49,11 +50,12 @@ inline double warm_start(Problem const &p) noexcept {
 // ρ(1)² = rᵀQ2⁻¹r / sᵀQ1s, from the factors of Q1 and Q2. A NaN (both
 // forms 0, or both infinite) is rejected where it is used, as any point
 // outside the bracket.
-inline double step_from_end(Problem const &p, bool from_zero) noexcept {
-  double s[dim], t[dim];
+template <int D>
+inline double step_from_end(Problem<D> const &p, bool from_zero) noexcept {
+  double s[D], t[D];
   double const a = ldl_solve_quad(from_zero ? p.f1 : p.f2, p.r, s);
-  sym_mul(from_zero ? p.q2 : p.q1, s, t);
-  double const b = dot(s, t);
+  sym_mul<D>(from_zero ? p.q2 : p.q1, s, t);
+  double const b = dot<D>(s, t);
   return from_zero ? sphere_root(b, a) : sphere_root(a, b);
 }
 

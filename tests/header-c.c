@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Compiled as C (several standards, -Werror -pedantic): pw85.h and
- * pw85_index.h (and pw85_image.h) stand alone, twice included, and their prototypes accept
+ * pw85_index.h (and pw85_image.h, pw85_2d.h) stand alone, twice included, and their prototypes accept
  * const arrays. */
+#include <pw85/pw85_2d.h>
+#include <pw85/pw85_2d.h>
 #include <pw85/pw85_image.h>
 #include <pw85/pw85_image.h>
 #include <pw85/pw85_index.h>
@@ -57,5 +59,29 @@ int main(void) {
   ok = ok && pw85_image_voxels(1, r, q, NULL, a, 1, dims, image, 1) == PW85_SUCCESS;
   ok = ok && pw85_image_fraction(dims, image, &count, NULL) == PW85_SUCCESS &&
        count == 8;
+  double const r2[PW85_2D_DIM] = {1., 0.}, q2d[PW85_2D_SYM] = {1., 0., 1.};
+  double const a2[PW85_2D_DIM] = {2., 1.};
+  double const params2[PW85_2D_DIM + 2 * PW85_2D_SYM] = {1., 0., 1., 0., 1., 1., 0., 1.};
+  double e2[PW85_2D_SYM], theta = 1.;
+  ok = ok && pw85_2d_contact_function(r2, q2d, q2d, out) == PW85_SUCCESS;
+  ok = ok && pw85_2d_overlap(r2, q2d, q2d, result) == PW85_SUCCESS;
+  ok = ok && pw85_2d_f_neg(0.5, params2) < 0.;
+  ok = ok && pw85_2d_ellipse(a2, 0., e2) == PW85_SUCCESS;
+  ok = ok && pw85_2d_principal_axes(q2d, axes, &theta) == PW85_SUCCESS;
+  double g2[PW85_2D_GEOM_SIZE], d2[PW85_2D_DERIV_SIZE];
+  ok = ok && pw85_2d_contact_geometry(r2, q2d, q2d, g2) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_derivatives(r2, q2d, q2d, g2, d2) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_function_batch(1, r2, 0, q2d, 0, q2d, 0, out,
+                                            NULL, 1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_overlap_batch(1, r2, 0, q2d, 0, q2d, 0, result, NULL,
+                                   1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_geometry_batch(1, r2, 0, q2d, 0, q2d, 0, g2,
+                                            NULL, 1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_contact_derivatives_batch(1, r2, 0, q2d, 0, q2d, 0, g2,
+                                               d2, NULL, 1) == PW85_SUCCESS;
+  ok = ok && pw85_2d_ellipse_batch(1, a2, 0, &theta, 0, e2, NULL, 1) ==
+                 PW85_SUCCESS;
+  ok = ok && pw85_2d_principal_axes_batch(1, q2d, 0, axes, &theta, NULL, 1) ==
+                 PW85_SUCCESS;
   return ok ? 0 : 1;
 }

@@ -2,6 +2,7 @@
 // Compiled as C++ (-Werror -pedantic): pw85.h and pw85.hpp stand alone and
 // together, in either order; pw85_index.hpp first, standing alone.
 #include <pw85/pw85_pack.hpp>
+#include <pw85/pw85_2d.h>
 #include <pw85/pw85_image.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
@@ -12,6 +13,8 @@
 static_assert(noexcept(pw85_contact_function(nullptr, nullptr, nullptr,
                                              nullptr)),
               "the C ABI is noexcept for C++ callers");
+static_assert(noexcept(pw85_2d_overlap(nullptr, nullptr, nullptr, nullptr)),
+              "pw85_2d.h is noexcept for C++ callers");
 static_assert(noexcept(pw85_index_destroy(nullptr)),
               "pw85_index.h is noexcept for C++ callers");
 

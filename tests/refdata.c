@@ -55,6 +55,28 @@ static hid_t open_file(const char *path, const char *var, GError **error) {
   return file;
 }
 
+/* The comma-separated root attribute class_names of an open file, split
+ * into *names (NULL-terminated; g_strfreev it); FALSE with *error set. */
+static gboolean read_class_names(hid_t file, gchar ***names,
+                                 GError **error) {
+  hsize_t dims[1];
+  H5T_class_t type_class;
+  size_t type_size = 0;
+  *names = NULL;
+  if (!expect(H5LTget_attribute_info(file, "/", "class_names", dims,
+                                     &type_class, &type_size) >= 0 &&
+                  type_class == H5T_STRING,
+              "attribute class_names", error))
+    return FALSE;
+  char *joined = g_malloc0(type_size + 1);
+  gboolean const ok = expect(
+      H5LTget_attribute_string(file, "/", "class_names", joined) >= 0,
+      "attribute class_names", error);
+  if (ok) *names = g_strsplit(joined, ",", -1);
+  g_free(joined);
+  return ok;
+}
+
 gboolean ref_data_load(const char *path, RefData *d, GError **error) {
   memset(d, 0, sizeof *d);
   hid_t const file = open_file(path, "PW85_REF_DATA", error);
@@ -168,9 +190,6 @@ gboolean hard_pairs_load(const char *path, HardPairs *h, GError **error) {
   size_t const n = h->pairs.count;
   hsize_t dims[1];
   int rank = -1;
-  H5T_class_t type_class;
-  size_t type_size = 0;
-  char *names = NULL;
   gboolean ok =
       read_dataset(file, "/cond1", 1, dims, &h->cond1, error) &&
       expect(dims[0] == n, "cond1", error) &&
@@ -183,22 +202,14 @@ gboolean hard_pairs_load(const char *path, HardPairs *h, GError **error) {
       (h->klass = g_new(int, n), TRUE) &&
       expect(H5LTread_dataset_int(file, "/class", h->klass) >= 0, "class",
              error) &&
-      expect(H5LTget_attribute_info(file, "/", "class_names", dims,
-                                    &type_class, &type_size) >= 0 &&
-                 type_class == H5T_STRING,
-             "attribute class_names", error) &&
-      (names = g_malloc0(type_size + 1), TRUE) &&
-      expect(H5LTget_attribute_string(file, "/", "class_names", names) >= 0,
-             "attribute class_names", error);
+      read_class_names(file, &h->class_names, error);
   H5Fclose(file);
   if (ok) {
-    h->class_names = g_strsplit(names, ",", -1);
     h->num_classes = g_strv_length(h->class_names);
     for (size_t i = 0; ok && i < n; i++)
       ok = expect(h->klass[i] >= 0 && (size_t)h->klass[i] < h->num_classes,
                   "class out of range", error);
   }
-  g_free(names);
   if (!ok) hard_pairs_clear(h);
   return ok;
 }
@@ -220,9 +231,6 @@ gboolean f_cases_load(const char *path, FCases *c, GError **error) {
   if (file < 0) return FALSE;
   hsize_t dims[2];
   int rank = -1;
-  H5T_class_t type_class;
-  size_t type_size = 0;
-  char *names = NULL;
   gboolean ok =
       read_dataset(file, "/F", 1, dims, &c->F, error) &&
       (c->count = dims[0], TRUE) &&
@@ -243,22 +251,14 @@ gboolean f_cases_load(const char *path, FCases *c, GError **error) {
       (c->klass = g_new(int, c->count), TRUE) &&
       expect(H5LTread_dataset_int(file, "/class", c->klass) >= 0, "class",
              error) &&
-      expect(H5LTget_attribute_info(file, "/", "class_names", dims,
-                                    &type_class, &type_size) >= 0 &&
-                 type_class == H5T_STRING,
-             "attribute class_names", error) &&
-      (names = g_malloc0(type_size + 1), TRUE) &&
-      expect(H5LTget_attribute_string(file, "/", "class_names", names) >= 0,
-             "attribute class_names", error);
+      read_class_names(file, &c->class_names, error);
   H5Fclose(file);
   if (ok) {
-    c->class_names = g_strsplit(names, ",", -1);
     c->num_classes = g_strv_length(c->class_names);
     for (size_t i = 0; ok && i < c->count; i++)
       ok = expect(c->klass[i] >= 0 && (size_t)c->klass[i] < c->num_classes,
                   "class out of range", error);
   }
-  g_free(names);
   if (!ok) f_cases_clear(c);
   return ok;
 }
@@ -300,4 +300,14 @@ gboolean ref_read_columns(const char *path, const char *name, size_t cols,
   H5Fclose(file);
   *rows = (size_t)dims[0];
   return ok;
+}
+
+gchar **ref_read_class_names(const char *path, const char *env_name,
+                             GError **error) {
+  hid_t const file = open_file(path, env_name, error);
+  if (file < 0) return NULL;
+  gchar **names = NULL;
+  read_class_names(file, &names, error);
+  H5Fclose(file);
+  return names;
 }

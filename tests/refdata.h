@@ -118,4 +118,11 @@ const char *geometry_pairs_path(void);
 gboolean ref_read_columns(const char *path, const char *name, size_t cols,
                           size_t *rows, double **data, GError **error);
 
+/* The comma-separated attribute `class_names` of the root of the HDF5
+ * file at `path` (env_name: the variable it came from, for the message),
+ * split: a NULL-terminated vector (g_strfreev it), or NULL with *error
+ * set. */
+gchar **ref_read_class_names(const char *path, const char *env_name,
+                             GError **error);
+
 #endif /* PW85_TESTS_REFDATA_H */

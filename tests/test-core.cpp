@@ -22,7 +22,7 @@
 
 namespace {
 
-using pw85::detail::Ldl;
+using Ldl = pw85::detail::Ldl<3>;
 
 // A random symmetric positive definite form R·diag(e)·Rᵀ (R from a random
 // unit quaternion), eigenvalues 10^[-4, 4] times 2^[-300, 300]: condition

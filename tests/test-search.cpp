@@ -36,8 +36,8 @@ GeneralPairs pairs;
 // The prepared and oriented problem of general pair n (rescaled: λ* is
 // unchanged, or 1 − λ* if oriented the other way; μ² is scaled by
 // 2^−shift).
-core::Problem problem(size_t n) {
-  core::Problem p;
+core::Problem<3> problem(size_t n) {
+  core::Problem<3> p;
   g_assert_true(core::prepare(pairs.r12 + 3 * n, pairs.q1 + 6 * n,
                               pairs.q2 + 6 * n, &p) == core::Status::success);
   g_assert_false(p.r_is_zero);
@@ -48,12 +48,12 @@ core::Problem problem(size_t n) {
 
 // λ* of the problem, in its orientation (orient() may have exchanged Q1
 // and Q2; 1 − λ* is exact for λ* ≥ ½).
-double star_of(core::Problem const &p, size_t n) {
+double star_of(core::Problem<3> const &p, size_t n) {
   return p.swapped ? 1.0 - pairs.LAMBDA[n] : pairs.LAMBDA[n];
 }
 
 template <bool Fast>
-core::NewtonResult newton(core::Problem const &p, double lambda, int steps) {
+core::NewtonResult<3> newton(core::Problem<3> const &p, double lambda, int steps) {
   return core::newton_on_omega<Fast>(p, lambda, steps);
 }
 
@@ -74,12 +74,12 @@ void test_newton_invariants() {
   double worst_excess = 0.0, worst_converged = 0.0;
   int checked = 0;
   for (size_t n = 0; n < pairs.count; n++) {
-    core::Problem const p = problem(n);
+    core::Problem<3> const p = problem(n);
     double const star = star_of(p, n);
     double const start = core::warm_start(p);
     core::Bracket prev;
     for (int k = 1; k <= core::warm_newton_iter; k++) {
-      core::NewtonResult const r = p.moderate ? newton<true>(p, start, k)
+      core::NewtonResult<3> const r = p.moderate ? newton<true>(p, start, k)
                                               : newton<false>(p, start, k);
       core::Bracket const &b = r.bracket;
       if (!(b.lo >= prev.lo && b.hi <= prev.hi && b.lo < b.hi))
@@ -114,7 +114,7 @@ void test_newton_invariants() {
 }
 
 template <bool Fast>
-void brent_at(core::Problem const &p, double centre, int iter,
+void brent_at(core::Problem<3> const &p, double centre, int iter,
               core::BrentResult *out) {
   double const neg_f = core::neg_f_or_zero<Fast>(centre, p);
   g_assert_true(core::certify_with_brent<Fast>(p, centre, neg_f, iter, out) ==
@@ -122,8 +122,8 @@ void brent_at(core::Problem const &p, double centre, int iter,
 }
 
 template <bool Fast>
-double cond_at(core::Problem const &p, double lambda) {
-  core::PlainPoint pt;
+double cond_at(core::Problem<3> const &p, double lambda) {
+  core::PlainPoint<3> pt;
   core::PlainBounds b;
   if (!core::evaluate_plain<Fast>(lambda, p, &pt) || !core::plain_bounds(pt, &b))
     return HUGE_VAL;
@@ -138,7 +138,7 @@ double cond_at(core::Problem const &p, double lambda) {
 // about |f″|·d·w, is below η, that is up to d = η/(|f″|·w), w the width of
 // the first bracket.
 template <bool Fast>
-double noise_zone(core::Problem const &p, double star) {
+double noise_zone(core::Problem<3> const &p, double star) {
   double res[3];
   core::residual(star, p.r, p.q1, p.q2, res);
   double const eta = core::plain_form_margin * cond_at<Fast>(p, star) * res[0];
@@ -156,7 +156,7 @@ void test_brent_invariants() {
   int checked = 0;
   double worst = 0.0;  // excess of λ* over the bracket / noise zone
   for (size_t n = 0; n < pairs.count; n++) {
-    core::Problem const p = problem(n);
+    core::Problem<3> const p = problem(n);
     double const star = star_of(p, n);
     double const zone = p.moderate ? noise_zone<true>(p, star)
                                    : noise_zone<false>(p, star);
@@ -204,9 +204,9 @@ void test_brent_invariants() {
 }
 
 // The compensated f at λ, f(λ) ≤ μ² in exact arithmetic.
-double f_compensated(core::Problem const &p, double lambda) {
+double f_compensated(core::Problem<3> const &p, double lambda) {
   core::Compensated a;
-  if (!core::evaluate_compensated<false>(lambda, p.r, p.q1, p.q2, false,
+  if (!core::evaluate_compensated<false, 3>(lambda, p.r, p.q1, p.q2, false,
                                             nullptr, &a))
     return -HUGE_VAL;
   return a.f;
@@ -220,7 +220,7 @@ double f_compensated(core::Problem const &p, double lambda) {
 void test_result_bounds_every_f() {
   int checked = 0;
   for (size_t n = 0; n < pairs.count; n++) {
-    core::Problem const p = problem(n);
+    core::Problem<3> const p = problem(n);
     double out[2];
     g_assert_true((p.moderate ? core::solve<true>(p, out)
                               : core::solve<false>(p, out)) ==
@@ -235,7 +235,7 @@ void test_result_bounds_every_f() {
     double const start = core::warm_start(p);
     points.push_back(start);
     for (int k = 1; k <= core::warm_newton_iter; k++) {
-      core::NewtonResult const r = p.moderate ? newton<true>(p, start, k)
+      core::NewtonResult<3> const r = p.moderate ? newton<true>(p, start, k)
                                               : newton<false>(p, start, k);
       points.push_back(r.last.lambda);
       points.push_back(r.lambda);
@@ -313,8 +313,8 @@ void test_safeguard() {
 }
 
 template <bool Fast>
-double plain_slope(core::Problem const &p, double lambda) {
-  core::PlainPoint pt{};
+double plain_slope(core::Problem<3> const &p, double lambda) {
+  core::PlainPoint<3> pt{};
   core::NewtonStep step{};
   if (!core::evaluate_plain<Fast>(lambda, p, &pt) ||
       !core::newton_step(pt, &step)) {
@@ -331,12 +331,12 @@ double plain_slope(core::Problem const &p, double lambda) {
 void test_finish() {
   double worst = 0.0;
   for (size_t n = 0; n < pairs.count; n++) {
-    core::Problem const p = problem(n);
+    core::Problem<3> const p = problem(n);
     double const star = star_of(p, n);
     double const start = star + (n % 2 ? 1e-9 : -1e-9) * std::min(star, 1 - star);
     double const slope = p.moderate ? plain_slope<true>(p, start)
                                     : plain_slope<false>(p, start);
-    core::FinishStart const s{start, slope, nullptr, nullptr};
+    core::FinishStart<3> const s{start, slope, nullptr, nullptr};
     core::Finished out;
     g_assert_true(core::finish(p, s, &out));
     double const expected = std::ldexp(pairs.MU2[n], -p.shift);

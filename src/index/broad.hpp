@@ -29,7 +29,7 @@
 #include "overlap.hpp"
 #include "scaling.hpp"
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 

@@ -7,7 +7,7 @@
 #define PW85_SRC_INDEX_DEEP_HPP
 
 #include "margins.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 

@@ -30,7 +30,7 @@
 #include "cell_map.hpp"
 #include "margins.hpp"
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 

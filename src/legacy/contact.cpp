@@ -15,7 +15,7 @@ namespace {
 
 namespace core = pw85::detail;
 
-using core::Scaled;
+using Scaled = core::Scaled<3>;
 
 // The start of both contact functions, for input that passed
 // core::check_input(): core::rescale(), then the answers that need no
@@ -28,7 +28,7 @@ using core::Scaled;
 bool answered_before_search(double const r[dim], double const q1[sym],
                             double const q2[sym], Scaled *p, double out[2],
                             Status *status) noexcept {
-  core::Ldl f1, f2;
+  core::Ldl<3> f1, f2;
   if (!core::rescale(r, q1, q2, p) || !core::ldl_decomp(p->q1, &f1) ||
       !core::ldl_decomp(p->q2, &f2)) {
     *status = Status::out_of_range;

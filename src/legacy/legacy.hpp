@@ -9,7 +9,7 @@
 #define PW85_SRC_LEGACY_LEGACY_HPP
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::legacy::detail {
 

@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "status.hpp"
-#include "sym3.hpp"
+#include "sym.hpp"
 
 namespace pw85::detail {
 
