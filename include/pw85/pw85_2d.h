@@ -122,8 +122,9 @@ PW85_API double pw85_2d_f_neg(double lambda,
  *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity,
  *         out[1] = λ; or if the diagonal entries of q1 and q2 together
  *         span more than the range of a double, or q1 or q2, positive
- *         definite, cannot be factorised in double once both are rescaled
- *         (out untouched);
+ *         definite, cannot be factorised in double once both are rescaled,
+ *         or f cannot be evaluated in double along the search (forms
+ *         singular far beyond the domain; out untouched);
  *         PW85_ENOMEM if GSL's minimiser would need more than the working
  *         memory reserved on the stack (out untouched; not expected).
  * @since 2.5.0
