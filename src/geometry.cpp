@@ -119,14 +119,25 @@ PW85_INLINE bool output_steps(Contact<D> const &c, double *out,
   using O = Outputs<D>;
   constexpr int sym = sym_size(D);
   using L = Layout<D>;
-  Problem<D> const &p = c.p;
   out[O::mu2] = c.mu2;
   out[O::lambda] = 0.5;
-  if (!p.r_is_zero) {
+  if (!c.p.r_is_zero) {
     // λ' and s of the problem; (1 − λ', Q1') and (λ', Q2') are the weights
-    // and forms of (9a) and (9b) in the problem's orientation.
-    double const lambda =
+    // and forms of (9a) and (9b) in the problem's orientation. Where the
+    // search's orientation (the sphere model's side of ½) was wrong, λ' > ½,
+    // the polish continues with the forms exchanged, from 1 − λ' (exact):
+    // near 1, λ' carries only ulp(1)/(1 − λ') of 1 − λ' relative, and s,
+    // hence x, moves with λ by up to ‖Q2 − Q1‖/‖Q(λ)‖ times that (λ 5e-14
+    // relative off at λ* = 1 − 1.0e-3, and x − c1 14·u·cond(Q(λ)) off:
+    // tests/fuzz/open/geometry/point-e9ebfbf5).
+    Problem<D> p = c.p;
+    double lambda =
         p.moderate ? polish<true>(p, c.lambda) : polish<false>(p, c.lambda);
+    if (lambda > 0.5) {
+      exchange_forms(&p);
+      lambda = p.moderate ? polish<true>(p, 1.0 - lambda)
+                          : polish<false>(p, 1.0 - lambda);
+    }
     double s[D], s_lo[D];
     if (!solve_accurately(p, lambda, s, s_lo)) return false;
     // Everything below is computed from s·2^−es, Q1'·2^−e1 and Q2'·2^−e2,

@@ -43,17 +43,12 @@ inline void quads(Problem<D> *p) noexcept {
 // maximiser near 1 is computed as one near 0, in the variable that keeps
 // its digits (1 − λ* may not be representable as 1 − a double, but it is
 // as a double).
+// Q1 and Q2 exchanged, with their factors and what is derived from them;
+// λ becomes 1 − λ and p->swapped flips.
 template <int D>
-inline void orient(Problem<D> *p) noexcept {
+inline void exchange_forms(Problem<D> *p) noexcept {
   constexpr int n = sym_size(D);
-  bool swap = p->a1 < p->a2;
-  if (p->a1 == p->a2) {  // the first entry that differs decides
-    int k = 0;
-    while (k < n && p->q1[k] == p->q2[k]) ++k;
-    swap = k < n && p->q2[k] < p->q1[k];
-  }
-  p->swapped = swap;
-  if (!swap) return;
+  p->swapped = !p->swapped;
   for (int k = 0; k < n; ++k) {
     double const t = p->q1[k];
     p->q1[k] = p->q2[k];
@@ -68,6 +63,19 @@ inline void orient(Problem<D> *p) noexcept {
   double const t = p->tinv1;
   p->tinv1 = p->tinv2;
   p->tinv2 = t;
+}
+
+template <int D>
+inline void orient(Problem<D> *p) noexcept {
+  constexpr int n = sym_size(D);
+  bool swap = p->a1 < p->a2;
+  if (p->a1 == p->a2) {  // the first entry that differs decides
+    int k = 0;
+    while (k < n && p->q1[k] == p->q2[k]) ++k;
+    swap = k < n && p->q2[k] < p->q1[k];
+  }
+  p->swapped = false;
+  if (swap) exchange_forms(p);
 }
 
 // prepare() where the factors of the rescaled forms did not prove them

@@ -92,11 +92,11 @@ bool rescale(double const *r, double const *q1, double const *q2,
   s->q_exp = eq;
   // |x| < 2^e for the exponent e of x, and |x| ≥ 2^(e−1).
   s->moderate = emax - eq <= 400 && emin - eq >= -399;
-  // A diagonal entry overflows only if the diagonals span more than the
-  // range of doubles (emax − eq > 1024); an off-diagonal entry cannot
-  // overflow without exceeding √(Qᵢᵢ·Qⱼⱼ), which leaves the form
-  // indefinite: its factorisation then fails on a non-finite pivot.
-  return emax - eq <= 1024;
+  // No diagonal entry overflows within that span (emax − eq ≤ 996); an
+  // off-diagonal entry cannot overflow without exceeding √(Qᵢᵢ·Qⱼⱼ),
+  // which leaves the form indefinite: its factorisation then fails on a
+  // non-finite pivot.
+  return emax - emin <= max_diagonal_span;
 }
 
 template bool rescale<2>(double const *, double const *, double const *,

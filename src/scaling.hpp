@@ -38,10 +38,24 @@ struct Scaled {
   bool moderate;
 };
 
+// The widest span of the diagonal entries of Q1 and Q2 together that the
+// search takes on, as a difference of binary exponents (exponent()).
+// Beyond it, rescaled to the middle of the span, the smaller form's
+// entries come within 2^−1008 of the bottom of the normal range, where the
+// low parts of the compensated finish's error-free products are subnormal,
+// hence inexact. Measured against 700-digit references (gen_geometry.py):
+// μ² 1 to 3 ulps off from spans of 2^2024 up (fuzz-contact-raw's three
+// inputs at 2^2028 to 2^2045, and 9 of 217 random pairs at 2^2024 and
+// 2^2036, cond(Qᵢ) to 1e15, λ* near 2^−1010); none wrong among 500 at
+// 2^2012 to 2^2020, nor on the 8 finish-* regression pairs at exactly
+// 2^2016.
+inline constexpr int max_diagonal_span = 2016;
+
 // Fills *s from finite input. Returns false when the diagonals of Q1 and
-// Q2 span more than the range of a double, so that a rescaled diagonal
-// entry overflows (decided from the exponents; an off-diagonal entry that
-// overflows leaves the form indefinite, which its factorisation rejects).
+// Q2 span more than max_diagonal_span (decided from the exponents; also
+// where a rescaled diagonal entry would overflow; an off-diagonal entry
+// that overflows leaves the form indefinite, which its factorisation
+// rejects).
 template <int D>
 bool rescale(double const *r, double const *q1, double const *q2,
              Scaled<D> *s) noexcept;

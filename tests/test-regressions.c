@@ -214,7 +214,10 @@ static void test_rho_overflow(void) {
  * test's exact stage read NaN as disjoint: they contradicted each other
  * (and each was wrong on some: the 700-digit μ² are 1.1e-302, 4.9e61,
  * and two below the range of a double). Now PW85_ERANGE from every entry
- * point, outputs untouched (pw85.h). */
+ * point, outputs untouched (pw85.h). And span-*: diagonals spanning 2^2028
+ * to 2^2045, λ* near 2^-1008 (fuzz-contact-raw, seed 28), where μ² was 1
+ * to 2 ulps off: beyond the span the search carries (pw85.h), PW85_ERANGE
+ * since 2.5.0. */
 static void test_beyond_domain(gconstpointer name) {
   Pair const *p = pair(name);
   double out[2] = {-1, -1}, g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
@@ -256,6 +259,24 @@ static void test_finish(gconstpointer name) {
   g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] - lam), <=, tol);
 }
 
+/* fuzz-geometry (seed 33): λ* = 1.0e-3, which the search's orientation
+ * (the sphere model) put near 1, so that the polished λ carried only
+ * ulp(1)/λ* of it relative (5.2e-14 off) and s, hence x − c1, moved with
+ * it (3.7e-14 relative off, 14·u·cond(Q(λ*)) with cond(Q(λ*)) = 23.83 by
+ * mpmath): now within the tests' 8·u·cond(Q(λ*)) of pw85.h (measured 2e-17
+ * and 6e-17 relative). */
+static void test_point_orientation(void) {
+  Pair const *p = pair("point-orientation");
+  double const bound = 8 * 0x1p-53 * 23.83;
+  double g[PW85_GEOM_SIZE];
+  g_assert_cmpint(pw85_contact_geometry(p->in, p->in + 3, p->in + 9, g), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(g[PW85_GEOM_MU2], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] / p->ref[1] - 1), <=, bound);
+  g_assert_cmpfloat(rel3(g + PW85_GEOM_POINT, p->ref + 2), <=, bound);
+  g_assert_cmpfloat(rel3(g + PW85_GEOM_NORMAL, p->ref + 5), <=, bound);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
@@ -277,6 +298,8 @@ int main(int argc, char **argv) {
                        test_flat_lambda);
   g_test_add_func("/pw85/regressions/polish-secant", test_polish_secant);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
+  g_test_add_func("/pw85/regressions/point-orientation",
+                  test_point_orientation);
   g_test_add_data_func("/pw85/regressions/flat-least-slope",
                        "flat-least-slope", test_geo_flat);
   g_test_add_data_func("/pw85/regressions/geo-flat-21e2b386",
@@ -286,7 +309,8 @@ int main(int argc, char **argv) {
   for (int i = 0; i < n_pairs; i++) {
     char path[96];
     g_snprintf(path, sizeof path, "/pw85/regressions/%s", pairs[i].name);
-    if (strncmp(pairs[i].name, "overlap-nan-", 12) == 0)
+    if (strncmp(pairs[i].name, "overlap-nan-", 12) == 0 ||
+        strncmp(pairs[i].name, "span-", 5) == 0)
       g_test_add_data_func(path, pairs[i].name, test_beyond_domain);
     else if (strncmp(pairs[i].name, "finish-", 7) == 0)
       g_test_add_data_func(path, pairs[i].name, test_finish);

@@ -6,6 +6,7 @@
  * 2^1000. (The input contract: test-input-contract.c.) */
 #include <float.h>
 #include <pw85.h>
+#include <pw85_2d.h>
 
 #include "contract.h"
 #include "ddref.h"
@@ -131,6 +132,50 @@ static void test_f_neg_scale(void) {
   }
 }
 
+/* The span of the diagonals that the search carries (pw85.h: binary
+ * exponents at most 2016 apart). Two spheres of radii 2^−504 and 2^504
+ * (forms 2^−1008·I and 2^1008·I: frexp exponents −1007 and 1009, 2016
+ * apart), centres 2^504 apart: μ² = 2^1008/(2^504 + 2^−504)² =
+ * (1 + 2^−1008)^−2, within 2^−1006 of 1, so 1 once rounded; λ* =
+ * ρ1/(ρ1 + ρ2) = 2^−1008/(1 + 2^−1008), which rounds to 2^−1008. The
+ * larger sphere twice as large (exponents 2017 apart): PW85_ERANGE from
+ * every entry point, outputs untouched. The same in 2D. */
+static void test_span_limit(void) {
+  double const r[3] = {0x1p504, 0., 0.};
+  double const q1[PW85_SYM] = {0x1p-1008, 0., 0., 0x1p-1008, 0., 0x1p-1008};
+  double q2[PW85_SYM] = {0x1p1008, 0., 0., 0x1p1008, 0., 0x1p1008};
+  double out[2] = {-1., -1.};
+  int res = 7;
+  g_assert_cmpint(pw85_contact_function(r, q1, q2, out), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, 1.);
+  g_assert_cmpfloat(out[1], ==, 0x1p-1008);
+  double const r2[2] = {0x1p504, 0.};
+  double const p1[3] = {0x1p-1008, 0., 0x1p-1008};
+  double p2[3] = {0x1p1008, 0., 0x1p1008};
+  g_assert_cmpint(pw85_2d_contact_function(r2, p1, p2, out), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, 1.);
+  g_assert_cmpfloat(out[1], ==, 0x1p-1008);
+
+  q2[0] = q2[3] = q2[5] = 0x1p1009;
+  p2[0] = p2[2] = 0x1p1009;
+  double g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
+  for (int k = 0; k < PW85_GEOM_SIZE; k++) g[k] = -1.;
+  for (int k = 0; k < PW85_DERIV_SIZE; k++) d[k] = -1.;
+  out[0] = out[1] = -1.;
+  g_assert_cmpint(pw85_contact_function(r, q1, q2, out), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_overlap(r, q1, q2, &res), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_contact_geometry(r, q1, q2, g), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_contact_derivatives(r, q1, q2, g, d), ==,
+                  PW85_ERANGE);
+  g_assert_cmpint(pw85_2d_contact_function(r2, p1, p2, out), ==,
+                  PW85_ERANGE);
+  g_assert_cmpint(pw85_2d_overlap(r2, p1, p2, &res), ==, PW85_ERANGE);
+  g_assert_true(out[0] == -1. && out[1] == -1. && res == 7);
+  for (int k = 0; k < PW85_GEOM_SIZE; k++) g_assert_cmpfloat(g[k], ==, -1.);
+  for (int k = 0; k < PW85_DERIV_SIZE; k++) g_assert_cmpfloat(d[k], ==, -1.);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -141,5 +186,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/scaling/contact_function/size-ratio",
                   test_size_ratio);
   g_test_add_func("/pw85/scaling/f_neg/power-of-two", test_f_neg_scale);
+  g_test_add_func("/pw85/scaling/span-limit", test_span_limit);
   return g_test_run();
 }

@@ -316,8 +316,12 @@ PW85_API void pw85__residual(double lambda, double const r12[PW85_DIM],
  *         PW85_ENOTPOSDEF if q1 or q2 is not positive definite as stored,
  *         by the rule above (out untouched);
  *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity, out[1] = λ;
- *         or if the diagonal entries of q1 and q2 together span more than
- *         the range of a double (ratio above about 1e600: out untouched);
+ *         or if the diagonal entries of q1 and q2 together span more
+ *         than the search can carry (their binary exponents, as frexp
+ *         gives them, more than 2016 apart: a ratio of largest to
+ *         smallest above about 1e607; out untouched; since 2.5.0, before
+ *         which the limit was the range of a double, about 1e616, and μ²
+ *         could be 1 to 3 ulps off above about 1e609);
  *         or if q1 or q2, positive definite, cannot be factorised in
  *         double once both are rescaled (singular to that precision,
  *         cond ≳ 1/ε: out untouched), or f cannot be evaluated in double

@@ -121,7 +121,8 @@ PW85_API double pw85_2d_f_neg(double lambda,
  *         by the rule above (out untouched);
  *         PW85_ERANGE if μ² exceeds DBL_MAX: out[0] = +infinity,
  *         out[1] = λ; or if the diagonal entries of q1 and q2 together
- *         span more than the range of a double, or q1 or q2, positive
+ *         span more than the search can carry (as pw85.h: binary
+ *         exponents more than 2016 apart, about 1e607), or q1 or q2, positive
  *         definite, cannot be factorised in double once both are rescaled,
  *         or f cannot be evaluated in double along the search (forms
  *         singular far beyond the domain; out untouched);

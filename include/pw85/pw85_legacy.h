@@ -187,8 +187,9 @@ PW85_API double pw85_legacy_f2(double lambda, double const r12[PW85_DIM],
  *         rule of pw85.h, the same as pw85_contact_function's (out
  *         untouched);
  *         PW85_ERANGE if μ² exceeds DBL_MAX (out[0] = +infinity, out[1] =
- *         λ), or if the diagonals of q1 and q2 together span more than the
- *         range of a double (out untouched);
+ *         λ), or if the diagonals of q1 and q2 together span more than
+ *         pw85_contact_function() carries (about 1e607, as pw85.h
+ *         states; out untouched);
  *         PW85_ENOCONV if Newton's method failed: out[0] = the largest f(λ)
  *         met at an iterate λ in [0, 1] (≤ μ²; the first iterate is ½),
  *         out[1] = that λ.
