@@ -418,3 +418,80 @@ def test_constructor_errors():
         d2.ellipse([1.0, 2.0, 3.0], 0.0)
     with pytest.raises(TypeError, match="theta"):
         d2.ellipse([1.0, 2.0], "0")
+
+
+# ---------------------------------------------------------------------------
+# tutorial/expected-ellipses.txt, the output that the tests ellipses-c and
+# ellipses-py compare the tutorials' with, recomputed here in mpmath (40
+# digits), from the tutorial's data and the definitions only: Q = R·diag(a²)
+# ·Rᵀ; μ² = max f by a root of f′ in [0, 1]; x − c1 = (1 − λ)·Q1·s and
+# n = s/‖s‖ (docs: "Theory"); the derivatives of μ² by central
+# differences of μ² itself; the verdicts from t²·μ² − 1.
+
+def test_tutorial_expected_output():
+    mpmath = pytest.importorskip("mpmath", reason="mpmath recomputes the "
+                                 "expected output (Debian: python3-mpmath)")
+    mp = mpmath.mp
+    mp.dps = 40
+
+    def form(a, theta):
+        c, s = mpmath.cos(theta), mpmath.sin(theta)
+        r = mpmath.matrix([[c, -s], [s, c]])
+        return r * mpmath.diag([a[0] ** 2, a[1] ** 2]) * r.T
+
+    def contact(r, q1, q2):
+        def s_of(lam):
+            return mpmath.lu_solve((1 - lam) * q1 + lam * q2, r)
+
+        def fprime(lam):  # (1 − λ)²·sᵀQ1s − λ²·sᵀQ2s
+            s = s_of(lam)
+            return ((1 - lam) ** 2 * (s.T * q1 * s)[0]
+                    - lam ** 2 * (s.T * q2 * s)[0])
+        lam = mpmath.findroot(fprime, (mpmath.mpf(0), mpmath.mpf(1)),
+                              solver="anderson")
+        s = s_of(lam)
+        return lam * (1 - lam) * (r.T * s)[0], lam, s
+
+    deg = mpmath.pi / 180
+    a1, t1 = [mpmath.mpf(2), mpmath.mpf("0.5")], 30 * deg
+    a2, t2 = [mpmath.mpf("1.2"), mpmath.mpf("0.6")], -45 * deg
+    q1, q2 = form(a1, t1), form(a2, t2)
+    r12 = mpmath.matrix([3, mpmath.mpf("1.5")])
+    mu2, lam, s = contact(r12, q1, q2)
+    x = (1 - lam) * q1 * s
+    n = s / mpmath.norm(s)
+
+    half = r12 / 2
+    mu2h = contact(half, q1, q2)[0]
+    h = mpmath.mpf("1e-15")
+
+    def d_mu2(shift):
+        plus, minus = shift(h), shift(-h)
+        return (contact(*plus)[0] - contact(*minus)[0]) / (2 * h)
+    e0, e1 = mpmath.matrix([1, 0]), mpmath.matrix([0, 1])
+    d_r = [d_mu2(lambda e: (half + e * v, q1, q2)) for v in (e0, e1)]
+    d_t1 = d_mu2(lambda e: (half, form(a1, t1 + e), q2))
+    d_t2 = d_mu2(lambda e: (half, q1, form(a2, t2 + e)))
+    du = -2 * (1 - mu2h)
+    verdicts = ["%+d" % (1 if (k / mpmath.mpf(4)) ** 2 * mu2 > 1 else -1)
+                for k in range(1, 7)]
+
+    def f6(v):
+        return "%.6f" % float(v)
+    expected = [
+        "q1 = (%s, %s, %s)" % (f6(q1[0, 0]), f6(q1[0, 1]), f6(q1[1, 1])),
+        "q2 = (%s, %s, %s)" % (f6(q2[0, 0]), f6(q2[0, 1]), f6(q2[1, 1])),
+        "E2: semi-axes (%s, %s), angle %s degrees" % (f6(a2[0]), f6(a2[1]),
+                                                      f6(t2 / deg)),
+        "mu^2 = %s, lambda = %s: %s" % (
+            f6(mu2), f6(lam),
+            "they are disjoint" if mu2 > 1 else "they overlap"),
+        "x - c1 = (%s, %s)" % (f6(x[0]), f6(x[1])),
+        "n = (%s, %s)" % (f6(n[0]), f6(n[1])),
+        "at r12/2: mu^2 = %s, force on E2 = (%s, %s), torques %s, %s" % (
+            f6(mu2h), f6(-du * d_r[0]), f6(-du * d_r[1]), f6(-du * d_t1),
+            f6(-du * d_t2)),
+        "overlap at t = 0.25, 0.5, ..., 1.5: " + " ".join(verdicts),
+    ]
+    path = SOURCE_ROOT / "tutorial" / "expected-ellipses.txt"
+    assert path.read_text().splitlines() == expected
