@@ -25,11 +25,12 @@ compiled for two dimensions), with one difference: a rotation in the plane
 has one angle, so the torques are the scalars ∂μ²/∂θ1 and ∂μ²/∂θ2 (see
 `contact_derivatives`). The docs page "Ellipses" draws the conventions.
 
-Example::
+Example: an ellipse of semi-axes 2 and 0.5 turned by 0.3 radians, a unit
+circle, centres (3, 1) apart::
 
     from pypw85 import d2
-    q1 = d2.ellipse([2.0, 0.5], 0.3)        # semi-axes, angle
-    q2 = d2.ellipse([1.0, 1.0], 0.0)        # a unit circle
+    q1 = d2.ellipse([2.0, 0.5], 0.3)
+    q2 = d2.ellipse([1.0, 1.0], 0.0)
     mu2, lambda_ = d2.contact_function([3.0, 1.0], q1, q2)
 """
 
