@@ -118,11 +118,40 @@ def header_macros(path):
     return {n for n in names if not n.endswith("_H")}
 
 
+_CPP_TOKEN = re.compile(
+    r"(?P<ns>\bnamespace\s+(?P<name>\w+)\s*\{)"
+    r"|(?P<fn>\binline\s[^;{}]*?\b(?P<fname>\w+)\s*\()"
+    r"|(?P<const>\bconstexpr\s[^;{}=]*?\b(?P<cname>\w+)\s*[{=])"
+    r"|(?P<open>\{)|(?P<close>\})")
+
+
+def _without_comments(text):
+    """C++ text with its comments and string literals blanked."""
+    return re.sub(r'//[^\n]*|/\*.*?\*/|"(?:\\.|[^"\\])*"',
+                  lambda m: " " * len(m.group(0)), text, flags=re.S)
+
+
 def cpp_names(path):
-    """The functions and constants that a C++ header declares."""
-    text = Path(path).read_text(encoding="utf-8")
-    functions = set(re.findall(r"\binline\s[^;{}]*?\b(\w+)\s*\(", text))
-    constants = set(re.findall(r"\bconstexpr\s[^;{}=]*?\b(\w+)\s*[{=]", text))
+    """The functions and constants that a C++ header declares, each
+    qualified by the namespaces it is in (pw85::d2::contact_function)."""
+    text = _without_comments(Path(path).read_text(encoding="utf-8"))
+    functions, constants = set(), set()
+    scopes = []  # a namespace name, or None for any other brace
+    for m in _CPP_TOKEN.finditer(text):
+        names = [s for s in scopes if s is not None]
+        if m.group("ns"):
+            scopes.append(m.group("name"))
+        elif m.group("fn"):
+            functions.add("::".join(names + [m.group("fname")]))
+            # the body or the initialiser list follows: a brace of its own
+        elif m.group("const"):
+            constants.add("::".join(names + [m.group("cname")]))
+            if m.group(0).endswith("{"):
+                scopes.append(None)
+        elif m.group("open"):
+            scopes.append(None)
+        elif m.group("close") and scopes:
+            scopes.pop()
     return functions, constants
 
 
@@ -169,12 +198,9 @@ def main():
         if header.endswith(".hpp"):
             functions, constants = cpp_names(header)
             for name in sorted(functions):
-                require("cpp:function", "pw85::" + name, "C++ function", "pw85::" + name)
+                require("cpp:function", name, "C++ function", name)
             for name in sorted(constants):
-                qualified = [n for (k, n) in inventory
-                             if k == "cpp:member" and n.split("::")[-1] == name]
-                require("cpp:member", qualified[0] if qualified else "pw85::" + name,
-                        "C++ constant")
+                require("cpp:member", name, "C++ constant")
             entries = cpp_classes(args.xml, header)
             for role, name, described in entries:
                 require(role, name, "C++ class member")

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// pw85.hpp: the C++ API forwards to the C ABI with the same results.
+// pw85.hpp: the C++ API forwards to the C ABI with the same results
+// (pw85::d2: to pw85_2d.h).
 #include <glib.h>
 
 #include <cmath>
@@ -178,11 +179,167 @@ void test_wrappers() {
   g_assert_cmpmem(qb + pw85::sym, sizeof qc, qc, sizeof qc);
 }
 
+// pw85::d2 forwards to pw85_2d.h: the same bits and statuses as the C
+// functions, on a pair that is not symmetric (a wrapper that swapped q1
+// and q2, or r12's sign, would differ), and values known in closed form.
+void test_2d() {
+  static_assert(pw85::d2::dim == PW85_2D_DIM && pw85::d2::sym == PW85_2D_SYM,
+                "dimensions");
+  static_assert(pw85::d2::geom::mu2 == PW85_2D_GEOM_MU2 &&
+                    pw85::d2::geom::lambda == PW85_2D_GEOM_LAMBDA &&
+                    pw85::d2::geom::point == PW85_2D_GEOM_POINT &&
+                    pw85::d2::geom::normal == PW85_2D_GEOM_NORMAL &&
+                    pw85::d2::geom::size == PW85_2D_GEOM_SIZE &&
+                    pw85::d2::deriv::r12 == PW85_2D_DERIV_R12 &&
+                    pw85::d2::deriv::theta1 == PW85_2D_DERIV_THETA1 &&
+                    pw85::d2::deriv::theta2 == PW85_2D_DERIV_THETA2 &&
+                    pw85::d2::deriv::q1 == PW85_2D_DERIV_Q1 &&
+                    pw85::d2::deriv::q2 == PW85_2D_DERIV_Q2 &&
+                    pw85::d2::deriv::size == PW85_2D_DERIV_SIZE,
+                "pw85.hpp mirrors the layouts of pw85_2d.h");
+  namespace d2 = pw85::d2;
+  double const r[d2::dim] = {0.7, -1.1};
+  double const qa[d2::sym] = {4., 0.5, 0.25};
+  double const qb[d2::sym] = {1., -0.3, 2.};
+
+  double params[8] = {r[0], r[1], qa[0], qa[1], qa[2], qb[0], qb[1], qb[2]};
+  for (double lambda : {0., 0.3, 0.5, 1.})
+    g_assert_cmpfloat(d2::f_neg(lambda, r, qa, qb), ==,
+                      pw85_2d_f_neg(lambda, params));
+  g_assert_cmpfloat(d2::f_neg(0.3, r, qa, qb), !=, d2::f_neg(0.3, r, qb, qa));
+  g_assert_true(std::isnan(d2::f_neg(0.5, r, nullptr, qb)));
+
+  double out[2], out_c[2];
+  g_assert_cmpint(d2::contact_function(r, qa, qb, out), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_contact_function(r, qa, qb, out_c), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpmem(out, sizeof out, out_c, sizeof out_c);
+  int result = 0, result_c = 0;
+  g_assert_cmpint(d2::overlap(r, qa, qb, &result), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_overlap(r, qa, qb, &result_c), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, result_c);
+  g_assert_cmpint(result, ==, out[0] < 1. ? -1 : 1);
+
+  double g[d2::geom::size], g_c[d2::geom::size];
+  double d[d2::deriv::size], d_c[d2::deriv::size];
+  g_assert_cmpint(d2::contact_geometry(r, qa, qb, g), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_contact_geometry(r, qa, qb, g_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(g, sizeof g, g_c, sizeof g_c);
+  g_assert_cmpint(d2::contact_derivatives(r, qa, qb, g, d), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_contact_derivatives(r, qa, qb, g_c, d_c), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpmem(g, sizeof g, g_c, sizeof g_c);
+  g_assert_cmpmem(d, sizeof d, d_c, sizeof d_c);
+  g_assert_cmpfloat(g[d2::geom::mu2], ==, out[0]);
+
+  // Two circles of radii 1 and 2, centres 6 apart: μ = 6/(1 + 2), so
+  // μ² = 4 exactly, and λ = 1/3 (seed, "Theory": spheres).
+  double const six[d2::dim] = {0., 6.}, c1[d2::sym] = {1., 0., 1.};
+  double const c2[d2::sym] = {4., 0., 4.};
+  g_assert_cmpint(d2::contact_function(six, c1, c2, out), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, 4.);
+  g_assert_cmpfloat_with_epsilon(out[1], 1. / 3., 4e-16);
+
+  // Constructors: exact for θ = 0 (cos 0 = 1, sin 0 = 0) and back.
+  double const semi[d2::dim] = {3., 0.5};
+  double q[d2::sym], q_c[d2::sym], ax[d2::dim], ax_c[d2::dim], th, th_c;
+  g_assert_cmpint(d2::ellipse(semi, 0., q), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(q[0], ==, 9.);
+  g_assert_cmpfloat(q[1], ==, 0.);
+  g_assert_cmpfloat(q[2], ==, 0.25);
+  g_assert_cmpint(d2::ellipse(semi, 0.4, q), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_ellipse(semi, 0.4, q_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(q, sizeof q, q_c, sizeof q_c);
+  g_assert_cmpint(d2::principal_axes(qb, ax, &th), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_principal_axes(qb, ax_c, &th_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(ax, sizeof ax, ax_c, sizeof ax_c);
+  g_assert_cmpfloat(th, ==, th_c);
+
+  // Errors: the statuses of pw85_2d.h, outputs untouched.
+  double const nan_r[d2::dim] = {NAN, 0.}, neg[d2::sym] = {1., 2., 1.};
+  double const zero_axis[d2::dim] = {1., 0.};
+  double keep[2] = {42., -7.};
+  g_assert_cmpint(d2::contact_function(r, qa, nullptr, keep), ==,
+                  PW85_EFAULT);
+  g_assert_cmpint(d2::contact_function(nan_r, qa, qb, keep), ==, PW85_EDOM);
+  g_assert_cmpint(d2::contact_function(r, neg, qb, keep), ==,
+                  PW85_ENOTPOSDEF);
+  g_assert_cmpfloat(keep[0], ==, 42.);
+  g_assert_cmpfloat(keep[1], ==, -7.);
+  result = 42;
+  g_assert_cmpint(d2::overlap(r, qa, neg, &result), ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(result, ==, 42);
+  g_assert_cmpint(d2::contact_geometry(nan_r, qa, qb, g), ==, PW85_EDOM);
+  g_assert_cmpint(d2::contact_derivatives(r, neg, qb, g, d), ==,
+                  PW85_ENOTPOSDEF);
+  g_assert_cmpint(d2::ellipse(zero_axis, 0., q), ==, PW85_EINVAL);
+  g_assert_cmpint(d2::ellipse(semi, NAN, q), ==, PW85_EDOM);
+  g_assert_cmpint(d2::principal_axes(neg, ax, &th), ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(d2::principal_axes(qb, ax, nullptr), ==, PW85_EFAULT);
+
+  // The batches: pair i = (r, qa, qb[i]) against the single-pair calls;
+  // a stride of 1 is refused (PW85_EINVAL).
+  double const qbs[2 * d2::sym] = {qb[0], qb[1], qb[2], qa[0], qa[1], qa[2]};
+  double ob[4], gb[2 * d2::geom::size], db[2 * d2::deriv::size];
+  int rb[2], sb[2] = {-1, -1};
+  g_assert_cmpint(d2::contact_function_batch(2, r, 0, qa, 0, qbs, d2::sym, ob,
+                                             sb, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(sb[0], ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_contact_function(r, qa, qbs + 3, out_c), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpmem(ob + 2, sizeof out_c, out_c, sizeof out_c);
+  g_assert_cmpint(d2::contact_function(r, qa, qb, out_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(ob, sizeof out_c, out_c, sizeof out_c);
+  g_assert_cmpint(d2::contact_function_batch(2, r, 1, qa, 0, qbs, d2::sym, ob,
+                                             sb, 1),
+                  ==, PW85_EINVAL);
+  g_assert_cmpint(d2::overlap_batch(2, r, 0, qa, 0, qbs, d2::sym, rb, nullptr,
+                                    1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(rb[0], ==, result_c);
+  g_assert_cmpint(pw85_2d_overlap(r, qa, qa, &result_c), ==, PW85_SUCCESS);
+  g_assert_cmpint(rb[1], ==, result_c);
+  g_assert_cmpint(d2::contact_geometry_batch(2, r, 0, qa, 0, qbs, d2::sym,
+                                             gb, nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_contact_derivatives(r, qa, qa, g_c, d_c), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpmem(gb + d2::geom::size, sizeof g_c, g_c, sizeof g_c);
+  g_assert_cmpint(d2::contact_derivatives_batch(2, r, 0, qa, 0, qbs, d2::sym,
+                                                gb, db, nullptr, 1),
+                  ==, PW85_SUCCESS);
+  g_assert_cmpmem(db + d2::deriv::size, sizeof d_c, d_c, sizeof d_c);
+  g_assert_cmpmem(gb + d2::geom::size, sizeof g_c, g_c, sizeof g_c);
+  // A failing pair: its status, the first failing one returned.
+  double const bad_qbs[2 * d2::sym] = {qb[0], qb[1], qb[2], 1., 2., 1.};
+  g_assert_cmpint(d2::overlap_batch(2, r, 0, qa, 0, bad_qbs, d2::sym, rb, sb,
+                                    1),
+                  ==, PW85_ENOTPOSDEF);
+  g_assert_cmpint(sb[0], ==, PW85_SUCCESS);
+  g_assert_cmpint(sb[1], ==, PW85_ENOTPOSDEF);
+
+  double const thetas[2] = {0.4, -1.2};
+  double qq[2 * d2::sym], ab[2 * d2::dim], tb[2];
+  g_assert_cmpint(d2::ellipse_batch(2, semi, 0, thetas, 1, qq, sb, 1), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_ellipse(semi, -1.2, q_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(qq + d2::sym, sizeof q_c, q_c, sizeof q_c);
+  g_assert_cmpint(d2::principal_axes_batch(2, qq, d2::sym, ab, tb, sb, 1), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_principal_axes(q_c, ax_c, &th_c), ==, PW85_SUCCESS);
+  g_assert_cmpmem(ab + d2::dim, sizeof ax_c, ax_c, sizeof ax_c);
+  g_assert_cmpfloat(tb[1], ==, th_c);
+  g_assert_cmpint(d2::ellipse_batch(2, semi, 1, thetas, 1, qq, sb, 1), ==,
+                  PW85_EINVAL);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, nullptr);
   g_test_add_func("/pw85/cpp/constants", test_constants);
   g_test_add_func("/pw85/cpp/wrappers", test_wrappers);
+  g_test_add_func("/pw85/cpp/2d", test_2d);
   return g_test_run();
 }

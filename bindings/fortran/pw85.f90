@@ -16,6 +16,11 @@
 !> integer(c_int). Then a few Fortran-friendly wrappers: pw85_contact (μ²
 !> and λ as scalars, the sizes of the arrays checked), pw85_message and
 !> pw85_library_version (the C strings as Fortran strings).
+!>
+!> Ellipses (pw85_2d.h, @since 2.5.0): the functions pw85_2d_* under their
+!> C names, over vectors of PW85_2D_DIM = 2 and forms of PW85_2D_SYM = 3,
+!> q(1) = Q11, q(2) = Q12, q(3) = Q22; and pw85_2d_contact, the
+!> counterpart of pw85_contact.
 module pw85
   use, intrinsic :: iso_c_binding, only: c_char, c_double, c_int, c_ptr, &
                                          c_null_char, c_associated, &
@@ -42,6 +47,16 @@ module pw85
   integer, parameter, public :: PW85_DERIV_R12 = 0, PW85_DERIV_ROT1 = 3, &
     PW85_DERIV_ROT2 = 6, PW85_DERIV_Q1 = 9, PW85_DERIV_Q2 = 15, &
     PW85_DERIV_SIZE = 21
+  !> Ellipses (pw85_2d.h, @since 2.5.0): the sizes of a vector and of a
+  !> form, and the offsets (from 0, as in C: add 1 to index) into the
+  !> outputs of pw85_2d_contact_geometry and pw85_2d_contact_derivatives.
+  integer, parameter, public :: PW85_2D_DIM = 2, PW85_2D_SYM = 3
+  integer, parameter, public :: PW85_2D_GEOM_MU2 = 0, &
+    PW85_2D_GEOM_LAMBDA = 1, PW85_2D_GEOM_POINT = 2, &
+    PW85_2D_GEOM_NORMAL = 4, PW85_2D_GEOM_SIZE = 6
+  integer, parameter, public :: PW85_2D_DERIV_R12 = 0, &
+    PW85_2D_DERIV_THETA1 = 2, PW85_2D_DERIV_THETA2 = 3, &
+    PW85_2D_DERIV_Q1 = 4, PW85_2D_DERIV_Q2 = 7, PW85_2D_DERIV_SIZE = 10
 
   public :: pw85_strerror, pw85_version, pw85__cholesky_decomp, &
             pw85__cholesky_solve, pw85_spheroid, pw85_f_neg, &
@@ -55,7 +70,15 @@ module pw85
             pw85_ellipsoid_quaternion_batch, pw85_principal_axes_batch, &
             pw85_spheroid_checked, pw85_principal_axes_quaternion, &
             pw85_principal_axes_quaternion_batch
+  public :: pw85_2d_f_neg, pw85_2d_contact_function, pw85_2d_overlap, &
+            pw85_2d_contact_geometry, pw85_2d_contact_derivatives, &
+            pw85_2d_ellipse, pw85_2d_principal_axes, &
+            pw85_2d_contact_function_batch, pw85_2d_overlap_batch, &
+            pw85_2d_contact_geometry_batch, &
+            pw85_2d_contact_derivatives_batch, pw85_2d_ellipse_batch, &
+            pw85_2d_principal_axes_batch
   public :: pw85_contact, pw85_message, pw85_library_version
+  public :: pw85_2d_contact
 
   interface
     !> A static message naming a status code.
@@ -308,6 +331,150 @@ module pw85
       integer(c_int), intent(inout) :: status(*)
       integer(c_int), value :: threads
     end function
+
+    ! Ellipses (pw85_2d.h, @since 2.5.0; the contracts are there).
+    !> −f(λ) for two ellipses; params = r12(2), q1(3), q2(3).
+    real(c_double) function pw85_2d_f_neg(lambda, params) &
+        bind(C, name='pw85_2d_f_neg')
+      import :: c_double, PW85_2D_DIM, PW85_2D_SYM
+      real(c_double), value :: lambda
+      real(c_double), intent(in) :: params(PW85_2D_DIM + 2 * PW85_2D_SYM)
+    end function
+
+    !> μ² and λ of two ellipses: out(1) = μ², out(2) = λ; returns a
+    !> status.
+    integer(c_int) function pw85_2d_contact_function(r12, q1, q2, out) &
+        bind(C, name='pw85_2d_contact_function')
+      import :: c_double, c_int, PW85_2D_DIM, PW85_2D_SYM
+      real(c_double), intent(in) :: r12(PW85_2D_DIM), q1(PW85_2D_SYM), &
+                                    q2(PW85_2D_SYM)
+      real(c_double), intent(inout) :: out(2)
+    end function
+
+    !> The certified sign of μ² − 1 for two ellipses: result = −1, 0 or
+    !> +1; returns a status.
+    integer(c_int) function pw85_2d_overlap(r12, q1, q2, result) &
+        bind(C, name='pw85_2d_overlap')
+      import :: c_double, c_int, PW85_2D_DIM, PW85_2D_SYM
+      real(c_double), intent(in) :: r12(PW85_2D_DIM), q1(PW85_2D_SYM), &
+                                    q2(PW85_2D_SYM)
+      integer(c_int), intent(inout) :: result
+    end function
+
+    !> μ², λ, the contact point x − c1 and the normal:
+    !> out(PW85_2D_GEOM_SIZE).
+    integer(c_int) function pw85_2d_contact_geometry(r12, q1, q2, out) &
+        bind(C, name='pw85_2d_contact_geometry')
+      import :: c_double, c_int, PW85_2D_DIM, PW85_2D_SYM, PW85_2D_GEOM_SIZE
+      real(c_double), intent(in) :: r12(PW85_2D_DIM), q1(PW85_2D_SYM), &
+                                    q2(PW85_2D_SYM)
+      real(c_double), intent(inout) :: out(PW85_2D_GEOM_SIZE)
+    end function
+
+    !> pw85_2d_contact_geometry and the derivatives of μ² (∂μ²/∂r12,
+    !> ∂μ²/∂θ1, ∂μ²/∂θ2, ∂μ²/∂q1, ∂μ²/∂q2): d(PW85_2D_DERIV_SIZE).
+    integer(c_int) function pw85_2d_contact_derivatives(r12, q1, q2, &
+        geometry, d) bind(C, name='pw85_2d_contact_derivatives')
+      import :: c_double, c_int, PW85_2D_DIM, PW85_2D_SYM, &
+                PW85_2D_GEOM_SIZE, PW85_2D_DERIV_SIZE
+      real(c_double), intent(in) :: r12(PW85_2D_DIM), q1(PW85_2D_SYM), &
+                                    q2(PW85_2D_SYM)
+      real(c_double), intent(inout) :: geometry(PW85_2D_GEOM_SIZE), &
+                                       d(PW85_2D_DERIV_SIZE)
+    end function
+
+    !> Q = R(θ)·diag(a(1)², a(2)²)·R(θ)ᵀ: a(1) along (cos θ, sin θ).
+    integer(c_int) function pw85_2d_ellipse(a, theta, q) &
+        bind(C, name='pw85_2d_ellipse')
+      import :: c_double, c_int, PW85_2D_DIM, PW85_2D_SYM
+      real(c_double), intent(in) :: a(PW85_2D_DIM)
+      real(c_double), value :: theta
+      real(c_double), intent(inout) :: q(PW85_2D_SYM)
+    end function
+
+    !> Semi-axes (decreasing) and the angle θ in (−π/2, π/2] of a(1).
+    integer(c_int) function pw85_2d_principal_axes(q, a, theta) &
+        bind(C, name='pw85_2d_principal_axes')
+      import :: c_double, c_int, PW85_2D_DIM, PW85_2D_SYM
+      real(c_double), intent(in) :: q(PW85_2D_SYM)
+      real(c_double), intent(inout) :: a(PW85_2D_DIM), theta
+    end function
+
+    ! Batches (as those of pw85.h above: contiguous arrays, strides in
+    ! doubles, status(n) required here).
+    !> pw85_2d_contact_function for n pairs: r12(2, n), q1(3, n), q2(3, n)
+    !> (or one each, stride 0), out(2, n).
+    integer(c_int) function pw85_2d_contact_function_batch(n, r12, &
+        r12_stride, q1, q1_stride, q2, q2_stride, out, status, threads) &
+        bind(C, name='pw85_2d_contact_function_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_2d_overlap for n pairs: result(n).
+    integer(c_int) function pw85_2d_overlap_batch(n, r12, r12_stride, q1, &
+        q1_stride, q2, q2_stride, result, status, threads) &
+        bind(C, name='pw85_2d_overlap_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      integer(c_int), intent(inout) :: result(*), status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_2d_contact_geometry for n pairs: out(PW85_2D_GEOM_SIZE, n).
+    integer(c_int) function pw85_2d_contact_geometry_batch(n, r12, &
+        r12_stride, q1, q1_stride, q2, q2_stride, out, status, threads) &
+        bind(C, name='pw85_2d_contact_geometry_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      real(c_double), intent(inout) :: out(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_2d_contact_derivatives for n pairs:
+    !> geometry(PW85_2D_GEOM_SIZE, n), d(PW85_2D_DERIV_SIZE, n).
+    integer(c_int) function pw85_2d_contact_derivatives_batch(n, r12, &
+        r12_stride, q1, q1_stride, q2, q2_stride, geometry, d, status, &
+        threads) bind(C, name='pw85_2d_contact_derivatives_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, r12_stride, q1_stride, q2_stride
+      real(c_double), intent(in) :: r12(*), q1(*), q2(*)
+      real(c_double), intent(inout) :: geometry(*), d(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_2d_ellipse for n ellipses: a(2, n), theta(n) (strides 2 and 1,
+    !> or 0), q(3, n).
+    integer(c_int) function pw85_2d_ellipse_batch(n, a, a_stride, theta, &
+        theta_stride, q, status, threads) &
+        bind(C, name='pw85_2d_ellipse_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, a_stride, theta_stride
+      real(c_double), intent(in) :: a(*), theta(*)
+      real(c_double), intent(inout) :: q(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
+
+    !> pw85_2d_principal_axes for n forms: a(2, n), theta(n).
+    integer(c_int) function pw85_2d_principal_axes_batch(n, q, q_stride, &
+        a, theta, status, threads) &
+        bind(C, name='pw85_2d_principal_axes_batch')
+      import :: c_double, c_int, c_size_t
+      integer(c_size_t), value :: n, q_stride
+      real(c_double), intent(in) :: q(*)
+      real(c_double), intent(inout) :: a(*), theta(*)
+      integer(c_int), intent(inout) :: status(*)
+      integer(c_int), value :: threads
+    end function
   end interface
 
 contains
@@ -327,6 +494,24 @@ contains
     end if
     out = [mu2, lambda]
     status = pw85_contact_function(r12, q1, q2, out)
+    mu2 = out(1)
+    lambda = out(2)
+  end function
+
+  !> The contact function of two ellipses: pw85_2d_contact_function with
+  !> μ² and λ as scalars, as pw85_contact (a wrong size: PW85_EINVAL).
+  integer(c_int) function pw85_2d_contact(r12, q1, q2, mu2, lambda) &
+      result(status)
+    real(c_double), intent(in) :: r12(:), q1(:), q2(:)
+    real(c_double), intent(inout) :: mu2, lambda
+    real(c_double) :: out(2)
+    if (size(r12) /= PW85_2D_DIM .or. size(q1) /= PW85_2D_SYM .or. &
+        size(q2) /= PW85_2D_SYM) then
+      status = PW85_EINVAL
+      return
+    end if
+    out = [mu2, lambda]
+    status = pw85_2d_contact_function(r12, q1, q2, out)
     mu2 = out(1)
     lambda = out(2)
   end function

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // TypeScript declarations of the pw85 package (index.js). Vectors are 3
 // numbers, symmetric forms 6 (upper triangle, row by row); batches take
-// n records end to end, or one record for every item.
+// n records end to end, or one record for every item. Ellipses (pw85_2d.h)
+// under d2: vectors of 2 numbers, forms [Q00, Q01, Q11].
 
 export type Vector = ArrayLike<number>;
 export type Form = ArrayLike<number>;
@@ -107,3 +108,40 @@ export class Index implements Iterable<number> {
   pairsWithin(t: number, options?: Threads): Pair[];
   toString(): string;
 }
+
+/** The ellipses of pw85_2d.h (pw85.d2): vectors of 2 numbers, forms of 3
+ *  [Q00, Q01, Q11]; the conventions and errors of the functions above. */
+export interface D2 {
+  readonly DIM: 2;
+  readonly SYM: 3;
+  readonly GEOM: Readonly<{ MU2: 0; LAMBDA: 1; POINT: 2; NORMAL: 4;
+    SIZE: 6 }>;
+  readonly DERIV: Readonly<{ R12: 0; THETA1: 2; THETA2: 3; Q1: 4; Q2: 7;
+    SIZE: 10 }>;
+  f(lambda: number, r12: Vector, q1: Form, q2: Form): number;
+  contactFunction(r12: Vector, q1: Form, q2: Form):
+    { mu2: number; lambda: number };
+  /** −1 (overlap), +1 (disjoint), 0 (tangent): a number, not a boolean. */
+  overlap(r12: Vector, q1: Form, q2: Form): -1 | 0 | 1;
+  contactGeometry(r12: Vector, q1: Form, q2: Form): Float64Array;
+  contactDerivatives(r12: Vector, q1: Form, q2: Form):
+    { geometry: Float64Array; d: Float64Array };
+  /** Q = R(θ)·diag(a0², a1²)·R(θ)ᵀ, a[0] along (cos θ, sin θ). */
+  ellipse(a: Vector, theta: number): Float64Array;
+  /** Semi-axes (decreasing), and θ in (−π/2, π/2] of a[0]. */
+  principalAxes(q: Form): { a: Float64Array; theta: number };
+  contactFunctionBatch(r12: ArrayLike<number>, q1: ArrayLike<number>,
+    q2: ArrayLike<number>, options?: Threads): Float64Array;
+  overlapBatch(r12: ArrayLike<number>, q1: ArrayLike<number>,
+    q2: ArrayLike<number>, options?: Threads): Int32Array;
+  contactGeometryBatch(r12: ArrayLike<number>, q1: ArrayLike<number>,
+    q2: ArrayLike<number>, options?: Threads): Float64Array;
+  contactDerivativesBatch(r12: ArrayLike<number>, q1: ArrayLike<number>,
+    q2: ArrayLike<number>, options?: Threads):
+    { geometry: Float64Array; d: Float64Array };
+  ellipseBatch(a: ArrayLike<number>, theta: ArrayLike<number>,
+    options?: Threads): Float64Array;
+  principalAxesBatch(q: ArrayLike<number>, options?: Threads):
+    { a: Float64Array; theta: Float64Array };
+}
+export const d2: D2;

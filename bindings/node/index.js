@@ -18,6 +18,10 @@
  * for vectors, 6·n for forms), or one record for every item (stride 0: no
  * copy), and return typed arrays; one call into the library for all.
  *
+ * Ellipses (pw85_2d.h): the same functions under `d2` (d2.contactFunction,
+ * d2.ellipse, ...), over vectors of 2 numbers and forms of 3,
+ * [Q00, Q01, Q11].
+ *
  * The library: the environment variable PW85_LIBRARY (a full path), or
  * else libpw85.so.2 wherever the dynamic loader finds it.
  */
@@ -453,6 +457,216 @@ function contactDerivativesBatch(r12, q1, q2, { threads = 1 } = {}) {
 }
 
 // ---------------------------------------------------------------------------
+// Ellipses (pw85_2d.h): vectors of 2 numbers, forms [Q00, Q01, Q11].
+
+const DIM_2D = 2;
+const SYM_2D = 3;
+const GEOM_SIZE_2D = 6;
+const DERIV_SIZE_2D = 10;
+
+const c2 = {
+  fNeg: lib.func('double pw85_2d_f_neg(double lambda, const double *params)'),
+  contactFunction: lib.func('int pw85_2d_contact_function(' +
+    'const double *r12, const double *q1, const double *q2, ' +
+    '_Out_ double *out)'),
+  overlap: lib.func('int pw85_2d_overlap(const double *r12, ' +
+    'const double *q1, const double *q2, _Out_ int *result)'),
+  contactGeometry: lib.func('int pw85_2d_contact_geometry(' +
+    'const double *r12, const double *q1, const double *q2, ' +
+    '_Out_ double *out)'),
+  contactDerivatives: lib.func('int pw85_2d_contact_derivatives(' +
+    'const double *r12, const double *q1, const double *q2, ' +
+    '_Out_ double *geometry, _Out_ double *d)'),
+  ellipse: lib.func('int pw85_2d_ellipse(const double *a, double theta, ' +
+    '_Out_ double *q)'),
+  principalAxes: lib.func('int pw85_2d_principal_axes(const double *q, ' +
+    '_Out_ double *a, _Out_ double *theta)'),
+  contactFunctionBatch: lib.func('int pw85_2d_contact_function_batch(' +
+    `${BATCH}, _Out_ double *out, _Out_ int *status, int threads)`),
+  overlapBatch: lib.func(`int pw85_2d_overlap_batch(${BATCH}, ` +
+    '_Out_ int *result, _Out_ int *status, int threads)'),
+  contactGeometryBatch: lib.func('int pw85_2d_contact_geometry_batch(' +
+    `${BATCH}, _Out_ double *out, _Out_ int *status, int threads)`),
+  contactDerivativesBatch: lib.func('int pw85_2d_contact_derivatives_batch(' +
+    `${BATCH}, _Out_ double *geometry, _Out_ double *d, ` +
+    '_Out_ int *status, int threads)'),
+  ellipseBatch: lib.func('int pw85_2d_ellipse_batch(size_t n, ' +
+    'const double *a, size_t a_stride, const double *theta, ' +
+    'size_t theta_stride, _Out_ double *q, _Out_ int *status, int threads)'),
+  principalAxesBatch: lib.func('int pw85_2d_principal_axes_batch(size_t n, ' +
+    'const double *q, size_t q_stride, _Out_ double *a, ' +
+    '_Out_ double *theta, _Out_ int *status, int threads)'),
+};
+
+function pair2d(r12, q1, q2) {
+  return [doubles(r12, DIM_2D, 'r12'), doubles(q1, SYM_2D, 'q1'),
+    doubles(q2, SYM_2D, 'q2')];
+}
+
+function pairs2d(r12, q1, q2) {
+  return records([['r12', r12, DIM_2D], ['q1', q1, SYM_2D],
+    ['q2', q2, SYM_2D]]);
+}
+
+/**
+ * f(λ) for two ellipses (pw85_2d_f_neg).
+ * @returns {number} f(λ); NaN if an input is not finite or a form is not
+ *          positive definite.
+ */
+function f2d(lambda, r12, q1, q2) {
+  const params = new Float64Array(DIM_2D + 2 * SYM_2D);
+  const [r, a, b] = pair2d(r12, q1, q2);
+  params.set(r);
+  params.set(a, DIM_2D);
+  params.set(b, DIM_2D + SYM_2D);
+  return -c2.fNeg(number(lambda, 'lambda'), params);
+}
+
+/** μ² and λ of two ellipses (pw85_2d_contact_function). */
+function contactFunction2d(r12, q1, q2) {
+  const args = pair2d(r12, q1, q2);
+  check(c2.contactFunction(...args, outPair), 'pw85_2d_contact_function',
+    pairDetail(...args));
+  return { mu2: outPair[0], lambda: outPair[1] };
+}
+
+/** −1 (overlap), +1 (disjoint), 0 (tangent within 4 ulps): the certified
+ *  sign of μ² − 1 of two ellipses (pw85_2d_overlap). */
+function overlap2d(r12, q1, q2) {
+  const args = pair2d(r12, q1, q2);
+  check(c2.overlap(...args, outInt), 'pw85_2d_overlap', pairDetail(...args));
+  return outInt[0];
+}
+
+/** μ², λ, the contact point x − c1 and the unit normal, laid out as
+ *  d2.GEOM (pw85_2d_contact_geometry). */
+function contactGeometry2d(r12, q1, q2) {
+  const args = pair2d(r12, q1, q2);
+  const out = new Float64Array(GEOM_SIZE_2D);
+  check(c2.contactGeometry(...args, out), 'pw85_2d_contact_geometry',
+    pairDetail(...args));
+  return out;
+}
+
+/** The geometry and the derivatives of μ² (∂μ²/∂r12, ∂μ²/∂θ1, ∂μ²/∂θ2,
+ *  ∂μ²/∂q1, ∂μ²/∂q2), laid out as d2.GEOM and d2.DERIV
+ *  (pw85_2d_contact_derivatives). */
+function contactDerivatives2d(r12, q1, q2) {
+  const args = pair2d(r12, q1, q2);
+  const geometry = new Float64Array(GEOM_SIZE_2D);
+  const d = new Float64Array(DERIV_SIZE_2D);
+  check(c2.contactDerivatives(...args, geometry, d),
+    'pw85_2d_contact_derivatives', pairDetail(...args));
+  return { geometry, d };
+}
+
+/** Q = R(θ)·diag(a0², a1²)·R(θ)ᵀ, a[0] along (cos θ, sin θ)
+ *  (pw85_2d_ellipse). */
+function ellipse(a, theta) {
+  const ad = doubles(a, DIM_2D, 'a');
+  number(theta, 'theta');
+  const q = new Float64Array(SYM_2D);
+  check(c2.ellipse(ad, theta, q), 'pw85_2d_ellipse',
+    () => `a = ${list(ad)}, theta = ${fmt(theta)}`);
+  return q;
+}
+
+/** The semi-axes (decreasing) and the angle θ in (−π/2, π/2] of a[0]
+ *  (pw85_2d_principal_axes). */
+function principalAxes2d(q) {
+  const qd = doubles(q, SYM_2D, 'q');
+  const a = new Float64Array(DIM_2D);
+  const theta = new Float64Array(1);
+  check(c2.principalAxes(qd, a, theta), 'pw85_2d_principal_axes',
+    () => `q = ${list(qd)}`);
+  return { a, theta: theta[0] };
+}
+
+/** d2.contactFunction for n pairs: Float64Array(2·n) of (μ², λ). */
+function contactFunctionBatch2d(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs2d(r12, q1, q2);
+  const out = new Float64Array(2 * ins[3]);
+  batchCall(c2.contactFunctionBatch, 'pw85_2d_contact_function_batch', ins,
+    [out], threads);
+  return out;
+}
+
+/** d2.overlap for n pairs: Int32Array(n). */
+function overlapBatch2d(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs2d(r12, q1, q2);
+  const out = new Int32Array(ins[3]);
+  batchCall(c2.overlapBatch, 'pw85_2d_overlap_batch', ins, [out], threads);
+  return out;
+}
+
+/** d2.contactGeometry for n pairs: Float64Array(6·n). */
+function contactGeometryBatch2d(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs2d(r12, q1, q2);
+  const out = new Float64Array(GEOM_SIZE_2D * ins[3]);
+  batchCall(c2.contactGeometryBatch, 'pw85_2d_contact_geometry_batch', ins,
+    [out], threads);
+  return out;
+}
+
+/** d2.contactDerivatives for n pairs: {geometry: Float64Array(6·n),
+ *  d: Float64Array(10·n)}. */
+function contactDerivativesBatch2d(r12, q1, q2, { threads = 1 } = {}) {
+  const ins = pairs2d(r12, q1, q2);
+  const geometry = new Float64Array(GEOM_SIZE_2D * ins[3]);
+  const d = new Float64Array(DERIV_SIZE_2D * ins[3]);
+  batchCall(c2.contactDerivativesBatch, 'pw85_2d_contact_derivatives_batch',
+    ins, [geometry, d], threads);
+  return { geometry, d };
+}
+
+/** d2.ellipse for n ellipses: a (2·n numbers, or 2), theta (n numbers, or
+ *  1); Float64Array(3·n). */
+function ellipseBatch(a, theta, { threads = 1 } = {}) {
+  const ins = records([['a', a, DIM_2D], ['theta', theta, 1]]);
+  const q = new Float64Array(SYM_2D * ins[2]);
+  batchCall(c2.ellipseBatch, 'pw85_2d_ellipse_batch', ins, [q], threads);
+  return q;
+}
+
+/** d2.principalAxes for n forms: {a: Float64Array(2·n),
+ *  theta: Float64Array(n)}. */
+function principalAxesBatch2d(q, { threads = 1 } = {}) {
+  const ins = records([['q', q, SYM_2D]]);
+  const a = new Float64Array(DIM_2D * ins[1]);
+  const theta = new Float64Array(ins[1]);
+  batchCall(c2.principalAxesBatch, 'pw85_2d_principal_axes_batch', ins,
+    [a, theta], threads);
+  return { a, theta };
+}
+
+/** The ellipses of pw85_2d.h, with the conventions of the functions
+ *  above. */
+const d2 = Object.freeze({
+  DIM: DIM_2D,
+  SYM: SYM_2D,
+  /** Offsets into the output of d2.contactGeometry (PW85_2D_GEOM_*). */
+  GEOM: Object.freeze({ MU2: 0, LAMBDA: 1, POINT: 2, NORMAL: 4,
+    SIZE: GEOM_SIZE_2D }),
+  /** Offsets into the derivatives of d2.contactDerivatives
+   *  (PW85_2D_DERIV_*). */
+  DERIV: Object.freeze({ R12: 0, THETA1: 2, THETA2: 3, Q1: 4, Q2: 7,
+    SIZE: DERIV_SIZE_2D }),
+  f: f2d,
+  contactFunction: contactFunction2d,
+  overlap: overlap2d,
+  contactGeometry: contactGeometry2d,
+  contactDerivatives: contactDerivatives2d,
+  ellipse,
+  principalAxes: principalAxes2d,
+  contactFunctionBatch: contactFunctionBatch2d,
+  overlapBatch: overlapBatch2d,
+  contactGeometryBatch: contactGeometryBatch2d,
+  contactDerivativesBatch: contactDerivativesBatch2d,
+  ellipseBatch,
+  principalAxesBatch: principalAxesBatch2d,
+});
+
+// ---------------------------------------------------------------------------
 // The index (pw85_index.h).
 
 const SIDE_MARGIN = 1 + 2 ** -20;
@@ -838,5 +1052,5 @@ module.exports = {
   ellipsoidRotation, ellipsoidQuaternion, principalAxes,
   principalAxesQuaternion, contactGeometry, contactDerivatives, batchThreads,
   contactFunctionBatch, overlapBatch, contactGeometryBatch,
-  contactDerivativesBatch, Index,
+  contactDerivativesBatch, Index, d2,
 };

@@ -14,6 +14,9 @@
  * C++ standard: C++11 for everything but pw85::metadata, which needs C++17
  * (std::string_view, as in pw85 2.0) and is left out below C++17.
  *
+ * Ellipses (pw85_2d.h): the same functions in namespace pw85::d2, over
+ * `double[2]` vectors and `double[3]` forms (Q00, Q01, Q11).
+ *
  * The spatial index of ellipsoids, pw85::Index, is defined in
  * pw85_index.hpp, which this header includes at its end.
  */
@@ -24,6 +27,7 @@
 #include <limits>
 
 #include "pw85.h"
+#include "pw85_2d.h"
 
 namespace pw85 {
 
@@ -289,6 +293,198 @@ inline int principal_axes_batch(std::size_t n, double const *q,
                                 int *status, int threads) noexcept {
   return pw85_principal_axes_batch(n, q, q_stride, a, rot, status, threads);
 }
+
+/** Ellipses: the functions of pw85_2d.h, with the conventions and the
+ *  error model of the three-dimensional ones above (a PW85_* status
+ *  returned, outputs written on success only unless pw85_2d.h says
+ *  otherwise; −f(λ) NaN on bad input). A vector is `double[2]`
+ *  (d2::dim); a form `double[3]` (d2::sym) = (Q00, Q01, Q11).
+ *  @since 2.5.0 */
+namespace d2 {
+
+/** The number of coordinates of a vector (PW85_2D_DIM).
+ *  @since 2.5.0 */
+constexpr std::size_t dim = PW85_2D_DIM;
+/** The number of stored entries of a symmetric 2 × 2 form (PW85_2D_SYM).
+ *  @since 2.5.0 */
+constexpr std::size_t sym = PW85_2D_SYM;
+
+/** Offsets into the output of d2::contact_geometry() (PW85_2D_GEOM_*).
+ *  @since 2.5.0 */
+namespace geom {
+/** μ² (PW85_2D_GEOM_MU2). */
+constexpr std::size_t mu2 = PW85_2D_GEOM_MU2;
+/** λ (PW85_2D_GEOM_LAMBDA). */
+constexpr std::size_t lambda = PW85_2D_GEOM_LAMBDA;
+/** 2 doubles: x − c1 (PW85_2D_GEOM_POINT). */
+constexpr std::size_t point = PW85_2D_GEOM_POINT;
+/** 2 doubles: the unit normal from ellipse 1 to 2 (PW85_2D_GEOM_NORMAL). */
+constexpr std::size_t normal = PW85_2D_GEOM_NORMAL;
+/** The number of doubles (PW85_2D_GEOM_SIZE). */
+constexpr std::size_t size = PW85_2D_GEOM_SIZE;
+}  // namespace geom
+
+/** Offsets into the derivatives of d2::contact_derivatives()
+ *  (PW85_2D_DERIV_*).
+ *  @since 2.5.0 */
+namespace deriv {
+/** 2 doubles: ∂μ²/∂r12 (PW85_2D_DERIV_R12). */
+constexpr std::size_t r12 = PW85_2D_DERIV_R12;
+/** ∂μ²/∂θ1 (PW85_2D_DERIV_THETA1). */
+constexpr std::size_t theta1 = PW85_2D_DERIV_THETA1;
+/** ∂μ²/∂θ2 (PW85_2D_DERIV_THETA2). */
+constexpr std::size_t theta2 = PW85_2D_DERIV_THETA2;
+/** 3 doubles: ∂μ²/∂q1[k] (PW85_2D_DERIV_Q1). */
+constexpr std::size_t q1 = PW85_2D_DERIV_Q1;
+/** 3 doubles: ∂μ²/∂q2[k] (PW85_2D_DERIV_Q2). */
+constexpr std::size_t q2 = PW85_2D_DERIV_Q2;
+/** The number of doubles (PW85_2D_DERIV_SIZE). */
+constexpr std::size_t size = PW85_2D_DERIV_SIZE;
+}  // namespace deriv
+
+/** −f(λ) for two ellipses (pw85_2d_f_neg()), with r12, q1, q2 passed
+ *  separately. NaN if a pointer is NULL or an input is not finite, or a
+ *  form is not positive definite.
+ *  @since 2.5.0 */
+inline double f_neg(double lambda, double const r12[dim],
+                    double const q1[sym], double const q2[sym]) noexcept {
+  if (r12 == nullptr || q1 == nullptr || q2 == nullptr)
+    return pw85_2d_f_neg(lambda, nullptr);
+  double params[PW85_2D_DIM + 2 * PW85_2D_SYM];
+  for (std::size_t i = 0; i < dim; ++i) params[i] = r12[i];
+  for (std::size_t i = 0; i < sym; ++i) {
+    params[dim + i] = q1[i];
+    params[dim + sym + i] = q2[i];
+  }
+  return pw85_2d_f_neg(lambda, params);
+}
+
+/** out = {μ², λ} of two ellipses; returns a PW85_* status
+ *  (pw85_2d_contact_function()).
+ *  @since 2.5.0 */
+inline int contact_function(double const r12[dim], double const q1[sym],
+                            double const q2[sym], double out[2]) noexcept {
+  return pw85_2d_contact_function(r12, q1, q2, out);
+}
+
+/** Certified overlap test of two ellipses (pw85_2d_overlap()): *result =
+ *  −1 overlap, +1 disjoint, 0 tangent within 4 ulps; returns a PW85_*
+ *  status.
+ *  @since 2.5.0 */
+inline int overlap(double const r12[dim], double const q1[sym],
+                   double const q2[sym], int *result) noexcept {
+  return pw85_2d_overlap(r12, q1, q2, result);
+}
+
+/** μ², λ, the contact point and the normal, laid out as d2::geom::*
+ *  (pw85_2d_contact_geometry()); returns a PW85_* status.
+ *  @since 2.5.0 */
+inline int contact_geometry(double const r12[dim], double const q1[sym],
+                            double const q2[sym],
+                            double out[geom::size]) noexcept {
+  return pw85_2d_contact_geometry(r12, q1, q2, out);
+}
+
+/** d2::contact_geometry() and the derivatives of μ² (∂μ²/∂r12, ∂μ²/∂θ1,
+ *  ∂μ²/∂θ2, ∂μ²/∂q1, ∂μ²/∂q2), laid out as d2::deriv::*
+ *  (pw85_2d_contact_derivatives()); returns a PW85_* status.
+ *  @since 2.5.0 */
+inline int contact_derivatives(double const r12[dim], double const q1[sym],
+                               double const q2[sym],
+                               double geometry[geom::size],
+                               double d[deriv::size]) noexcept {
+  return pw85_2d_contact_derivatives(r12, q1, q2, geometry, d);
+}
+
+/** Q = R(θ)·diag(a0², a1²)·R(θ)ᵀ, a[0] along (cos θ, sin θ)
+ *  (pw85_2d_ellipse()); returns a PW85_* status.
+ *  @since 2.5.0 */
+inline int ellipse(double const a[dim], double theta,
+                   double q[sym]) noexcept {
+  return pw85_2d_ellipse(a, theta, q);
+}
+
+/** The semi-axes (decreasing) and the angle θ in (−π/2, π/2] of the
+ *  larger one (pw85_2d_principal_axes()); returns a PW85_* status.
+ *  @since 2.5.0 */
+inline int principal_axes(double const q[sym], double a[dim],
+                          double *theta) noexcept {
+  return pw85_2d_principal_axes(q, a, theta);
+}
+
+/** d2::contact_function() for n pairs, strides in doubles (0: one record
+ *  for every pair), out = n×{μ², λ} (pw85_2d_contact_function_batch());
+ *  returns PW85_SUCCESS or the first failing pair's status.
+ *  @since 2.5.0 */
+inline int contact_function_batch(std::size_t n, double const *r12,
+                                  std::size_t r12_stride, double const *q1,
+                                  std::size_t q1_stride, double const *q2,
+                                  std::size_t q2_stride, double *out,
+                                  int *status, int threads) noexcept {
+  return pw85_2d_contact_function_batch(n, r12, r12_stride, q1, q1_stride,
+                                        q2, q2_stride, out, status, threads);
+}
+
+/** d2::overlap() for n pairs (pw85_2d_overlap_batch()).
+ *  @since 2.5.0 */
+inline int overlap_batch(std::size_t n, double const *r12,
+                         std::size_t r12_stride, double const *q1,
+                         std::size_t q1_stride, double const *q2,
+                         std::size_t q2_stride, int *result, int *status,
+                         int threads) noexcept {
+  return pw85_2d_overlap_batch(n, r12, r12_stride, q1, q1_stride, q2,
+                               q2_stride, result, status, threads);
+}
+
+/** d2::contact_geometry() for n pairs, out = n×geom::size
+ *  (pw85_2d_contact_geometry_batch()).
+ *  @since 2.5.0 */
+inline int contact_geometry_batch(std::size_t n, double const *r12,
+                                  std::size_t r12_stride, double const *q1,
+                                  std::size_t q1_stride, double const *q2,
+                                  std::size_t q2_stride, double *out,
+                                  int *status, int threads) noexcept {
+  return pw85_2d_contact_geometry_batch(n, r12, r12_stride, q1, q1_stride,
+                                        q2, q2_stride, out, status, threads);
+}
+
+/** d2::contact_derivatives() for n pairs, geometry = n×geom::size, d =
+ *  n×deriv::size (pw85_2d_contact_derivatives_batch()).
+ *  @since 2.5.0 */
+inline int contact_derivatives_batch(std::size_t n, double const *r12,
+                                     std::size_t r12_stride,
+                                     double const *q1, std::size_t q1_stride,
+                                     double const *q2, std::size_t q2_stride,
+                                     double *geometry, double *d, int *status,
+                                     int threads) noexcept {
+  return pw85_2d_contact_derivatives_batch(n, r12, r12_stride, q1, q1_stride,
+                                           q2, q2_stride, geometry, d,
+                                           status, threads);
+}
+
+/** d2::ellipse() for n ellipses, theta_stride 1 or 0, q = n×sym
+ *  (pw85_2d_ellipse_batch()).
+ *  @since 2.5.0 */
+inline int ellipse_batch(std::size_t n, double const *a,
+                         std::size_t a_stride, double const *theta,
+                         std::size_t theta_stride, double *q, int *status,
+                         int threads) noexcept {
+  return pw85_2d_ellipse_batch(n, a, a_stride, theta, theta_stride, q,
+                               status, threads);
+}
+
+/** d2::principal_axes() for n forms, a = n×dim, theta = n
+ *  (pw85_2d_principal_axes_batch()).
+ *  @since 2.5.0 */
+inline int principal_axes_batch(std::size_t n, double const *q,
+                                std::size_t q_stride, double *a,
+                                double *theta, int *status,
+                                int threads) noexcept {
+  return pw85_2d_principal_axes_batch(n, q, q_stride, a, theta, status,
+                                      threads);
+}
+
+}  // namespace d2
 
 }  // namespace pw85
 

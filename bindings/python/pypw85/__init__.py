@@ -46,6 +46,12 @@ the broadcast shape, its inputs); its ``index`` and ``statuses``
 attributes give that index and every pair's status, and a preallocated
 ``out`` holds the results of the pairs that succeeded.
 
+Ellipses
+--------
+The same functions for ellipses (two dimensions: vectors of shape (2,),
+forms (Q00, Q01, Q11) of shape (3,)) are in the submodule `pypw85.d2`
+(``from pypw85 import d2``).
+
 Errors
 ------
 Bad input never crashes: a wrong shape raises `ValueError`, a wrong dtype

@@ -62,6 +62,31 @@ LIBPW85 = {
                                              + [_DOUBLE_P] * 3 + [_INT]),
 }
 
+#: The ellipses of libpw85 (include/pw85/pw85_2d.h, since 2.5.0), declared
+#: by pypw85.d2 when it is imported.
+LIBPW85_2D = {
+    "pw85_2d_f_neg": (_DOUBLE, [_DOUBLE, _DOUBLE_P]),
+    "pw85_2d_contact_function": (_INT, [_DOUBLE_P] * 4),
+    "pw85_2d_overlap": (_INT, [_DOUBLE_P] * 3 + [ctypes.POINTER(_INT)]),
+    "pw85_2d_contact_geometry": (_INT, [_DOUBLE_P] * 4),
+    "pw85_2d_contact_derivatives": (_INT, [_DOUBLE_P] * 5),
+    "pw85_2d_ellipse": (_INT, [_DOUBLE_P, _DOUBLE, _DOUBLE_P]),
+    "pw85_2d_principal_axes": (_INT, [_DOUBLE_P, _DOUBLE_P,
+                                      ctypes.POINTER(_DOUBLE)]),
+    "pw85_2d_contact_function_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2
+                                       + [_INT]),
+    "pw85_2d_overlap_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2
+                              + [_INT]),
+    "pw85_2d_contact_geometry_batch": (_INT, _BATCH_INPUTS + [_DOUBLE_P] * 2
+                                       + [_INT]),
+    "pw85_2d_contact_derivatives_batch": (_INT, _BATCH_INPUTS
+                                          + [_DOUBLE_P] * 3 + [_INT]),
+    "pw85_2d_ellipse_batch": (_INT, [_SIZE] + [_DOUBLE_P, _SIZE] * 2
+                              + [_DOUBLE_P] * 2 + [_INT]),
+    "pw85_2d_principal_axes_batch": (_INT, [_SIZE, _DOUBLE_P, _SIZE]
+                                     + [_DOUBLE_P] * 3 + [_INT]),
+}
+
 #: libpw85_legacy (include/pw85/pw85_legacy.h).
 LIBPW85_LEGACY = {
     "pw85_legacy__det_sym": (_DOUBLE, [_DOUBLE_P]),
