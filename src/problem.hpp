@@ -82,8 +82,8 @@ inline void orient(Problem<D> *p) noexcept {
 // positive definite (problem.cpp): the rule of checks.hpp on the forms as
 // stored decides Status::not_positive_definite; a form that passes but
 // that could not be factorised once rescaled with the other
-// (factorised false: its diagonal spans, with the other's, more than the
-// range of a double, or it is singular to the precision of double) gives
+// (factorised false: its diagonal spans, with the other's, more than
+// max_diagonal_span, or it is singular to the precision of double) gives
 // Status::out_of_range; else Status::success (the factors stand).
 template <int D>
 Status prepare_uncertified(double const *q1, double const *q2,

@@ -558,8 +558,9 @@ def contact_function(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike,
     Error
         `EDOM` if an input is NaN or infinite; `ENOTPOSDEF` if q1 or q2 is
         not positive definite; `ERANGE` if μ² exceeds the largest double
-        (out then holds +inf and λ) or the entries of q1 and q2 span more
-        than the range of a double; `ENOMEM` (not expected). Except for the
+        (out then holds +inf and λ) or the diagonals of q1 and q2 span
+        more than the search carries (about 1e607, pw85.h); `ENOMEM` (not
+        expected). Except for the
         first `ERANGE` case, out is untouched. For arrays of pairs, the
         first failing pair's status; the other pairs are computed.
     """
@@ -614,8 +615,8 @@ def overlap(r12: ArrayLike, q1: ArrayLike, q2: ArrayLike, *,
     ValueError, TypeError
         If an argument has the wrong shape or type.
     Error
-        As `contact_function`: `EDOM`, `ENOTPOSDEF`, `ERANGE` (entries of
-        q1 and q2 spanning more than the range of a double), `ENOMEM`.
+        As `contact_function`: `EDOM`, `ENOTPOSDEF`, `ERANGE` (diagonals of
+        q1 and q2 spanning more than the search carries), `ENOMEM`.
     """
     if _batch.is_batch(r12, q1, q2):
         return _batch.overlap(r12, q1, q2, threads)
