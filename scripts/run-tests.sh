@@ -73,7 +73,8 @@ if command -v clang >/dev/null 2>&1 && command -v clang++ >/dev/null 2>&1; then
   # Only the fuzz targets are built there (not the whole project again).
   ninja -C build-fuzz tests/fuzz/fuzz-contact-raw \
     tests/fuzz/fuzz-contact-structured tests/fuzz/fuzz-f \
-    tests/fuzz/fuzz-legacy tests/fuzz/fuzz-geometry tests/fuzz/fuzz-index
+    tests/fuzz/fuzz-legacy tests/fuzz/fuzz-geometry tests/fuzz/fuzz-index \
+    tests/fuzz/fuzz-2d
   meson test -C build-fuzz --no-rebuild --suite fuzz --print-errorlogs
 else
   echo "run-tests.sh: clang not found, fuzz targets not run"
