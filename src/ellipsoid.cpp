@@ -115,16 +115,25 @@ Status ellipse_principal_axes(double const q[3], double a[2],
                               double *theta) noexcept {
   if (!all_finite<3>(q)) return Status::not_finite;
   if (!is_positive_definite<2>(q)) return Status::not_positive_definite;
-  // Q·2^−2e (exact but for entries far below the largest, which underflow
-  // only where Q is singular to double anyway): 2·Q01 and Q00 − Q11 do not
-  // overflow, and aⱼ = √(aⱼ² of the scaled Q)·2^e exactly.
+  // Q·2^−2e, so that aⱼ = √(aⱼ² of the scaled Q)·2^e exactly; exact but
+  // for an entry below 2^−1022 of the largest diagonal entry, whose
+  // rounding (2^−1074 of it at most) moves each Rayleigh quotient below by
+  // at most 2^−1073·cond(Q) relative: nothing for any Q not singular to
+  // double.
   int const e = exponent(std::fmax(q[0], q[2])) / 2;
   double const s[3] = {times_pow2(q[0], -2 * e), times_pow2(q[1], -2 * e),
                        times_pow2(q[2], -2 * e)};
-  // The eigenvector of the larger eigenvalue of [[s0, s1], [s1, s2]] is at
-  // angle ½·atan2(2·s1, s0 − s2) (the double-angle form of tan 2θ =
-  // 2·s1/(s0 − s2)), in [−π/2, π/2]; −π/2 is the same axis as π/2.
-  double t = 0.5 * std::atan2(2.0 * s[1], s[0] - s[2]);
+  // The eigenvector of the larger eigenvalue of [[q0, q1], [q1, q2]] is at
+  // angle ½·atan2(2·q1, q0 − q2) (the double-angle form of tan 2θ =
+  // 2·q1/(q0 − q2)), in [−π/2, π/2]; −π/2 is the same axis as π/2. From Q
+  // as stored, not scaled: there Q01 may underflow, and with Q00 = Q11 the
+  // axis at ±45° would become 0. q0 − q2 cannot overflow (both > 0);
+  // 2·q1 could: then every entry is halved first, exactly (q1² < q0·q2
+  // puts q0 and q2 above DBL_MAX/4).
+  bool const halve = std::fabs(q[1]) > 0.5 * DBL_MAX;
+  double const y = halve ? q[1] : 2.0 * q[1];
+  double const x = halve ? 0.5 * q[0] - 0.5 * q[2] : q[0] - q[2];
+  double t = 0.5 * std::atan2(y, x);
   if (t <= -0.5 * M_PI) t = 0.5 * M_PI;
   double const c = std::cos(t), n = std::sin(t);
   // The Rayleigh quotients vᵀSv/vᵀv of v = (c, n) and w = (−n, c), in

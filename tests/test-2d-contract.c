@@ -419,6 +419,29 @@ static void test_ellipse_statuses(void) {
   g_assert_true(q[0] == 4. && q[1] == 0. && q[2] == 1.);
 }
 
+/* Regression (fuzz-2d, corpus/2d/regress-theta-underflow): equal diagonal
+ * entries and an off-diagonal entry 2^-1152 of them. The axis of the
+ * larger semi-axis is at −45° for Q01 < 0, +45° for Q01 > 0 (eigenvectors
+ * (1, ∓1)/√2 of eigenvalues Q00 ± |Q01|); θ was ±0, Q01 having underflowed
+ * in the scaled copy of Q. And Q00 − Q11 = 2^548, Q01 = 2^-500:
+ * θ = ½·atan2(2^-499, 2^548) = 2^-1048 exactly (a subnormal), was 0. */
+static void test_principal_axes_underflow(void) {
+  double a[2], theta;
+  double const q_neg[3] = {0x1.3636363636363p+567, -0x1.3636363636363p-585,
+                           0x1.3636363636363p+567};
+  g_assert_cmpint(pw85_2d_principal_axes(q_neg, a, &theta), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(theta, ==, -G_PI / 4.);
+  g_assert_true(a[0] == a[1] && a[0] == sqrt(q_neg[0]));
+  double const q_pos[3] = {0x1p+600, 0x1p-580, 0x1p+600};
+  g_assert_cmpint(pw85_2d_principal_axes(q_pos, a, &theta), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(theta, ==, G_PI / 4.);
+  g_assert_true(a[0] == 0x1p+300 && a[1] == 0x1p+300);
+  double const q_tilt[3] = {0x1p+600 + 0x1p+548, 0x1p-500, 0x1p+600};
+  g_assert_cmpint(pw85_2d_principal_axes(q_tilt, a, &theta), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(theta, ==, 0x1p-1048);
+}
+
 static void test_principal_axes(void) {
   double a[2] = {42., 42.}, theta = 42.;
   double const q[3] = {4., 0., 1.};
@@ -711,5 +734,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d/batch/pairs", test_batches);
   g_test_add_func("/pw85/2d/ellipse/statuses", test_ellipse_statuses);
   g_test_add_func("/pw85/2d/ellipse/principal-axes", test_principal_axes);
+  g_test_add_func("/pw85/2d/ellipse/principal-axes-underflow",
+                  test_principal_axes_underflow);
   return g_test_run();
 }

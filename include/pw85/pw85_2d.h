@@ -297,9 +297,10 @@ PW85_API int pw85_2d_ellipse(double const a[PW85_2D_DIM], double theta,
  * @brief The semi-axes and orientation of an ellipse: the inverse of
  *        pw85_2d_ellipse().
  *
- * θ = ½·atan2(2·Q01, Q00 − Q11) (Q scaled first by a power of two,
- * exactly), the direction of the larger semi-axis, off by the roundings
- * of Q00 − Q11 and of atan2 only, whatever the eccentricity; each aⱼ² is
+ * θ = ½·atan2(2·Q01, Q00 − Q11) on Q as stored (every entry halved
+ * first, exactly, where 2·Q01 would overflow), the direction of the larger
+ * semi-axis, off by the roundings of Q00 − Q11 and of atan2 only, whatever
+ * the eccentricity and the range of the entries; each aⱼ² is
  * then the Rayleigh quotient of its direction, computed in double-double
  * arithmetic, which keeps the small semi-axis of a needle accurate
  * (relative error of aⱼ at most u·(1 + u·(a0/aⱼ)²), u = 2⁻⁵³). Measured on
