@@ -136,20 +136,22 @@ Status ellipse_principal_axes(double const q[3], double a[2],
   double t = 0.5 * std::atan2(y, x);
   if (t <= -0.5 * M_PI) t = 0.5 * M_PI;
   double const c = std::cos(t), n = std::sin(t);
-  // The Rayleigh quotients vᵀSv/vᵀv of v = (c, n) and w = (−n, c), in
-  // double-double (S stored: vᵀSv = s0·v0² + 2·s1·v0·v1 + s2·v1²).
-  double const dirs[2][2] = {{c, n}, {-n, c}};
-  double axes[2];
-  for (int j = 0; j < 2; ++j) {
-    dd const x = two_prod(dirs[j][0], dirs[j][0]);
-    dd const xy = two_prod(dirs[j][0], dirs[j][1]);
-    dd const y = two_prod(dirs[j][1], dirs[j][1]);
-    dd const num = dd_add(dd_add(dd_mul(x, s[0]), dd_mul(xy, 2.0 * s[1])),
-                          dd_mul(y, s[2]));
-    dd const quotient = dd_div(num, dd_add(x, y));
-    if (!(quotient.hi > 0.0)) return Status::out_of_range;
-    axes[j] = times_pow2(dd_round(dd_sqrt(quotient)), e);
-  }
+  // a0² = the Rayleigh quotient vᵀSv/vᵀv of v = (c, n), in double-double
+  // (S stored: vᵀSv = s0·v0² + 2·s1·v0·v1 + s2·v1²): an error δ in the
+  // direction moves it by δ²·(a0² − a1²) only. a1² = det(S)/a0², the
+  // product of the eigenvalues over the larger, with det(S) = s0·s2 − s1²
+  // from exact products: relative error 2⁻¹⁰⁶·(s0·s2 + s1²)/det ≤
+  // u²·(a0/a1)²/2 (u = 2⁻⁵³), where the Rayleigh quotient of w = (−n, c)
+  // erred by δ²·(a0/a1)², a few u²·(a0/a1)² (fuzz-2d: 7.2·u for a stated
+  // 6.4·u).
+  dd const vx = two_prod(c, c), vxy = two_prod(c, n), vy = two_prod(n, n);
+  dd const num = dd_add(dd_add(dd_mul(vx, s[0]), dd_mul(vxy, 2.0 * s[1])),
+                        dd_mul(vy, s[2]));
+  dd const big = dd_div(num, dd_add(vx, vy));
+  dd const det = dd_sub(two_prod(s[0], s[2]), two_prod(s[1], s[1]));
+  if (!(big.hi > 0.0) || !(det.hi > 0.0)) return Status::out_of_range;
+  double axes[2] = {times_pow2(dd_round(dd_sqrt(big)), e),
+                    times_pow2(dd_round(dd_sqrt(dd_div(det, big))), e)};
   // (atan2's choice makes axes[0] the larger, but for rounding where the
   // two are equal to the last bits.)
   if (axes[1] > axes[0]) {

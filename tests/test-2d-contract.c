@@ -442,6 +442,38 @@ static void test_principal_axes_underflow(void) {
   g_assert_cmpfloat(theta, ==, 0x1p-1048);
 }
 
+/* Regression (fuzz-2d, corpus/2d/regress-needle-axis-*): needles of
+ * aspect 2.2e8 and 2.6e8 whose small semi-axis, the Rayleigh quotient of
+ * the atan2 direction turned by 90°, was off by 7.2·u and 9.2·u where
+ * pw85_2d.h states u·(1 + u·(a0/a1)²) = 6.4·u and 8.4·u. References:
+ * √ of the eigenvalues, mpmath at 60 digits (tr ± √((Q00 − Q11)² +
+ * 4·Q01²))/2, the smaller as det/λmax). */
+static void test_principal_axes_needle(void) {
+  static const struct {
+    double q[3];
+    long double a[2]; /* the references, to 64 bits */
+  } cases[] = {
+      {{0x1.0d61c162c6ca7p-6, -0x1.b188476020d5fp-6, 0x1.5cdad1e5c6821p-5},
+       {0.2429538514886877924721487L, 1.102803891726490409762721e-9L}},
+      {{0x1.51162f8b3b40cp-2, -0x1.1c450c803703dp-1, 0x1.df74fbea6285fp-1},
+       {1.125000260770320908573856L, 4.355620812657070879764462e-9L}},
+  };
+  double const u = DBL_EPSILON / 2.;
+  for (size_t n = 0; n < G_N_ELEMENTS(cases); n++) {
+    double a[2], theta;
+    g_assert_cmpint(pw85_2d_principal_axes(cases[n].q, a, &theta), ==,
+                    PW85_SUCCESS);
+    for (int j = 0; j < 2; j++) {
+      long double const ref = cases[n].a[j], ratio = cases[n].a[0] / ref;
+      long double const err = fabsl(a[j] - ref) / ref;
+      long double const bound = u * (1. + u * ratio * ratio);
+      if (!(err <= bound))
+        g_test_fail_printf("case %zu: a[%d] = %a, reference %La (%.3Lg u > "
+                           "%.3Lg u)", n, j, a[j], ref, err / u, bound / u);
+    }
+  }
+}
+
 static void test_principal_axes(void) {
   double a[2] = {42., 42.}, theta = 42.;
   double const q[3] = {4., 0., 1.};
@@ -736,5 +768,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d/ellipse/principal-axes", test_principal_axes);
   g_test_add_func("/pw85/2d/ellipse/principal-axes-underflow",
                   test_principal_axes_underflow);
+  g_test_add_func("/pw85/2d/ellipse/principal-axes-needle",
+                  test_principal_axes_needle);
   return g_test_run();
 }
