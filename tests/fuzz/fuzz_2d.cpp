@@ -178,9 +178,9 @@ void check_rotation(unsigned turn, const double r[2], const double q1[3],
 
 // ---------------------------------------------------------------------------
 // pw85_2d_f_neg (pw85_2d.h): NaN for non-finite input or a form not
-// positive definite; never positive on [0, 1], 0 at its ends; f ≤ μ²;
-// within the range it states (|r12|² and the entries between 1e-150 and
-// 1e150; 1e-140 and 1e140 here) and where cond(Q(λ)) < 1e8 (the
+// positive definite; never positive on [0, 1], 0 at its ends; within
+// the range it states (|r12|² and the entries between 1e-150 and 1e150;
+// 1e-140 and 1e140 here): f ≤ μ², and where cond(Q(λ)) < 1e8 (the
 // factorisation in double, κ·u at most 1.2e-8), against the binary128 f
 // within 8·u·κ̄ + u relative (a backward-stable solve; it states
 // correct rounding as measured, not as promised); swapping:
@@ -194,16 +194,17 @@ void check_f(double lambda, const double p[8]) {
   if (std::isnan(fneg)) return;
   CHECK(!(fneg > 0), "-f(%a) = %a > 0", lambda, fneg);
   if (lambda == 0 || lambda == 1) CHECK(fneg == 0, "-f(%a) = %a", lambda, fneg);
-  double out[2];
-  if (pw85_2d_contact_function(p, p + 2, p + 5, out) == PW85_SUCCESS &&
-      fuzz::cond_bound<2>(p + 2) < 1e8L && fuzz::cond_bound<2>(p + 5) < 1e8L)
-    CHECK(-fneg <= out[0] * (1 + 1e-7) + DBL_TRUE_MIN,
-          "f(%a) = %a > mu2 = %a", lambda, -fneg, out[0]);
   for (int i = 0; i < 8; ++i)
     if (!(p[i] == 0 || (std::fabs(p[i]) >= 1e-70 && std::fabs(p[i]) <= 1e70)))
       return;
   if (!(p[2] >= 1e-140 && p[4] >= 1e-140 && p[5] >= 1e-140 && p[7] >= 1e-140))
     return;
+  // f ≤ μ² (correctly rounded), f within 8·u·κ̄ ≤ 1e-7 relative.
+  double out[2];
+  if (pw85_2d_contact_function(p, p + 2, p + 5, out) == PW85_SUCCESS &&
+      fuzz::cond_bound<2>(p + 2) < 1e8L && fuzz::cond_bound<2>(p + 5) < 1e8L)
+    CHECK(-fneg <= out[0] * (1 + 1e-7) + DBL_TRUE_MIN,
+          "f(%a) = %a > mu2 = %a", lambda, -fneg, out[0]);
   if (lambda > 0 && lambda < 1) {
     fuzz::QuadArray<2> const r(p);
     fuzz::QuadArray<3> const a(p + 2), b(p + 5);
@@ -360,7 +361,7 @@ void check_axes(const double q[3]) {
   quad const ev[2] = {lmax, det / lmax};
   for (int j = 0; j < 2; ++j) {
     quad const ref = qsqrt(ev[j]);
-    quad const ratio = (quad)a[0] / a[j];
+    quad const ratio = qsqrt(ev[0]) / ref;  // a0/aⱼ of the form, not of a
     quad const tol = ref * ((quad)u * (1 + (quad)u * ratio * ratio) +
                             (quad)kb * 0x1p-110Q);
     CHECK(qabs((quad)a[j] - ref) <= tol, "a[%d] = %a, reference %a", j,
