@@ -12,7 +12,8 @@
 #   -o  where findings go (default fuzz-findings/ at the top of the tree):
 #       DIR/TARGET/crash-*, timeout-*, leak-*, with the log DIR/TARGET.log;
 #       the grown corpus in DIR/TARGET/corpus (the committed one untouched)
-#   TARGET  contact-raw contact-structured f legacy geometry index (default: all)
+#   TARGET  contact-raw contact-structured f legacy geometry index 2d
+#           (default: all)
 #
 # Targets run one after another, each with one job per core (-fork); the
 # build is build-fuzz/ (clang, -Dfuzz=enabled), set up if missing.
@@ -36,7 +37,7 @@ while getopts t:s:o: opt; do
   esac
 done
 shift $((OPTIND - 1))
-targets=${*:-contact-raw contact-structured f legacy geometry index}
+targets=${*:-contact-raw contact-structured f legacy geometry index 2d}
 jobs=$(nproc 2>/dev/null || echo 1)
 
 [ -f build-fuzz/build.ninja ] ||

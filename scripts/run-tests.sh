@@ -63,9 +63,9 @@ TSAN_OPTIONS=halt_on_error=1 \
 
 # ---- fuzz (issue 14, item 1) ------------------------------------------
 # When clang is present: the libFuzzer targets of tests/fuzz, built with
-# ASan and UBSan in build-fuzz/, each run for a short fixed number of
-# executions from a copy of the committed corpus (suite 'fuzz'). Long runs:
-# docs/testing.rst, "Fuzzing".
+# ASan and UBSan in build-fuzz/, each replaying every committed input of
+# its corpus once, in a fixed order (suite 'fuzz', tests/fuzz/run-fuzz.sh).
+# Campaigns: scripts/fuzz-campaign.sh, docs/testing.rst, "Fuzzing".
 if command -v clang >/dev/null 2>&1 && command -v clang++ >/dev/null 2>&1; then
   [ -f build-fuzz/build.ninja ] ||
     CC=clang CXX=clang++ meson setup build-fuzz -Dfuzz=enabled \
@@ -73,7 +73,8 @@ if command -v clang >/dev/null 2>&1 && command -v clang++ >/dev/null 2>&1; then
   # Only the fuzz targets are built there (not the whole project again).
   ninja -C build-fuzz tests/fuzz/fuzz-contact-raw \
     tests/fuzz/fuzz-contact-structured tests/fuzz/fuzz-f \
-    tests/fuzz/fuzz-legacy tests/fuzz/fuzz-geometry tests/fuzz/fuzz-index
+    tests/fuzz/fuzz-legacy tests/fuzz/fuzz-geometry tests/fuzz/fuzz-index \
+    tests/fuzz/fuzz-2d
   meson test -C build-fuzz --no-rebuild --suite fuzz --print-errorlogs
 else
   echo "run-tests.sh: clang not found, fuzz targets not run"

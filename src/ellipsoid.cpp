@@ -27,17 +27,21 @@ bool squares(double const *a, dd *a2, bool *range) noexcept {
   return true;
 }
 
-// q[k] = Σₘ R_im·R_jm·aₘ² for entry k = (i, j), in double-double, rounded
+// q[k] = Σₘ R_im·aₘ²·R_jm for entry k = (i, j), in double-double, rounded
 // once. Each product and sum errs by at most a few 2⁻¹⁰⁶ of the magnitudes
-// involved: less than 2⁻¹⁰⁰·Σₘ |R_im·R_jm|·aₘ² in all (pw85.h).
-// R is D × D, row by row.
+// involved: less than 2⁻¹⁰⁰·Σₘ |R_im·R_jm|·aₘ² in all (pw85.h). R_im·aₘ²
+// first: R_im·R_jm first underflowed where both are tiny (sin²θ = 2^−1311)
+// before meeting a large aₘ² (2^866), and a term of 1.8e-134 was lost
+// (fuzz-2d, regress-ellipse-underflow); |R_jm| ≤ 1, so what the second
+// product loses is below the subnormal range itself. R is D × D, row by
+// row.
 template <int D>
 void form(dd const *r, dd const *a2, double *q) noexcept {
   for (int k = 0; k < sym_size(D); ++k) {
     int const i = Layout<D>::row[k], j = Layout<D>::col[k];
     dd acc{0.0, 0.0};
     for (int m = 0; m < D; ++m)
-      acc = dd_add(acc, dd_mul(dd_mul(r[D * i + m], r[D * j + m]), a2[m]));
+      acc = dd_add(acc, dd_mul(dd_mul(r[D * i + m], a2[m]), r[D * j + m]));
     q[k] = acc.hi;  // dd_add normalises: hi is hi + lo rounded
   }
 }
@@ -115,32 +119,43 @@ Status ellipse_principal_axes(double const q[3], double a[2],
                               double *theta) noexcept {
   if (!all_finite<3>(q)) return Status::not_finite;
   if (!is_positive_definite<2>(q)) return Status::not_positive_definite;
-  // Q·2^−2e (exact but for entries far below the largest, which underflow
-  // only where Q is singular to double anyway): 2·Q01 and Q00 − Q11 do not
-  // overflow, and aⱼ = √(aⱼ² of the scaled Q)·2^e exactly.
+  // Q·2^−2e, so that aⱼ = √(aⱼ² of the scaled Q)·2^e exactly; exact but
+  // for an entry below 2^−1022 of the largest diagonal entry, whose
+  // rounding (2^−1074 of it at most) moves each Rayleigh quotient below by
+  // at most 2^−1073·cond(Q) relative: nothing for any Q not singular to
+  // double.
   int const e = exponent(std::fmax(q[0], q[2])) / 2;
   double const s[3] = {times_pow2(q[0], -2 * e), times_pow2(q[1], -2 * e),
                        times_pow2(q[2], -2 * e)};
-  // The eigenvector of the larger eigenvalue of [[s0, s1], [s1, s2]] is at
-  // angle ½·atan2(2·s1, s0 − s2) (the double-angle form of tan 2θ =
-  // 2·s1/(s0 − s2)), in [−π/2, π/2]; −π/2 is the same axis as π/2.
-  double t = 0.5 * std::atan2(2.0 * s[1], s[0] - s[2]);
+  // The eigenvector of the larger eigenvalue of [[q0, q1], [q1, q2]] is at
+  // angle ½·atan2(2·q1, q0 − q2) (the double-angle form of tan 2θ =
+  // 2·q1/(q0 − q2)), in [−π/2, π/2]; −π/2 is the same axis as π/2. From Q
+  // as stored, not scaled: there Q01 may underflow, and with Q00 = Q11 the
+  // axis at ±45° would become 0. q0 − q2 cannot overflow (both > 0);
+  // 2·q1 could: then every entry is halved first, exactly (q1² < q0·q2
+  // puts q0 and q2 above DBL_MAX/4).
+  bool const halve = std::fabs(q[1]) > 0.5 * DBL_MAX;
+  double const y = halve ? q[1] : 2.0 * q[1];
+  double const x = halve ? 0.5 * q[0] - 0.5 * q[2] : q[0] - q[2];
+  double t = 0.5 * std::atan2(y, x);
   if (t <= -0.5 * M_PI) t = 0.5 * M_PI;
   double const c = std::cos(t), n = std::sin(t);
-  // The Rayleigh quotients vᵀSv/vᵀv of v = (c, n) and w = (−n, c), in
-  // double-double (S stored: vᵀSv = s0·v0² + 2·s1·v0·v1 + s2·v1²).
-  double const dirs[2][2] = {{c, n}, {-n, c}};
-  double axes[2];
-  for (int j = 0; j < 2; ++j) {
-    dd const x = two_prod(dirs[j][0], dirs[j][0]);
-    dd const xy = two_prod(dirs[j][0], dirs[j][1]);
-    dd const y = two_prod(dirs[j][1], dirs[j][1]);
-    dd const num = dd_add(dd_add(dd_mul(x, s[0]), dd_mul(xy, 2.0 * s[1])),
-                          dd_mul(y, s[2]));
-    dd const quotient = dd_div(num, dd_add(x, y));
-    if (!(quotient.hi > 0.0)) return Status::out_of_range;
-    axes[j] = times_pow2(dd_round(dd_sqrt(quotient)), e);
-  }
+  // a0² = the Rayleigh quotient vᵀSv/vᵀv of v = (c, n), in double-double
+  // (S stored: vᵀSv = s0·v0² + 2·s1·v0·v1 + s2·v1²): an error δ in the
+  // direction moves it by δ²·(a0² − a1²) only. a1² = det(S)/a0², the
+  // product of the eigenvalues over the larger, with det(S) = s0·s2 − s1²
+  // from exact products: relative error 2⁻¹⁰⁶·(s0·s2 + s1²)/det ≤
+  // u²·(a0/a1)²/2 (u = 2⁻⁵³), where the Rayleigh quotient of w = (−n, c)
+  // erred by δ²·(a0/a1)², a few u²·(a0/a1)² (fuzz-2d: 7.2·u for a stated
+  // 6.4·u).
+  dd const vx = two_prod(c, c), vxy = two_prod(c, n), vy = two_prod(n, n);
+  dd const num = dd_add(dd_add(dd_mul(vx, s[0]), dd_mul(vxy, 2.0 * s[1])),
+                        dd_mul(vy, s[2]));
+  dd const big = dd_div(num, dd_add(vx, vy));
+  dd const det = dd_sub(two_prod(s[0], s[2]), two_prod(s[1], s[1]));
+  if (!(big.hi > 0.0) || !(det.hi > 0.0)) return Status::out_of_range;
+  double axes[2] = {times_pow2(dd_round(dd_sqrt(big)), e),
+                    times_pow2(dd_round(dd_sqrt(dd_div(det, big))), e)};
   // (atan2's choice makes axes[0] the larger, but for rounding where the
   // two are equal to the last bits.)
   if (axes[1] > axes[0]) {

@@ -419,6 +419,76 @@ static void test_ellipse_statuses(void) {
   g_assert_true(q[0] == 4. && q[1] == 0. && q[2] == 1.);
 }
 
+/* Regression (fuzz-2d, corpus/2d/regress-theta-underflow): equal diagonal
+ * entries and an off-diagonal entry 2^-1152 of them. The axis of the
+ * larger semi-axis is at −45° for Q01 < 0, +45° for Q01 > 0 (eigenvectors
+ * (1, ∓1)/√2 of eigenvalues Q00 ± |Q01|); θ was ±0, Q01 having underflowed
+ * in the scaled copy of Q. And Q00 − Q11 = 2^548, Q01 = 2^-500:
+ * θ = ½·atan2(2^-499, 2^548) = 2^-1048 exactly (a subnormal), was 0. */
+/* Regression (fuzz-2d, corpus/2d/regress-ellipse-underflow): a0 = 2^-495,
+ * a1 = 2^433, θ = −1.8·2^-656. Q00 = a0²cos²θ + a1²sin²θ = 1.808e-134,
+ * dominated by a1²sin²θ; the product sin²θ (2^-1311) underflowed before it
+ * met a1², and Q00 came out as a0² = 2^-990. References: mpmath at 60
+ * digits, rounded once (each entry correctly rounded here). */
+static void test_ellipse_underflow(void) {
+  double const a[2] = {0x1.0820003f53f01p-495, 0x1.0000003ff0025p+433};
+  double const ref[3] = {0x1.a48000d5c6a8ap-445, 0x1.d00000e9d5090p+210,
+                         0x1.0000007fe004bp+866};
+  double q[3];
+  g_assert_cmpint(pw85_2d_ellipse(a, -0x1.d00000020f008p-656, q), ==,
+                  PW85_SUCCESS);
+  for (int k = 0; k < 3; k++) g_assert_cmpfloat(q[k], ==, ref[k]);
+}
+
+static void test_principal_axes_underflow(void) {
+  double a[2], theta;
+  double const q_neg[3] = {0x1.3636363636363p+567, -0x1.3636363636363p-585,
+                           0x1.3636363636363p+567};
+  g_assert_cmpint(pw85_2d_principal_axes(q_neg, a, &theta), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(theta, ==, -G_PI / 4.);
+  g_assert_true(a[0] == a[1] && a[0] == sqrt(q_neg[0]));
+  double const q_pos[3] = {0x1p+600, 0x1p-580, 0x1p+600};
+  g_assert_cmpint(pw85_2d_principal_axes(q_pos, a, &theta), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(theta, ==, G_PI / 4.);
+  g_assert_true(a[0] == 0x1p+300 && a[1] == 0x1p+300);
+  double const q_tilt[3] = {0x1p+600 + 0x1p+548, 0x1p-500, 0x1p+600};
+  g_assert_cmpint(pw85_2d_principal_axes(q_tilt, a, &theta), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(theta, ==, 0x1p-1048);
+}
+
+/* Regression (fuzz-2d, corpus/2d/regress-needle-axis-*): needles of
+ * aspect 2.2e8 and 2.6e8 whose small semi-axis, the Rayleigh quotient of
+ * the atan2 direction turned by 90°, was off by 7.2·u and 9.2·u where
+ * pw85_2d.h states u·(1 + u·(a0/a1)²) = 6.4·u and 8.4·u. References:
+ * √ of the eigenvalues, mpmath at 60 digits (tr ± √((Q00 − Q11)² +
+ * 4·Q01²))/2, the smaller as det/λmax). */
+static void test_principal_axes_needle(void) {
+  static const struct {
+    double q[3];
+    long double a[2]; /* the references, to 64 bits */
+  } cases[] = {
+      {{0x1.0d61c162c6ca7p-6, -0x1.b188476020d5fp-6, 0x1.5cdad1e5c6821p-5},
+       {0.2429538514886877924721487L, 1.102803891726490409762721e-9L}},
+      {{0x1.51162f8b3b40cp-2, -0x1.1c450c803703dp-1, 0x1.df74fbea6285fp-1},
+       {1.125000260770320908573856L, 4.355620812657070879764462e-9L}},
+  };
+  double const u = DBL_EPSILON / 2.;
+  for (size_t n = 0; n < G_N_ELEMENTS(cases); n++) {
+    double a[2], theta;
+    g_assert_cmpint(pw85_2d_principal_axes(cases[n].q, a, &theta), ==,
+                    PW85_SUCCESS);
+    for (int j = 0; j < 2; j++) {
+      long double const ref = cases[n].a[j], ratio = cases[n].a[0] / ref;
+      long double const err = fabsl(a[j] - ref) / ref;
+      long double const bound = u * (1. + u * ratio * ratio);
+      if (!(err <= bound))
+        g_test_fail_printf("case %zu: a[%d] = %a, reference %La (%.3Lg u > "
+                           "%.3Lg u)", n, j, a[j], ref, err / u, bound / u);
+    }
+  }
+}
+
 static void test_principal_axes(void) {
   double a[2] = {42., 42.}, theta = 42.;
   double const q[3] = {4., 0., 1.};
@@ -711,5 +781,10 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d/batch/pairs", test_batches);
   g_test_add_func("/pw85/2d/ellipse/statuses", test_ellipse_statuses);
   g_test_add_func("/pw85/2d/ellipse/principal-axes", test_principal_axes);
+  g_test_add_func("/pw85/2d/ellipse/underflow", test_ellipse_underflow);
+  g_test_add_func("/pw85/2d/ellipse/principal-axes-underflow",
+                  test_principal_axes_underflow);
+  g_test_add_func("/pw85/2d/ellipse/principal-axes-needle",
+                  test_principal_axes_needle);
   return g_test_run();
 }

@@ -475,10 +475,29 @@ static void test_spheroid_checked(void) {
   g_assert_cmpmem(q, sizeof q, ref, sizeof ref);
 }
 
+/* A rotation with a tiny entry (fuzz-2d's constructor underflow, in 3D):
+ * R = [[1, −t, 0], [t, 1, 0], [0, 0, 1]], t = −1.8·2^-656 (orthonormal to
+ * t² = 2^-1311), a = (2^-495, 2^433, 1). Q00 = a0² + t²·a1² = 1.808e-134;
+ * R01·R01 underflowed before it met a1², and Q00 came out as a0² =
+ * 2^-990. References: mpmath at 60 digits of the same exact R, rounded
+ * once. */
+static void test_rotation_underflow(void) {
+  double const t = -0x1.d00000020f008p-656;
+  double const a[3] = {0x1.0820003f53f01p-495, 0x1.0000003ff0025p+433, 1.};
+  double const rot[9] = {1., -t, 0., t, 1., 0., 0., 0., 1.};
+  double const ref[6] = {0x1.a48000d5c6a8ap-445, 0x1.d00000e9d5090p+210, 0.,
+                         0x1.0000007fe004bp+866, 0., 1.};
+  double q[6];
+  g_assert_cmpint(pw85_ellipsoid_rotation(a, rot, q), ==, PW85_SUCCESS);
+  for (int k = 0; k < 6; k++) g_assert_cmpfloat(q[k], ==, ref[k]);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
   g_test_add_func("/pw85/ellipsoid/contract", test_contract);
+  g_test_add_func("/pw85/ellipsoid/rotation-underflow",
+                  test_rotation_underflow);
   g_test_add_func("/pw85/ellipsoid/unit-tolerance", test_unit_tolerance);
   g_test_add_func("/pw85/ellipsoid/hand-derived", test_hand_derived);
   g_test_add_func("/pw85/ellipsoid/rotation-bound", test_rotation_bound);

@@ -298,12 +298,13 @@ PW85_API int pw85_2d_ellipse(double const a[PW85_2D_DIM], double theta,
  * @brief The semi-axes and orientation of an ellipse: the inverse of
  *        pw85_2d_ellipse().
  *
- * θ = ½·atan2(2·Q01, Q00 − Q11) (Q scaled first by a power of two,
- * exactly), the direction of the larger semi-axis, off by the roundings
- * of Q00 − Q11 and of atan2 only, whatever the eccentricity; each aⱼ² is
- * then the Rayleigh quotient of its direction, computed in double-double
- * arithmetic, which keeps the small semi-axis of a needle accurate
- * (relative error of aⱼ at most u·(1 + u·(a0/aⱼ)²), u = 2⁻⁵³). Measured on
+ * θ = ½·atan2(2·Q01, Q00 − Q11) on Q as stored (every entry halved
+ * first, exactly, where 2·Q01 would overflow), the direction of the larger
+ * semi-axis, off by the roundings of Q00 − Q11 and of atan2 only, whatever
+ * the eccentricity and the range of the entries; a0² is then the
+ * Rayleigh quotient of that direction and a1² = det(Q)/a0², both in
+ * double-double arithmetic, which keeps the small semi-axis of a needle
+ * accurate (relative error of aⱼ at most u·(1 + u·(a0/aⱼ)²), u = 2⁻⁵³). Measured on
  * the 264 constructor cases of data/pw85_2d_geometry.h5 (aspect ratios to
  * 1e8, near-circles): every aⱼ correctly rounded, θ within an ulp.
  * Semi-axes in decreasing order, a[0] ≥ a[1] > 0; θ in (−π/2, π/2],
@@ -314,9 +315,10 @@ PW85_API int pw85_2d_ellipse(double const a[PW85_2D_DIM], double theta,
  *             (radians).
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of q is NaN or infinite; PW85_ENOTPOSDEF if Q is not
- *         positive definite by the rule above; PW85_ERANGE if a Rayleigh
- *         quotient is not > 0 in double-double (Q singular to that
- *         precision). a and theta are written on success only.
+ *         positive definite by the rule above; PW85_ERANGE if the
+ *         Rayleigh quotient or det(Q) is not > 0 in double-double (Q
+ *         singular to that precision). a and theta are written on success
+ *         only.
  * @since 2.5.0
  */
 PW85_API int pw85_2d_principal_axes(double const q[PW85_2D_SYM],

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // fuzz-contact-raw: any 15 doubles (r12, q1, q2, raw bytes, zero-padded)
 // and one byte for the scaling exponent, through pw85_contact_function and
-// pw85_overlap; the oracle is fuzz::check_contact.
+// pw85_overlap; the oracle is fuzz::check_contact<3>.
 #include "fuzz_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
@@ -9,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   double x[15];
   for (double &v : x) v = in.f64();
   int const k = int(in.u8() % 41) - 20;
-  fuzz::check_contact(x, x + 3, x + 9, k);
+  fuzz::check_contact<3>(x, x + 3, x + 9, k);
   return 0;
 }
 

@@ -71,6 +71,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   } else {
     for (int i = 0; i < 3; ++i) r12[i] = u[i] * t;
   }
-  fuzz::check_contact(r12, q1, q2, k);
+  fuzz::check_contact<3>(r12, q1, q2, k);
   return 0;
 }

@@ -90,6 +90,57 @@ def pairs():
     return out
 
 
+def ellipse(a0, a1, theta):
+    """R(θ) diag(a0², a1²) R(θ)ᵀ, upper triangle row by row."""
+    c, s = math.cos(theta), math.sin(theta)
+    return [c * c * a0 * a0 + s * s * a1 * a1, c * s * (a0 * a0 - a1 * a1),
+            s * s * a0 * a0 + c * c * a1 * a1]
+
+
+def pairs_2d():
+    """(name, r12, q1, q2) for fuzz-2d: the classes of the 2D reference
+    data (data/gen_2d_data.py) and invalid inputs."""
+    circ = [1., 0., 1.]
+    out = [
+        ("tutorial", [0.7, -0.7], ellipse(10., 0.1, 0.), ellipse(0.5, 5., 0.)),
+        ("coincident", [0., 0.], circ, ellipse(2., 0.5, 1.)),
+        ("needles", [0.5, 0.3], ellipse(1., 1e-3, 0.), ellipse(1e-3, 1., 0.3)),
+        ("aspect1e6", [1., 1.], ellipse(1., 1e-6, 0.4),
+         ellipse(1e-6, 1., -1.1)),
+        ("aspect1e8", [1., 2.], ellipse(1., 1e-8, 2.), ellipse(1., 1e-8, 0.1)),
+        ("sizes", [1e3, 0.], [1e-6, 0., 1e-6], [1e6, 0., 1e6]),
+        ("lambda-edge", [1e-3, 0.], [1e-12, 0., 1e-12], circ),
+        ("far", [1e6, -2e6], circ, ellipse(0.1, 3., 0.7)),
+        ("tiny-r", [1e-300, 2e-300], ellipse(2., 1., 0.2), ellipse(1., 3., 1.)),
+        ("scales", [1e-150, 0.], [1e-300, 0., 1e-300],
+         [2e-300, 1e-301, 1e-300]),
+        ("nan", [float("nan"), 0.], circ, circ),
+        ("inf", [1., 0.], [float("inf"), 0., 1.], circ),
+        ("notposdef", [1., 0.], [1., 2., 1.], circ),
+        ("singular", [1., 0.], [1., 1., 1.], circ),
+        ("negdiag", [1., 0.], circ, [-1., 0., 1.]),
+        ("range", [1., 0.], [1e-300, 0., 1e-300], [1e300, 0., 1e300]),
+        ("overflow", [1e300, 0.], [1e-300, 0., 1e-300], [1e-300, 0., 1e-300]),
+        ("subnormal", [5e-324, 0.], circ, circ),
+    ]
+    # Two unit circles at distance 2(1 + s 2^-k): mu2 = (1 + s 2^-k)².
+    for k in (1, 26, 52):
+        for s in (-1, 1):
+            d = 2 * (1 + s * 2.0 ** -k)
+            out.append(("circles-tangent-%+d-%d" % (s, k), [d, 0.], circ,
+                        circ))
+    # Ellipses nearly tangent, at random orientations and aspect ratios.
+    rng = random.Random(2)
+    for i in range(12):
+        a1, b1 = 1., 10.0 ** -rng.randrange(0, 8)
+        a2, b2 = 10.0 ** rng.uniform(-2, 2), 10.0 ** -rng.randrange(0, 8)
+        q1 = ellipse(a1, b1, rng.uniform(-3, 3))
+        q2 = ellipse(a2, b2 * a2, rng.uniform(-3, 3))
+        t = rng.uniform(-3, 3)
+        out.append(("random-%02d" % i, [math.cos(t), math.sin(t)], q1, q2))
+    return out
+
+
 def f64(xs):
     return b"".join(struct.pack("<d", x) for x in xs)
 
@@ -123,6 +174,12 @@ def main():
         body = f64([0.75] + r + [a1, c1] + n1 + [0.] + [a2, c2] + n2 + [0.])
         write("f", name, bytes([8 | (j + 1)]) + body)
         write("legacy", name, bytes([8 | (j + 1)]) + body)
+    # fuzz-2d: 8 doubles (r12, q1, q2), the scaling exponent, the mode
+    # (symmetry, threads), the angle of the rotation, the λ of f_neg.
+    for i, (name, r, q1, q2) in enumerate(pairs_2d()):
+        write("2d", name, f64(r + q1 + q2) +
+              bytes([(7 * i) % 41, i % 16]) +
+              struct.pack("<HH", (4099 * i) % 65536, (6151 * i) % 65536))
     # fuzz-contact-structured: flags, scale, 2 × (3 × (exp, mantissa),
     # quaternion 4 × int16), direction 3 × int16, j, s, k.
     rng = random.Random(85)

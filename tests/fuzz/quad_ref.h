@@ -1,15 +1,18 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* An independent reference of the contact function for the fuzz oracles:
- * λ* and μ² = f(λ*) in binary128 (__float128, 113 bits, exponents to
- * ±16383: no scaling needed for any finite double input), by bisection
- * on the sign of μ2² − μ1² (docs/optimisation.rst, eq. (5.4)), Q(λ)⁻¹r
- * by an L·D·Lᵀ factorisation in quad. Nothing of pw85 is used.
+/* An independent reference of the contact function for the fuzz oracles,
+ * in D = 3 (ellipsoids) or D = 2 (ellipses) dimensions: λ* and
+ * μ² = f(λ*) in binary128 (__float128, 113 bits, exponents to ±16383: no
+ * scaling needed for any finite double input), by bisection on the sign
+ * of μ2² − μ1² (docs/optimisation.rst, eq. (5.4)), Q(λ)⁻¹r by an L·D·Lᵀ
+ * factorisation in quad (fuzz::ldl()). Nothing of pw85 is used.
  * Its error is of order cond(Q(λ*))·2⁻¹¹³ relative: the oracles allow
  * that much (cond bounded by fuzz::cond_bound()). Header-only, C++. */
 #ifndef PW85_FUZZ_QUAD_REF_H
 #define PW85_FUZZ_QUAD_REF_H
 
 #include <cmath>
+
+#include "fuzz_common.h"
 
 namespace fuzz {
 
@@ -22,32 +25,40 @@ struct QuadRef {
   bool ok;      // converged
 };
 
+/* The doubles of a vector or a form, in quad. */
+template <int N>
+struct QuadArray {
+  quad v[N];
+  explicit QuadArray(const double *x) {
+    for (int i = 0; i < N; ++i) v[i] = x[i];
+  }
+};
+
 /* s = Q⁻¹r for Q(λ) = m·Q1 + λ·Q2 by L·D·Lᵀ in quad (backward stable:
  * relative error of order cond(Q)·2⁻¹¹³; the adjugate would square the
  * condition number of a needle's minors), and κ̄ = tr(Q)·tr(Q⁻¹) ≥
  * cond(Q) if cond is not null. False when a pivot is not > 0. */
-inline bool quad_solve(quad lam, quad m, const quad r[3], const quad q1[6],
-                       const quad q2[6], quad s[3], quad *cond) {
-  quad q[6];
-  for (int k = 0; k < 6; ++k) q[k] = m * q1[k] + lam * q2[k];
-  quad const d0 = q[0];
-  if (!(d0 > 0)) return false;
-  quad const l10 = q[1] / d0, l20 = q[2] / d0;
-  quad const d1 = q[3] - l10 * q[1];
-  if (!(d1 > 0)) return false;
-  quad const l21 = (q[4] - l10 * q[2]) / d1;
-  quad const d2 = q[5] - l20 * q[2] - l21 * l21 * d1;
-  if (!(d2 > 0)) return false;
-  quad const z0 = r[0], z1 = r[1] - l10 * z0, z2 = r[2] - l20 * z0 - l21 * z1;
-  s[2] = z2 / d2;
-  s[1] = z1 / d1 - l21 * s[2];
-  s[0] = z0 / d0 - l10 * s[1] - l20 * s[2];
+template <int D>
+bool quad_solve(quad lam, quad m, const quad *r, const quad *q1,
+                const quad *q2, quad *s, quad *cond) {
+  quad q[sym_size(D)], l[D][D], p[D], tr_inv, tr = 0;
+  for (int k = 0; k < sym_size(D); ++k) q[k] = m * q1[k] + lam * q2[k];
+  if (!ldl<D>(q, l, p, cond != nullptr ? &tr_inv : nullptr)) return false;
+  ldl_solve<D>(l, p, r, s);
   if (cond != nullptr) {
-    quad const m20 = l10 * l21 - l20;
-    *cond = (q[0] + q[3] + q[5]) *
-            (1 / d0 + (1 + l10 * l10) / d1 + (1 + l21 * l21 + m20 * m20) / d2);
+    for (int i = 0; i < D; ++i) tr += q[sym_at(D, i, i)];
+    *cond = tr * tr_inv;
   }
   return true;
+}
+
+/* xᵀ·A·y for a stored symmetric form A. */
+template <int D>
+quad quad_bilinear(const quad *a, const quad *x, const quad *y) {
+  quad sum = 0;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) sum += a[sym_at(D, i, j)] * x[i] * y[j];
+  return sum;
 }
 
 /* f(λ) and, if w is not null, w = μ2² − μ1² = λ²·P2 − (1−λ)²·P1 with
@@ -56,19 +67,17 @@ inline bool quad_solve(quad lam, quad m, const quad r[3], const quad q1[6],
  * λ(1−λ)·sᵀ(Q2−Q1)s, suffers no cancellation when one form is far larger
  * than the other (there f′'s terms cancel to 2^−750 of their size). False
  * when Q(λ) is singular in quad. */
-inline bool quad_f(quad lam, const quad r[3], const quad q1[6],
-                   const quad q2[6], quad *f, quad *w, quad m = -1) {
+template <int D>
+bool quad_f(quad lam, const quad *r, const quad *q1, const quad *q2,
+            quad *f, quad *w, quad m = -1) {
   if (m < 0) m = 1 - lam;  // 1 − λ, unless given (near 1)
-  quad s[3];
-  if (!quad_solve(lam, m, r, q1, q2, s, nullptr)) return false;
-  quad const rs = r[0] * s[0] + r[1] * s[1] + r[2] * s[2];
+  quad s[D], rs = 0;
+  if (!quad_solve<D>(lam, m, r, q1, q2, s, nullptr)) return false;
+  for (int i = 0; i < D; ++i) rs += r[i] * s[i];
   *f = lam * m * rs;
   if (w == nullptr) return true;
-  auto form = [&](const quad x[6]) {
-    return x[0] * s[0] * s[0] + x[3] * s[1] * s[1] + x[5] * s[2] * s[2] +
-           2 * (x[1] * s[0] * s[1] + x[2] * s[0] * s[2] + x[4] * s[1] * s[2]);
-  };
-  *w = lam * lam * form(q2) - m * m * form(q1);
+  *w = lam * lam * quad_bilinear<D>(q2, s, s) -
+       m * m * quad_bilinear<D>(q1, s, s);
   return true;
 }
 
@@ -77,24 +86,22 @@ inline bool quad_f(quad lam, const quad r[3], const quad q1[6],
  * [0, 1], until the bracket's ends are within a factor 2 of each other
  * (λ* may lie 2^−1000 from an end), then halving, to 2^−110 relative.
  * About 130 evaluations; μ² = the larger f at the bracket's ends. */
-inline QuadRef quad_contact(const double r12[3], const double q1d[6],
-                            const double q2d[6]) {
-  quad r[3], q1[6], q2[6];
-  for (int i = 0; i < 3; ++i) r[i] = r12[i];
-  for (int k = 0; k < 6; ++k) {
-    q1[k] = q1d[k];
-    q2[k] = q2d[k];
-  }
+template <int D = 3>
+QuadRef quad_contact(const double *r12, const double *q1d,
+                     const double *q2d) {
+  QuadArray<D> const rr(r12);
+  QuadArray<sym_size(D)> const qq1(q1d), qq2(q2d);
+  const quad *r = rr.v, *q1 = qq1.v, *q2 = qq2.v;
   QuadRef out{0, 0, 0, false};
   quad f, w;
-  if (!quad_f(0.5Q, r, q1, q2, &f, &w)) return out;
+  if (!quad_f<D>(0.5Q, r, q1, q2, &f, &w)) return out;
   if (w == 0) return QuadRef{0.5Q, 0.5Q, f, true};
   // Work in t = distance to the nearer end: λ = t (left) or 1 − t, with
   // 1 − λ = t given exactly on the right.
   bool const left = w > 0;
   auto lambda_of = [&](quad t) { return left ? t : 1 - t; };
   auto eval = [&](quad t, quad *ff, quad *wt) {
-    return quad_f(lambda_of(t), r, q1, q2, ff, wt, left ? 1 - t : t);
+    return quad_f<D>(lambda_of(t), r, q1, q2, ff, wt, left ? 1 - t : t);
   };
   // w > 0 (f′ < 0) at λ = t (left) means the root is below: t too large.
   auto too_far = [&](quad t, bool *fail) {
@@ -148,48 +155,56 @@ inline QuadRef quad_contact(const double r12[3], const double q1d[6],
 
 /* The contact geometry and the derivatives of μ² at λ (the reference λ*),
  * in quad (theory: x − c1 = (1−λ)·Q1·s, n = s/‖s‖, ∂μ²/∂r12 = 2λ(1−λ)·s,
- * ∂μ²/∂ω1 = 2λ(1−λ)²·s × Q1s, ∂μ²/∂ω2 = 2λ²(1−λ)·s × Q2s; pw85.h), and
- * κ̄ = tr(Q(λ))·tr(Q(λ)⁻¹) ≥ cond(Q(λ)). False when Q(λ) is singular. */
+ * ∂μ²/∂ω1 = 2λ(1−λ)²·s × Q1s, ∂μ²/∂ω2 = 2λ²(1−λ)·s × Q2s, the cross
+ * product a scalar in 2D (∂μ²/∂θᵢ); ∂μ²/∂q1[k] = −λ(1−λ)²·sᵢsⱼ,
+ * ∂μ²/∂q2[k] = −λ²(1−λ)·sᵢsⱼ, twice that off the diagonal, k the entry
+ * (i, j); pw85.h, pw85_2d.h), and κ̄ = tr(Q(λ))·tr(Q(λ)⁻¹) ≥ cond(Q(λ)).
+ * False when Q(λ) is singular. */
+template <int D>
 struct QuadGeometry {
-  quad point[3], point2[3], normal[3], d_r12[3], rot1[3], rot2[3];
+  static constexpr int rot = D == 3 ? 3 : 1;
+  quad point[D], point2[D], normal[D], d_r12[D], rot1[rot], rot2[rot];
+  quad d_q1[sym_size(D)], d_q2[sym_size(D)];
   quad cond;
 };
 
-inline bool quad_geometry(quad lam, quad m, const double r12[3],
-                          const double q1d[6], const double q2d[6],
-                          QuadGeometry *g) {  // m = 1 − λ
-  quad r[3], q1[6], q2[6], s[3];
-  for (int i = 0; i < 3; ++i) r[i] = r12[i];
-  for (int k = 0; k < 6; ++k) {
-    q1[k] = q1d[k];
-    q2[k] = q2d[k];
+template <int D>
+bool quad_geometry(quad lam, quad m, const double *r12, const double *q1d,
+                   const double *q2d, QuadGeometry<D> *g) {  // m = 1 − λ
+  QuadArray<D> const rr(r12);
+  QuadArray<sym_size(D)> const qq1(q1d), qq2(q2d);
+  quad s[D], t1[D], t2[D];
+  if (!quad_solve<D>(lam, m, rr.v, qq1.v, qq2.v, s, &g->cond)) return false;
+  for (int i = 0; i < D; ++i) {  // tᵢ = Qᵢ·s
+    quad e[D] = {};
+    e[i] = 1;
+    t1[i] = quad_bilinear<D>(qq1.v, e, s);
+    t2[i] = quad_bilinear<D>(qq2.v, e, s);
   }
-  if (!quad_solve(lam, m, r, q1, q2, s, &g->cond)) return false;
-  auto mul = [&](const quad a[6], quad out[3]) {
-    out[0] = a[0] * s[0] + a[1] * s[1] + a[2] * s[2];
-    out[1] = a[1] * s[0] + a[3] * s[1] + a[4] * s[2];
-    out[2] = a[2] * s[0] + a[4] * s[1] + a[5] * s[2];
+  // a × b: (a × b)ₖ for k < rot (the scalar a0·b1 − a1·b0 in 2D).
+  auto cross = [](const quad *a, const quad *b, int k) {
+    int const i = D == 3 ? (k + 1) % 3 : 0, j = D == 3 ? (k + 2) % 3 : 1;
+    return a[i] * b[j] - a[j] * b[i];
   };
-  auto cross = [](const quad a[3], const quad b[3], quad out[3]) {
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-  };
-  quad t1[3], t2[3], c1[3], c2[3];
-  mul(q1, t1);
-  mul(q2, t2);
-  cross(s, t1, c1);
-  cross(s, t2, c2);
-  quad const ns = (quad)sqrtl((long double)(s[0] * s[0] + s[1] * s[1] +
-                                            s[2] * s[2]));
-  for (int i = 0; i < 3; ++i) {
+  quad ss = 0;
+  for (int i = 0; i < D; ++i) ss += s[i] * s[i];
+  quad const ns = (quad)sqrtl((long double)ss);
+  for (int i = 0; i < D; ++i) {
     g->point[i] = m * t1[i];
     g->point2[i] = -lam * t2[i];  // x − c2 (theory, eq. (3.9b)), no cancellation
     g->normal[i] = s[i] / ns;
     g->d_r12[i] = 2 * lam * m * s[i];
-    g->rot1[i] = 2 * lam * m * m * c1[i];
-    g->rot2[i] = 2 * lam * lam * m * c2[i];
   }
+  for (int k = 0; k < g->rot; ++k) {
+    g->rot1[k] = 2 * lam * m * m * cross(s, t1, k);
+    g->rot2[k] = 2 * lam * lam * m * cross(s, t2, k);
+  }
+  for (int i = 0; i < D; ++i)
+    for (int j = i; j < D; ++j) {
+      quad const ssij = (i == j ? 1 : 2) * s[i] * s[j];
+      g->d_q1[sym_at(D, i, j)] = -lam * m * m * ssij;
+      g->d_q2[sym_at(D, i, j)] = -lam * lam * m * ssij;
+    }
   return true;
 }
 

@@ -336,6 +336,15 @@ class Pack(unittest.TestCase):
             ({"--axes": "1,2"}, "--axes"), ({"--axes": "1,2,0"}, "--axes"),
             ({"--axes": "1,2,3,4"}, "--axes"), ({"--axes": "1,-1,1"}, "--axes"),
             ({"--axes": "a,b,c"}, "--axes"),
+            # empty fields (strtok skipped them: 1,,1,1 read as 1,1,1)
+            ({"--axes": "1,,1,1"}, "--axes"), ({"--axes": "1,1,1,"}, "--axes"),
+            ({"--axes": ",1,1,1"}, "--axes"), ({"--axes": "1,1,,"}, "--axes"),
+            # a fraction whose box, rounded, 3 spheres fill to 1 or more: the
+            # packer refused it with a generic "outside its documented domain"
+            ({"--n": "3", "--fraction": "0.9999999999999999"},
+             "--fraction: 0.9999999999999999 with 3 ellipsoids"),
+            ({"--fraction": "0.99999999999999999"},
+             "--fraction: '0.99999999999999999' is 1 in double precision"),
             ({"--seed": "-1"}, "--seed"), ({"--seed": "18446744073709551616"}, "--seed"),
             ({"--threads": "0"}, "--threads"), ({"--threads": "1025"}, "--threads"),
             ({"--voxels": "0"}, "--voxels"), ({"--voxels": "4097"}, "--voxels"),
@@ -386,6 +395,12 @@ class Pack(unittest.TestCase):
             f["box"] = [1.0, 2.0]
         with h5py.File(os.path.join(self.dir, "nobox.h5"), "w") as f:
             f["positions"] = np.zeros((3, 3))
+        # /axes edited, /forms not: the new ellipsoids would not be those
+        # of the file (--resume used /axes without checking it)
+        edited = os.path.join(self.dir, "axes.h5")
+        shutil.copy(os.path.join(self.dir, "good.h5"), edited)
+        with h5py.File(edited, "r+") as f:
+            f["axes"][...] = 2 * f["axes"][()]
         overlapping = os.path.join(self.dir, "overlap.h5")
         shutil.copy(os.path.join(self.dir, "good.h5"), overlapping)
         with h5py.File(overlapping, "r+") as f:
@@ -415,7 +430,9 @@ class Pack(unittest.TestCase):
                               ("cut.h5", "not an HDF5 file"),
                               ("other.h5", "/box has not the documented type and shape"),
                               ("nobox.h5", "no dataset /box"),
-                              ("overlap.h5", "pairs of ellipsoids overlap")]:
+                              ("overlap.h5", "pairs of ellipsoids overlap"),
+                              ("axes.h5", "/forms[0] is not the form of /axes[0] "
+                               "and /quaternions[0]")]:
             with self.subTest(resume=name):
                 r = run(["--resume", name, "--out", "good.h5"], self.dir)
                 self.assertEqual(r.returncode, 1, r.stderr)

@@ -232,6 +232,13 @@ def test_xdmf(tmp_path):
     spacing = root.findall("./Domain/Grid/Geometry/DataItem")[1].text.split()
     assert [float(x) for x in spacing] == [1.0, 1.0, 1.0]
     assert root.find("./Domain/Grid/Attribute/DataItem").text == "m.h5:/image"
+    # dims: three integers from 1 (a zero count made a spacing of L/0),
+    # refused before anything is written
+    for dims in ((0, 11, 12), (10, 0, 12), (10, 11, -1), (10, 11), 0):
+        with pytest.raises(ValueError, match="dims"):
+            micro.write_xdmf(tmp_path / "bad.xdmf", tmp_path / "m.h5", dims,
+                             [10.0, 11.0, 12.0])
+    assert sorted(os.listdir(tmp_path)) == ["m.xdmf"]
 
 
 def test_xyz_round_trip(tmp_path):
@@ -250,3 +257,26 @@ def test_xyz_round_trip(tmp_path):
     np.testing.assert_array_equal(atoms.arrays["orientation"],
                                   m.quaternions[:, [1, 2, 3, 0]])
     np.testing.assert_array_equal(atoms.arrays["aspherical_shape"], m.axes)
+
+
+def test_xyz_method_quoted(tmp_path):
+    """The method (any text) quoted in the header: a space no longer cuts it
+    nor starts a key of its own; a double quote or a line break, which no
+    quoting of extended XYZ carries, is refused before anything is
+    written."""
+    m = configuration()
+    m.method = "random sequential addition, seed=3"
+    micro.write_xyz(tmp_path / "m.xyz", m)
+    with open(tmp_path / "m.xyz") as f:
+        f.readline()
+        assert 'method="random sequential addition, seed=3"' in f.readline()
+    r = micro.read_xyz(tmp_path / "m.xyz")
+    assert (r.method, r.seed) == (m.method, m.seed)
+    ase_io = pytest.importorskip("ase.io")
+    atoms = ase_io.read(tmp_path / "m.xyz", format="extxyz")
+    assert atoms.info["method"] == m.method
+    for bad in ('say "rsa"', "rsa\nX 0 0 0"):
+        m.method = bad
+        with pytest.raises(ValueError, match="method"):
+            micro.write_xyz(tmp_path / "bad.xyz", m)
+    assert sorted(os.listdir(tmp_path)) == ["m.xyz"]

@@ -333,20 +333,43 @@ static char const *base_name(char const *path) {
   return s ? s + 1 : path;
 }
 
+/* A text file opened for writing at a temporary name beside path
+ * (temp_beside()): the stream, its name in *tmp and its descriptor in *fd,
+ * for finish_beside(); NULL with err set on failure (nothing left). */
+static FILE *open_beside(char const *path, char **tmp, int *fd, char *err, size_t size) {
+  *tmp = temp_beside(path, fd);
+  if (*tmp == NULL) {
+    set_error(err, size, "cannot write", path, strerror(errno));
+    return NULL;
+  }
+  FILE *f = fdopen(dup(*fd), "w");
+  if (f == NULL) {
+    int const e = errno;
+    close(*fd), unlink(*tmp), free(*tmp);
+    set_error(err, size, "cannot write", path, strerror(e));
+  }
+  return f;
+}
+
+/* Closes what open_beside() opened and renames it over path (commit()),
+ * or removes it if a write failed. */
+static int finish_beside(FILE *f, char *tmp, int fd, char const *path, char *err,
+                         size_t size) {
+  int const bad = ferror(f) | (fclose(f) != 0);
+  if (bad) {
+    close(fd), unlink(tmp), free(tmp);
+    set_error(err, size, "cannot write", path, "write error (disk full?)");
+    return -1;
+  }
+  return commit(tmp, fd, path, err, size);
+}
+
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
                   char *err, size_t size) {
   int fd;
-  char *tmp = temp_beside(path, &fd);
-  if (tmp == NULL) {
-    set_error(err, size, "cannot write", path, strerror(errno));
-    return -1;
-  }
-  FILE *f = fdopen(dup(fd), "w");
-  if (f == NULL) {
-    close(fd), unlink(tmp), free(tmp);
-    set_error(err, size, "cannot write", path, strerror(errno));
-    return -1;
-  }
+  char *tmp;
+  FILE *f = open_beside(path, &tmp, &fd, err, size);
+  if (f == NULL) return -1;
   size_t const *n = m->dims;
   /* XDMF lists dimensions slowest first (z y x): the image's first index,
    * along x, is ParaView's Z (docs/microstructures.rst, "ParaView"). */
@@ -374,28 +397,14 @@ int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
           m->pw85_version, base_name(h5_path), n[0] + 1, n[1] + 1, n[2] + 1,
           m->box[0] / (double)n[0], m->box[1] / (double)n[1], m->box[2] / (double)n[2],
           n[0], n[1], n[2], base_name(h5_path));
-  int const bad = ferror(f) | (fclose(f) != 0);
-  if (bad) {
-    close(fd), unlink(tmp), free(tmp);
-    set_error(err, size, "cannot write", path, "write error (disk full?)");
-    return -1;
-  }
-  return commit(tmp, fd, path, err, size);
+  return finish_beside(f, tmp, fd, path, err, size);
 }
 
 int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size) {
   int fd;
-  char *tmp = temp_beside(path, &fd);
-  if (tmp == NULL) {
-    set_error(err, size, "cannot write", path, strerror(errno));
-    return -1;
-  }
-  FILE *f = fdopen(dup(fd), "w");
-  if (f == NULL) {
-    close(fd), unlink(tmp), free(tmp);
-    set_error(err, size, "cannot write", path, strerror(errno));
-    return -1;
-  }
+  char *tmp;
+  FILE *f = open_beside(path, &tmp, &fd, err, size);
+  if (f == NULL) return -1;
   fprintf(f, "%zu\n", m->count);
   fprintf(f,
           "Lattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" pbc=\"T T T\" "
@@ -409,11 +418,5 @@ int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size
     fprintf(f, "X %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", c[0],
             c[1], c[2], a[0], a[1], a[2], p[1], p[2], p[3], p[0]);
   }
-  int const bad = ferror(f) | (fclose(f) != 0);
-  if (bad) {
-    close(fd), unlink(tmp), free(tmp);
-    set_error(err, size, "cannot write", path, "write error (disk full?)");
-    return -1;
-  }
-  return commit(tmp, fd, path, err, size);
+  return finish_beside(f, tmp, fd, path, err, size);
 }

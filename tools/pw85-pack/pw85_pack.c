@@ -9,6 +9,8 @@
  * error (nothing written, or the files as they were). */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fenv.h>
+#include <float.h>
 #include <hdf5.h>
 #include <limits.h>
 #include <math.h>
@@ -95,6 +97,33 @@ static int parse_double(char const *s, double *x) {
   return end != s && *end == '\0' && errno == 0 && isfinite(*x);
 }
 
+/* A number that is below 1 as written but 1 once rounded to a double
+ * (0.99999999999999999): read again rounding downwards, it is below 1. */
+static int rounds_up_to_one(char const *s) {
+  int const mode = fegetround();
+  fesetround(FE_DOWNWARD);
+  double const down = strtod(s, NULL);
+  fesetround(mode);
+  return down < 1.0;
+}
+
+/* Exactly three fields separated by commas, none empty, each a number
+ * > 0 and <= 1e100 (strtok would skip empty fields: 1,,1,1 as 1,1,1). */
+static int parse_axes(char const *s, double axes[3]) {
+  char buf[256];
+  char const *p = s;
+  for (int k = 0; k < 3; k++) {
+    char const *comma = strchr(p, ',');
+    size_t const len = comma != NULL ? (size_t)(comma - p) : strlen(p);
+    if ((comma != NULL) != (k < 2) || len == 0 || len >= sizeof buf) return 0;
+    memcpy(buf, p, len);
+    buf[len] = '\0';
+    if (!parse_double(buf, &axes[k]) || !(axes[k] > 0) || axes[k] > 1e100) return 0;
+    p = comma != NULL ? comma + 1 : p + len;
+  }
+  return 1;
+}
+
 static int parse_u64(char const *s, uint64_t *x) {
   char *end;
   if (*s == '-' || *s == '+' || *s == ' ' || *s == '\0') return 0;
@@ -111,7 +140,7 @@ struct options {
   uint64_t seed;
   int threads, quiet;
   size_t voxels;
-  char const *out, *xyz, *resume, *method;
+  char const *out, *xyz, *resume, *method, *fraction_text;
 };
 
 static int parse(int argc, char **argv, struct options *o) {
@@ -156,22 +185,19 @@ static int parse(int argc, char **argv, struct options *o) {
         return bad_argument("--n: expected an integer from 1 to 100000000, got '%s'", v);
       o->n = (size_t)u, o->have_n = 1;
     } else if (strcmp(name, "--axes") == 0) {
-      char buf[256];
-      snprintf(buf, sizeof buf, "%s", v);
-      char *save = NULL, *tok = strtok_r(buf, ",", &save);
-      int k = 0;
-      for (; tok != NULL && k < 3; k++, tok = strtok_r(NULL, ",", &save))
-        if (!parse_double(tok, &o->axes[k]) || !(o->axes[k] > 0) || o->axes[k] > 1e100)
-          break;
-      if (k != 3 || tok != NULL || strlen(v) >= sizeof buf)
+      if (!parse_axes(v, o->axes))
         return bad_argument("--axes: expected three numbers > 0 separated by commas, got '%s'",
                             v);
       o->have_axes = 1;
     } else if (strcmp(name, "--fraction") == 0) {
+      if (parse_double(v, &x) && x == 1 && rounds_up_to_one(v))
+        return bad_argument("--fraction: '%s' is 1 in double precision: expected a number "
+                            "between 0 and 1 (excluded)",
+                            v);
       if (!parse_double(v, &x) || !(x > 0 && x < 1))
         return bad_argument("--fraction: expected a number between 0 and 1 (excluded), got '%s'",
                             v);
-      o->fraction = x, o->have_fraction = 1;
+      o->fraction = x, o->have_fraction = 1, o->fraction_text = v;
     } else if (strcmp(name, "--seed") == 0) {
       if (!parse_u64(v, &u))
         return bad_argument("--seed: expected an integer from 0 to 2^64-1, got '%s'", v);
@@ -343,6 +369,29 @@ static int pack_main(int argc, char **argv) {
       return error("--resume: %s: not a packing of identical ellipsoids by pw85-pack",
                    o.resume);
     }
+    /* /forms, which are certified, must be the ellipsoids of /axes and
+     * /quaternions, from which the new ones are made: within 16·ε·max aₘ²
+     * of pw85_ellipsoid_quaternion()'s entries (pw85-pack and pypw85 write
+     * those, to the bit; another writer's rounding may differ by an ulp or
+     * two of the largest, an edited /axes by far more). */
+    for (size_t i = 0; i < r.count; i++) {
+      double q[6];
+      double const *ai = r.axes + 3 * i, *fi = r.forms + 6 * i;
+      int const status = pw85_ellipsoid_quaternion(ai, r.quaternions + 4 * i, q);
+      double const big = fmax(ai[0] * ai[0], fmax(ai[1] * ai[1], ai[2] * ai[2]));
+      int match = status == PW85_SUCCESS;
+      for (int k = 0; k < 6 && match; k++)
+        match = fabs(q[k] - fi[k]) <= 16 * DBL_EPSILON * big;
+      if (!match) {
+        io_free(&r);
+        if (status != PW85_SUCCESS)
+          return error("--resume: %s: /axes[%zu] and /quaternions[%zu]: %s", o.resume, i, i,
+                       pw85_strerror(status));
+        return error("--resume: %s: /forms[%zu] is not the form of /axes[%zu] and "
+                     "/quaternions[%zu]: a corrupted file",
+                     o.resume, i, i, i);
+      }
+    }
     if (o.have_axes && memcmp(o.axes, a, sizeof o.axes) != 0) {
       io_free(&r);
       return bad_argument("--axes: differs from the axes of %s", o.resume);
@@ -408,6 +457,14 @@ static int pack_main(int argc, char **argv) {
     double const pi = 3.14159265358979323846;
     double const v = 4.0 / 3.0 * pi * o.axes[0] * o.axes[1] * o.axes[2];
     double const side = cbrt((double)o.n * v / o.fraction);
+    /* The packing fraction of the box as the methods compute it (pack.h:
+     * from the sides): rounding can take it to 1 or beyond near 1, where
+     * pw85_pack() refuses it with a generic PW85_EINVAL. */
+    double const filled = (double)o.n * v / (side * side * side);
+    if (!(filled < 1.0))
+      return bad_argument("--fraction: %s with %zu ellipsoids gives a box that they would "
+                          "fill to %.17g once its side is rounded: ask for less",
+                          o.fraction_text, o.n, filled);
     double const widest = fmax(o.axes[0], fmax(o.axes[1], o.axes[2]));
     /* the side rule of pw85_index.h; fire's (pw85_pack.h) is 2⁻⁹ */
     double const margin = strcmp(method, "fire") == 0 ? 0x1p-9 : 0x1p-19;

@@ -26,6 +26,7 @@ from __future__ import annotations
 import ctypes
 import dataclasses
 import math
+import operator
 import os
 import re
 import shlex
@@ -351,7 +352,14 @@ def write_xdmf(path, h5_path, dims: Sequence[int], box: ArrayLike,
     """The XDMF companion of an HDF5 file's /image, for ParaView (XDMF lists
     axes slowest first: the image's first index, along x, is ParaView's Z;
     see the documentation)."""
-    d = [int(x) for x in dims]
+    try:
+        d = [operator.index(x) for x in dims]
+    except TypeError:
+        raise ValueError("dims: expected 3 integers from 1, got %r"
+                         % (dims,)) from None
+    if len(d) != 3 or min(d) < 1:
+        raise ValueError("dims: expected 3 integers from 1, got %r"
+                         % (dims,))
     b = _vec3("box", box)
     o = _vec3("origin", origin)
     h = [b[k] / d[k] for k in range(3)]
@@ -386,6 +394,18 @@ def write_xdmf(path, h5_path, dims: Sequence[int], box: ArrayLike,
 _PROPERTIES = ("species:S:1:pos:R:3:aspherical_shape:R:3:orientation:R:4")
 
 
+def _xyz_text(name, value):
+    """value, quoted, for an extended XYZ header (a space would end it); a
+    double quote or a line break, which no quoting of the format carries,
+    or a backslash (ASE's readers take it as an escape): ValueError."""
+    text = str(value)
+    if any(ch in text for ch in '"\\\n\r'):
+        raise ValueError("%s: %r holds a double quote, a backslash or a line "
+                         "break, which an extended XYZ header cannot carry"
+                         % (name, text))
+    return '"%s"' % text
+
+
 def write_xyz(path, m: Microstructure, species: str = "X") -> None:
     """Extended XYZ as OVITO reads ellipsoids (and ASE reads atoms):
     Lattice, pbc, Properties=species:S:1:pos:R:3:aspherical_shape:R:3:
@@ -399,7 +419,9 @@ def write_xyz(path, m: Microstructure, species: str = "X") -> None:
              'Lattice="%r 0 0 0 %r 0 0 0 %r" pbc="T T T" Properties=%s '
              'packing_fraction=%r seed=%d method=%s pw85_version=%s'
              % (float(box[0]), float(box[1]), float(box[2]), _PROPERTIES,
-                m.packing_fraction, m.seed, m.method or "none", m.pw85_version)]
+                m.packing_fraction, m.seed,
+                _xyz_text("method", m.method or "none"),
+                _xyz_text("pw85_version", m.pw85_version))]
     for k in range(n):
         values = list(c[k]) + list(a[k]) + [p[k][1], p[k][2], p[k][3], p[k][0]]
         lines.append(species + " " + " ".join(repr(float(v)) for v in values))
