@@ -411,6 +411,14 @@ PAIRS = {
         ["-0x1.8090000800000p+3", "0x0.000ffffefffffp-1022", "0x1.5000000000000p-1019"],
         ["0x1.100ff91000000p-1007", "0x0.0000000a50000p-1022", "0x0.0p+0", "0x0.0003ff01fc286p-1022", "0x0.0003ff0000000p-1022", "0x0.0003ff0000000p-1022"],
         ["0x1.fe43c88000000p+1008", "0x0.0p+0", "0x0.0000000002d00p-1022", "0x1.4000000000000p+996", "0x1.0000000000000p-1019", "0x1.7e43c8800759cp+996"]),
+    # fuzz-contact-raw (seed 29): forms singular far below double
+    # precision: the contact function answers PW85_ERANGE (f not
+    # evaluable along its search), the overlap test PW85_SUCCESS, +1 from
+    # the sphere bound alone (3.7e24 here; pw85.h's one exception).
+    "overlap-sphere-erange": (
+        ["0x0.02f01ff01fc00p-1022", "0x1.fff0400009700p-989", "0x1.7bf0040fc2158p+101"],
+        ["0x1.7474747474747p+118", "0x1.7474747474747p+117", "0x1.7474747474747p+117", "0x1.7474747474747p+117", "0x1.00007c8130710p-879", "0x1.7474747474747p+117"],
+        ["0x1.7474747474747p+118", "0x1.7474747474747p+117", "0x1.7474747474747p+117", "0x1.7474747474747p+117", "0x1.f81f6263f0710p-864", "0x1.7474747474747p+117"]),
 }
 
 

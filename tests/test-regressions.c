@@ -277,6 +277,29 @@ static void test_point_orientation(void) {
   g_assert_cmpfloat(rel3(g + PW85_GEOM_NORMAL, p->ref + 5), <=, bound);
 }
 
+/* fuzz-contact-raw (seed 29; 90 inputs of one class, and fuzz-2d's
+ * status-erange-overlap in 2D): forms singular far below double precision.
+ * The contact function cannot evaluate f along its search (PW85_ERANGE;
+ * the 700-digit μ² exceeds DBL_MAX), while the overlap test's first
+ * filter, the sphere bound μ² ≥ |r12|²/(√tr Q1 + √tr Q2)² (3.7e24 here,
+ * computed below in long double), proves the pair disjoint: pw85.h's one
+ * exception to "the same statuses", PW85_SUCCESS and +1. */
+static void test_overlap_sphere_erange(void) {
+  Pair const *p = pair("overlap-sphere-erange");
+  double const *r = p->in, *q1 = p->in + 3, *q2 = p->in + 9;
+  long double rr = 0, t1 = 0, t2 = 0;
+  for (int i = 0; i < 3; i++) rr += (long double)r[i] * r[i];
+  t1 = (long double)q1[0] + q1[3] + q1[5];
+  t2 = (long double)q2[0] + q2[3] + q2[5];
+  long double const s = sqrtl(t1) + sqrtl(t2);
+  g_assert_cmpfloat((double)(rr / (s * s)), >, 1e24);
+  double out[2];
+  int res = 7;
+  g_assert_cmpint(pw85_contact_function(r, q1, q2, out), ==, PW85_ERANGE);
+  g_assert_cmpint(pw85_overlap(r, q1, q2, &res), ==, PW85_SUCCESS);
+  g_assert_cmpint(res, ==, 1);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
@@ -298,6 +321,8 @@ int main(int argc, char **argv) {
                        test_flat_lambda);
   g_test_add_func("/pw85/regressions/polish-secant", test_polish_secant);
   g_test_add_func("/pw85/regressions/rho-overflow", test_rho_overflow);
+  g_test_add_func("/pw85/regressions/overlap-sphere-erange",
+                  test_overlap_sphere_erange);
   g_test_add_func("/pw85/regressions/point-orientation",
                   test_point_orientation);
   g_test_add_data_func("/pw85/regressions/flat-least-slope",

@@ -362,7 +362,13 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  *             is not certified.
  * @return the statuses of pw85_contact_function(), with the same meaning;
  *         *result is written on PW85_SUCCESS only (also when μ² would
- *         overflow: such ellipsoids are disjoint, *result = +1).
+ *         overflow: such ellipsoids are disjoint, *result = +1). One
+ *         exception, far beyond the domain: where pw85_contact_function()
+ *         answers PW85_ERANGE because f cannot be evaluated along its
+ *         search (forms singular to far below double precision), this
+ *         function answers PW85_SUCCESS, *result = +1, when the bound
+ *         μ² ≥ |r12|²/(√tr Q1 + √tr Q2)², which holds at any conditioning,
+ *         alone proves the ellipsoids disjoint (it is tried first).
  * @since 2.1.0
  */
 PW85_API int pw85_overlap(double const r12[PW85_DIM],

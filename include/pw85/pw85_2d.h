@@ -153,7 +153,10 @@ PW85_API int pw85_2d_contact_function(double const r12[PW85_2D_DIM],
  *             answer.
  * @return the statuses of pw85_2d_contact_function(), with the same
  *         meaning; *result is written on PW85_SUCCESS only (also when μ²
- *         would overflow: such ellipses are disjoint, *result = +1).
+ *         would overflow: such ellipses are disjoint, *result = +1); with
+ *         the exception of pw85_overlap(): PW85_SUCCESS, +1, where the
+ *         sphere bound alone proves the ellipses disjoint though the
+ *         contact function cannot evaluate f (far beyond the domain).
  * @since 2.5.0
  */
 PW85_API int pw85_2d_overlap(double const r12[PW85_2D_DIM],

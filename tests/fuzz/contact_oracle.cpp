@@ -160,6 +160,14 @@ void check_contact(const double *r12, const double *q1, const double *q2,
   } else if (erange_inf) {
     CHECK_IN(st2 == PW85_SUCCESS && res == 1,
              "mu2 overflows: overlap status %d result %d", st2, res);
+  } else if (st == PW85_ERANGE && st2 == PW85_SUCCESS) {
+    // The one exception of pw85.h: f not evaluable along the search (far
+    // beyond the domain), but the sphere bound, tried first and valid at
+    // any conditioning, proves the pair disjoint. Checked here with the
+    // bound in long double, above 1 by far more than its rounding.
+    long double const fl = mu2_floor<D>(r12, q1, q2);
+    CHECK_IN(res == 1 && fl > 1.0L + 1e-12L,
+             "contact ERANGE, overlap %d with the sphere bound %La", res, fl);
   } else {
     CHECK_IN(st2 == st, "contact status %d, overlap status %d", st, st2);
     CHECK_IN(is_sentinel(&res, sizeof res), "overlap wrote on error %d", st2);
