@@ -418,8 +418,10 @@ class Search {
     ++share->candidates;
     ImageVector<D> v;
     image_vector_exact(x.c, y.c, n, box_, &v);
-    PairHit<D> hit{x.id, y.id, {}, 0, 0.0, 0.0};
+    PairHit<D> hit;
+    hit.i = x.id, hit.j = y.id;
     for (int k = 0; k < D; ++k) hit.shift[k] = n[k];
+    hit.result = 0, hit.mu2 = hit.lambda = 0.0;
     if (!narrow(v, q1, q2, &hit, share)) return true;
     if (!share->pairs.push_back(hit)) {
       share->status = Status::no_memory;
@@ -519,56 +521,69 @@ class Search {
   bool runs(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
             double const *lo, double const *hi, Share<D> *share) const
       noexcept {
+    constexpr int z = D - 1;
+    std::int64_t const lo_z = std::int64_t(lo[z]), hi_z = std::int64_t(hi[z]);
+    Rows const rows{g, a, rc, lo, hi, share, lo_z, hi_z,
+                    periodic_ ? floor_div(lo_z, g.n[z]) : 0,
+                    periodic_ ? floor_div(hi_z, g.n[z]) : 0};
     std::int64_t p[D];
-    return rows<0>(g, a, rc, lo, hi, 0, p, share);
+    return along<0>(rows, 0, p);
   }
 
+  // What runs() hands down its loops: the block of cells, and along the
+  // last axis its ends and the copies of the box they fall in.
+  struct Rows {
+    Grid<D> const &g;
+    std::size_t a;
+    Reach<D> const &rc;
+    double const *lo, *hi;
+    Share<D> *share;
+    std::int64_t lo_z, hi_z, copy_lo, copy_hi;
+  };
+
   // The loops along the axes K < D − 1 (nested once inlined): the cell
-  // m_K of the copy p_K of the box; row: the position of the row's first
+  // m of the copy p_K of the box; row: the position of the row's first
   // cell so far (row-major, in 3D (u0·n1 + u1)·n2).
   template <int K>
-  PW85_INLINE bool rows(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
-                        double const *lo, double const *hi, std::int64_t row,
-                        std::int64_t p[D], Share<D> *share) const noexcept {
-    for (std::int64_t m = std::int64_t(lo[K]); m <= std::int64_t(hi[K]); ++m) {
+  PW85_INLINE bool along(Rows const &w, std::int64_t row,
+                         std::int64_t p[D]) const noexcept {
+    Grid<D> const &g = w.g;
+    for (std::int64_t m = std::int64_t(w.lo[K]); m <= std::int64_t(w.hi[K]); ++m) {
       p[K] = periodic_ ? floor_div(m, g.n[K]) : 0;
       std::int64_t const inner = row * g.n[K] + (m - p[K] * g.n[K]);
       if constexpr (K + 2 < D) {
-        if (!rows<K + 1>(g, a, rc, lo, hi, inner, p, share)) return false;
-      } else if (!run(g, a, rc, lo[D - 1], hi[D - 1],
-                      static_cast<std::size_t>(inner * g.n[D - 1]), p, share)) {
+        if (!along<K + 1>(w, inner, p)) return false;
+      } else if (!run(w, static_cast<std::size_t>(inner * g.n[D - 1]), p)) {
         return false;
       }
     }
     return true;
   }
 
-  // The cells [lo, hi] of a row along the last axis (p: the copies along
-  // the others).
-  PW85_INLINE bool run(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
-                       double lo, double hi, std::size_t row,
-                       std::int64_t const p[D], Share<D> *share) const noexcept {
+  // The cells of a row along the last axis (p: the copies along the
+  // others), one contiguous run of entries per copy of the box.
+  PW85_INLINE bool run(Rows const &w, std::size_t row,
+                       std::int64_t const p[D]) const noexcept {
     constexpr int z = D - 1;
+    Grid<D> const &g = w.g;
+    std::size_t const a = w.a;
     Hot<D> const &x = s_.hot[a];
     std::int32_t shift[D];
     double r[D];
-    std::int64_t const lo2 = std::int64_t(lo), hi2 = std::int64_t(hi);
-    std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[z]) : 0;
-    std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[z]) : 0;
-    for (std::int64_t p2 = plo; p2 <= phi; ++p2) {
-      std::int64_t const z0 = std::max(lo2, p2 * g.n[z]) - p2 * g.n[z];
-      std::int64_t const z1 = std::min(hi2, p2 * g.n[z] + g.n[z] - 1) - p2 * g.n[z];
+    for (std::int64_t pz = w.copy_lo; pz <= w.copy_hi; ++pz) {
+      std::int64_t const z0 = std::max(w.lo_z, pz * g.n[z]) - pz * g.n[z];
+      std::int64_t const z1 = std::min(w.hi_z, pz * g.n[z] + g.n[z] - 1) - pz * g.n[z];
       std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
       if (b1 <= a) continue;
       std::size_t const b0 = std::max(g.first + g.start[row + std::size_t(z0)], a);
       for (std::size_t b = b0; b < b1; ++b) {
         Hot<D> const &y = s_.hot[b];
         for (int k = 0; k < z; ++k) shift[k] = std::int32_t(p[k] - y.wrap[k]);
-        shift[z] = std::int32_t(p2 - y.wrap[z]);
-        if (!boxes_meet<D>(x.c, x.h, y.c, y.h, shift, box_, sqrt_t_, rc.slack, r))
+        shift[z] = std::int32_t(pz - y.wrap[z]);
+        if (!boxes_meet<D>(x.c, x.h, y.c, y.h, shift, box_, sqrt_t_, w.rc.slack, r))
           continue;
         if (b == a && !shift_positive<D>(shift)) continue;
-        if (!test(a, b, shift, share)) return false;
+        if (!test(a, b, shift, w.share)) return false;
       }
     }
     return true;
