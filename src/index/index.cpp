@@ -57,12 +57,7 @@ int Index<D>::make_entry(std::size_t id, double const *c, double const *q,
   wraps(c, e->wrap);
   for (int k = 0; k < S; ++k) e->q[k] = q[k];
   half_widths<D>(q, e->h);
-  // The deep-overlap shortcut (deep.hpp) is 3D only: in 2D ρ = 0 turns
-  // it off, and every pair goes through the narrow phase.
-  if constexpr (D == 3)
-    e->rho = inscribed_radius(q);
-  else
-    e->rho = 0.0;
+  e->rho = inscribed_radius<D>(q);
   e->id = static_cast<std::uint32_t>(id);
   return level_exponent<D>(e->h);
 }

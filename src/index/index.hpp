@@ -81,7 +81,7 @@ struct alignas(64) Entry {
   double c[D];               // centre, as given
   double h[D];               // AABB half-widths √Q_kk
   double q[sym_size(D)];     // quadratic form
-  double rho;                // inscribed_radius(q) (3D; 0 in 2D)
+  double rho;                // inscribed_radius(q)
 };
 
 template <int D>

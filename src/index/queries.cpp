@@ -272,16 +272,17 @@ namespace {
 // The candidate's side of the deep-overlap shortcut (deep.hpp), made on
 // the first stored ellipsoid with an inscribed ball: its Cholesky factor,
 // the certified lower bound of its λmin, and a bound of its semi-axes.
+template <int D>
 struct CandidateFactor {
   int known = -1;  // 1: usable; 0: not; −1: not yet computed
-  double l[sym];
+  double l[sym_size(D)];
   double lambda_min = 0.0;
   double reach = 0.0;
 
-  bool usable(double const q[sym]) noexcept {
+  bool usable(double const *q) noexcept {
     if (known < 0) {
-      known = line_factor(q, l, &lambda_min);
-      reach = 1.5 * std::sqrt(q[0] + q[3] + q[5]);  // > every semi-axis
+      known = line_factor<D>(q, l, &lambda_min);
+      reach = 1.5 * std::sqrt(trace<D>(q));  // > every semi-axis
     }
     return known > 0;
   }
@@ -300,24 +301,22 @@ Status Index<D>::overlap_any(double const *c, double const *q,
   Status failed = Status::success;
   int best = 1;
   std::uint32_t best_id = no_id;
-  CandidateFactor cf;
+  CandidateFactor<D> cf;
   s = visit(c, h, 1.0, to_exclude(exclude), true,
             [&](Entry<D> const &e, std::int32_t const *shift,
                 double const *r, double slack_sum) {
               // Deep overlaps, decided without the narrow phase
-              // (deep.hpp, 3D); only if the candidate may reach the stored
+              // (deep.hpp); only if the candidate may reach the stored
               // ellipsoid's ball (a filter: it decides nothing).
-              if constexpr (D == 3) {
-                if (e.rho > 0.0 && cf.usable(q)) {
-                  double const d2 = dot(r, r);
-                  double const gap = cf.reach + e.rho;
-                  if (d2 < gap * gap &&
-                      slack_sum * slack_sum <= deep_slack * cf.lambda_min &&
-                      deep_overlap(cf.l, r, d2, e.rho)) {
-                    best = -1;
-                    best_id = e.id;
-                    return false;
-                  }
+              if (e.rho > 0.0 && cf.usable(q)) {
+                double const d2 = dot<D>(r, r);
+                double const gap = cf.reach + e.rho;
+                if (d2 < gap * gap &&
+                    slack_sum * slack_sum <= deep_slack * cf.lambda_min &&
+                    deep_overlap<D>(cf.l, r, d2, e.rho)) {
+                  best = -1;
+                  best_id = e.id;
+                  return false;
                 }
               }
               if (separated_along_r<D>(r, q, h, e.q, e.h, 1.0, slack_sum))
