@@ -4,6 +4,7 @@
 #include <pw85/pw85_pack.hpp>
 #include <pw85/pw85_2d.h>
 #include <pw85/pw85_2d_index.h>
+#include <pw85/pw85_2d_index.hpp>
 #include <pw85/pw85_image.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>

@@ -6,8 +6,8 @@
 //
 // Snapshot: per level e, a dense grid (cells of side ≥ 2^e, coarsened until
 // there are at most 2·count + 64 cells) whose entries are sorted by cell
-// (a counting sort), so that the entries of a row of cells along axis 2
-// are contiguous, and neighbours in space are neighbours in memory. The
+// (a counting sort), so that the entries of a row of cells along the last
+// axis are contiguous, and neighbours in space are neighbours in memory. The
 // hot fields (centre, half-widths, wrap, id) and the forms are separate
 // arrays.
 //
