@@ -30,76 +30,9 @@ namespace pw85 {
 namespace index_detail {
 
 /// @cond INTERNAL
-// The C functions of pw85_2d_index.h, for BasicIndex.
-struct Api2 {
-  using handle = pw85_2d_index;
-  static constexpr std::size_t dim = PW85_2D_DIM;
-  static constexpr std::size_t sym = PW85_2D_SYM;
-  static int create(double const *box, handle **h) noexcept {
-    return pw85_2d_index_create(box, h);
-  }
-  static void destroy(handle *h) noexcept { pw85_2d_index_destroy(h); }
-  static int count(handle const *h, std::size_t *n) noexcept {
-    return pw85_2d_index_count(h, n);
-  }
-  static int insert(handle *h, std::size_t id, double const *c,
-                    double const *q) noexcept {
-    return pw85_2d_index_insert(h, id, c, q);
-  }
-  static int insert_many(handle *h, std::size_t n, std::size_t const *ids,
-                         double const *c, double const *q) noexcept {
-    return pw85_2d_index_insert_many(h, n, ids, c, q);
-  }
-  static int insert_many_threads(handle *h, std::size_t n,
-                                 std::size_t const *ids, double const *c,
-                                 double const *q, int threads) noexcept {
-    return pw85_2d_index_insert_many_threads(h, n, ids, c, q, threads);
-  }
-  static int update(handle *h, std::size_t id, double const *c,
-                    double const *q) noexcept {
-    return pw85_2d_index_update(h, id, c, q);
-  }
-  static int remove(handle *h, std::size_t id) noexcept {
-    return pw85_2d_index_remove(h, id);
-  }
-  static int get(handle const *h, std::size_t id, double *c,
-                 double *q) noexcept {
-    return pw85_2d_index_get(h, id, c, q);
-  }
-  static int overlap_any(handle const *h, double const *c, double const *q,
-                         std::size_t exclude, int *result,
-                         std::size_t *id) noexcept {
-    return pw85_2d_index_overlap_any(h, c, q, exclude, result, id);
-  }
-  static int overlap_any_batch(handle const *h, std::size_t n,
-                               double const *c, std::size_t cs,
-                               double const *q, std::size_t qs,
-                               std::size_t const *exclude, int *results,
-                               std::size_t *ids, int *status,
-                               int threads) noexcept {
-    return pw85_2d_index_overlap_any_batch(h, n, c, cs, q, qs, exclude,
-                                           results, ids, status, threads);
-  }
-  static int within(handle const *h, double const *c, double const *q,
-                    double t, std::size_t exclude, std::size_t cap,
-                    std::size_t *ids, int *shifts, double *values,
-                    std::size_t *n) noexcept {
-    return pw85_2d_index_within(h, c, q, t, exclude, cap, ids, shifts, values,
-                                n);
-  }
-  static int overlapping_pairs(handle const *h, int threads, std::size_t cap,
-                               std::size_t *ids, int *shifts, int *values,
-                               std::size_t *n) noexcept {
-    return pw85_2d_index_overlapping_pairs(h, threads, cap, ids, shifts,
-                                           values, n);
-  }
-  static int pairs_within(handle const *h, double t, int threads,
-                          std::size_t cap, std::size_t *ids, int *shifts,
-                          double *values, std::size_t *n) noexcept {
-    return pw85_2d_index_pairs_within(h, t, threads, cap, ids, shifts, values,
-                                      n);
-  }
-};
+// The C functions of pw85_2d_index.h, for BasicIndex (pw85_index.hpp).
+PW85_INDEX_CXX_API(Api2, pw85_2d_index, pw85_2d_index, PW85_2D_DIM,
+                   PW85_2D_SYM);
 /// @endcond
 
 }  // namespace index_detail

@@ -58,75 +58,38 @@ constexpr std::size_t index_no_id = PW85_INDEX_NO_ID;
 namespace index_detail {
 
 /// @cond INTERNAL
-// The C functions of pw85_index.h, for BasicIndex.
-struct Api3 {
-  using handle = pw85_index;
-  static constexpr std::size_t dim = PW85_DIM;
-  static constexpr std::size_t sym = PW85_SYM;
-  static int create(double const *box, handle **h) noexcept {
-    return pw85_index_create(box, h);
+// The table of the C functions of an index header, whose functions are
+// PREFIX_create, PREFIX_destroy, PREFIX_count, ..., for BasicIndex: the
+// struct NAME with the header's handle type and sizes (dim, sym) and a
+// static member per function, forwarding its arguments (Api3 below;
+// pw85_2d_index.hpp makes Api2).
+#define PW85_INDEX_CXX_API(NAME, PREFIX, HANDLE, DIM, SYM)                    \
+  struct NAME {                                                               \
+    using handle = HANDLE;                                                    \
+    static constexpr std::size_t dim = DIM;                                   \
+    static constexpr std::size_t sym = SYM;                                   \
+    static void destroy(HANDLE *h) noexcept { PREFIX##_destroy(h); }          \
+    PW85_INDEX_CXX_CALL_(PREFIX, create)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, count)                                       \
+    PW85_INDEX_CXX_CALL_(PREFIX, insert)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, insert_many)                                 \
+    PW85_INDEX_CXX_CALL_(PREFIX, insert_many_threads)                         \
+    PW85_INDEX_CXX_CALL_(PREFIX, update)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, remove)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, get)                                         \
+    PW85_INDEX_CXX_CALL_(PREFIX, overlap_any)                                 \
+    PW85_INDEX_CXX_CALL_(PREFIX, overlap_any_batch)                           \
+    PW85_INDEX_CXX_CALL_(PREFIX, within)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, overlapping_pairs)                           \
+    PW85_INDEX_CXX_CALL_(PREFIX, pairs_within)                                \
   }
-  static void destroy(handle *h) noexcept { pw85_index_destroy(h); }
-  static int count(handle const *h, std::size_t *n) noexcept {
-    return pw85_index_count(h, n);
+#define PW85_INDEX_CXX_CALL_(PREFIX, FN)                                      \
+  template <typename... Args>                                                 \
+  static int FN(Args... args) noexcept {                                      \
+    return PREFIX##_##FN(args...);                                            \
   }
-  static int insert(handle *h, std::size_t id, double const *c,
-                    double const *q) noexcept {
-    return pw85_index_insert(h, id, c, q);
-  }
-  static int insert_many(handle *h, std::size_t n, std::size_t const *ids,
-                         double const *c, double const *q) noexcept {
-    return pw85_index_insert_many(h, n, ids, c, q);
-  }
-  static int insert_many_threads(handle *h, std::size_t n,
-                                 std::size_t const *ids, double const *c,
-                                 double const *q, int threads) noexcept {
-    return pw85_index_insert_many_threads(h, n, ids, c, q, threads);
-  }
-  static int update(handle *h, std::size_t id, double const *c,
-                    double const *q) noexcept {
-    return pw85_index_update(h, id, c, q);
-  }
-  static int remove(handle *h, std::size_t id) noexcept {
-    return pw85_index_remove(h, id);
-  }
-  static int get(handle const *h, std::size_t id, double *c,
-                 double *q) noexcept {
-    return pw85_index_get(h, id, c, q);
-  }
-  static int overlap_any(handle const *h, double const *c, double const *q,
-                         std::size_t exclude, int *result,
-                         std::size_t *id) noexcept {
-    return pw85_index_overlap_any(h, c, q, exclude, result, id);
-  }
-  static int overlap_any_batch(handle const *h, std::size_t n,
-                               double const *c, std::size_t cs,
-                               double const *q, std::size_t qs,
-                               std::size_t const *exclude, int *results,
-                               std::size_t *ids, int *status,
-                               int threads) noexcept {
-    return pw85_index_overlap_any_batch(h, n, c, cs, q, qs, exclude, results,
-                                        ids, status, threads);
-  }
-  static int within(handle const *h, double const *c, double const *q,
-                    double t, std::size_t exclude, std::size_t cap,
-                    std::size_t *ids, int *shifts, double *values,
-                    std::size_t *n) noexcept {
-    return pw85_index_within(h, c, q, t, exclude, cap, ids, shifts, values, n);
-  }
-  static int overlapping_pairs(handle const *h, int threads, std::size_t cap,
-                               std::size_t *ids, int *shifts, int *values,
-                               std::size_t *n) noexcept {
-    return pw85_index_overlapping_pairs(h, threads, cap, ids, shifts, values,
-                                        n);
-  }
-  static int pairs_within(handle const *h, double t, int threads,
-                          std::size_t cap, std::size_t *ids, int *shifts,
-                          double *values, std::size_t *n) noexcept {
-    return pw85_index_pairs_within(h, t, threads, cap, ids, shifts, values,
-                                   n);
-  }
-};
+
+PW85_INDEX_CXX_API(Api3, pw85_index, pw85_index, PW85_DIM, PW85_SYM);
 /// @endcond
 
 /**
