@@ -12,6 +12,7 @@
  * bit for bit; insert_many_threads on 1, 2 and 8 threads; every bad input,
  * with the outputs untouched. PW85_TEST_SMALL (sanitizer and valgrind
  * runs) makes the configurations smaller. */
+#include <float.h>
 #include <pw85/pw85_2d_index.h>
 #include <stdlib.h>
 #include <string.h>
@@ -413,6 +414,102 @@ static void test_config(gconstpointer data) {
   g_rand_free(rng);
 }
 
+/* ---- exact image vectors ----------------------------------------------- */
+
+/* data/pw85_2d_index_images.txt (PW85_2D_INDEX_IMAGES): pairs whose image
+ * vector r = (c_j + n∘L) − c_i is not a double, with μ² of the exact
+ * configuration correctly rounded (data/gen_2d_index_images.py, exact
+ * rationals, checked by mpmath). within() reports that μ² bit for bit
+ * through n; overlap_any() and overlapping_pairs() decide as its sign of
+ * μ² − 1 outside the 4-ulp band of pw85_2d_overlap(). The fields of a
+ * record, in the file's order: L[2], ci[2], qi[3], cj[2], qj[3], n[2], μ². */
+enum { IMAGE_FIELDS = 15 };
+
+static void test_exact_images(void) {
+  const char *path = g_getenv("PW85_2D_INDEX_IMAGES");
+  g_assert_nonnull(path);
+  gchar *text = NULL;
+  g_assert_true(g_file_get_contents(path, &text, NULL, NULL));
+  gchar **lines = g_strsplit(text, "\n", -1);
+  int records = 0, rounded_differs = 0, decided = 0;
+  for (gchar **line = lines; *line != NULL; line++) {
+    if (**line == '#' || **line == '\0') continue;
+    double v[IMAGE_FIELDS];
+    char *p = *line;
+    for (int k = 0; k < IMAGE_FIELDS; k++) {
+      char *end = NULL;
+      v[k] = strtod(p, &end);
+      g_assert_true(end != p);
+      p = end;
+    }
+    double const *box = v, *ci = v + 2, *qi = v + 4, *cj = v + 7, *qj = v + 9;
+    int const n[2] = {(int)v[12], (int)v[13]};
+    double const mu2 = v[14];
+    records++;
+    /* what a brute force on the rounded r would say: another μ² often */
+    double r[2], o[2];
+    for (int k = 0; k < 2; k++) r[k] = (cj[k] + n[k] * box[k]) - ci[k];
+    g_assert_cmpint(pw85_2d_contact_function(r, qi, qj, o), ==, PW85_SUCCESS);
+    rounded_differs += o[0] != mu2;
+
+    pw85_2d_index *ix = NULL;
+    g_assert_cmpint(pw85_2d_index_create(box, &ix), ==, PW85_SUCCESS);
+    g_assert_cmpint(pw85_2d_index_insert(ix, 7, cj, qj), ==, PW85_SUCCESS);
+    size_t ids[8], count = 0;
+    int shifts[16];
+    double ml[16];
+    g_assert_cmpint(pw85_2d_index_within(ix, ci, qi, 8., PW85_INDEX_NO_ID, 8, ids, shifts,
+                                         ml, &count), ==, PW85_SUCCESS);
+    size_t at = count;
+    for (size_t a = 0; a < MIN(count, (size_t)8); a++)
+      if (shifts[2 * a] == n[0] && shifts[2 * a + 1] == n[1]) at = a;
+    if (at == count)
+      test_mismatch("record %d: within misses the image [%d %d]", records, n[0], n[1]);
+    else if (ml[2 * at] != mu2)
+      test_mismatch("record %d: within gives mu2 %a, exact configuration %a (rounded r: %a)",
+                    records, ml[2 * at], mu2, o[0]);
+    /* The decisions consider every image: only records whose other images
+     * the bounding boxes separate (with a margin far above the rounding of
+     * r, below 1e-6 here) are decided by the record's μ² alone. */
+    gboolean alone = TRUE;
+    for (int a = -2; a <= 2; a++)
+      for (int b = -2; b <= 2; b++) {
+        if (a == 0 && b == 0) continue;
+        gboolean apart = FALSE;
+        int const m[2] = {a, b};
+        for (int k = 0; k < 2; k++) {
+          double const reach = 1.001 * (sqrt(qi[2 * k]) + sqrt(qj[2 * k])) + 1e-6;
+          apart = apart || fabs(r[k] + m[k] * box[k]) > reach;
+        }
+        alone = alone && apart;
+      }
+    if (alone && fabs(mu2 - 1.) > 4. * DBL_EPSILON) {
+      int const want = mu2 < 1. ? -1 : 1;
+      int any = 9, pair = 1, results[2] = {9, 9};
+      size_t id = 0, np = 0, pids[4];
+      int pshifts[4];
+      g_assert_cmpint(pw85_2d_index_overlap_any(ix, ci, qi, PW85_INDEX_NO_ID, &any, &id), ==,
+                      PW85_SUCCESS);
+      g_assert_cmpint(pw85_2d_index_insert(ix, 2, ci, qi), ==, PW85_SUCCESS);
+      g_assert_cmpint(pw85_2d_index_overlapping_pairs(ix, 1, 2, pids, pshifts, results, &np),
+                      ==, PW85_SUCCESS);
+      if (np > 0) pair = results[0];
+      decided++;
+      if (any != want || pair != want)
+        test_mismatch("record %d: mu2 %a: overlap_any %d, overlapping_pairs %d, exact %d",
+                      records, mu2, any, pair, want);
+    }
+    pw85_2d_index_destroy(ix);
+  }
+  g_test_message("%d records; the rounded r gives another mu2 in %d; %d decided", records,
+                 rounded_differs, decided);
+  g_assert_cmpint(records, >=, 200);
+  g_assert_cmpint(rounded_differs, >, records / 4); /* the file tests what it is for */
+  g_assert_cmpint(decided, >, records / 2);
+  g_strfreev(lines);
+  g_free(text);
+}
+
 /* ---- bad input --------------------------------------------------------- */
 
 static void test_errors(void) {
@@ -635,5 +732,6 @@ int main(int argc, char **argv) {
   }
   g_test_add_func("/pw85/2d-index/own-images", test_own_images);
   g_test_add_func("/pw85/2d-index/errors", test_errors);
+  g_test_add_func("/pw85/2d-index/exact-images", test_exact_images);
   return g_test_run();
 }
