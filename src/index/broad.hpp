@@ -123,26 +123,29 @@ inline bool shift_range(bool periodic, double const *c, double const *reach,
   return true;
 }
 
-// Calls f(shift) for every shift of [lo, hi] (lexicographic order) until
-// f returns false; returns false then. The loop over axis K nests those
-// over the axes after it (D nested loops once inlined).
-template <int D, int K = 0, typename F>
-PW85_INLINE bool for_each_shift(std::int64_t const *lo, std::int64_t const *hi,
-                                F &&f, std::int32_t *shift = nullptr) noexcept {
-  if constexpr (K == 0) {
-    std::int32_t s[D];
-    return for_each_shift<D, 1>(lo, hi, f, s);
-  } else {
-    for (std::int64_t a = lo[K - 1]; a <= hi[K - 1]; ++a) {
-      shift[K - 1] = std::int32_t(a);
-      if constexpr (K < D) {
-        if (!for_each_shift<D, K + 1>(lo, hi, f, shift)) return false;
-      } else if (!f(static_cast<std::int32_t const *>(shift))) {
-        return false;
-      }
+// The loop over the shifts along axis K, nesting those along the axes
+// after it (D nested loops once inlined): for_each_shift().
+template <int D, int K, typename F>
+PW85_INLINE bool shifts_along(std::int64_t const *lo, std::int64_t const *hi,
+                              std::int32_t *shift, F &f) noexcept {
+  for (std::int64_t a = lo[K]; a <= hi[K]; ++a) {
+    shift[K] = std::int32_t(a);
+    if constexpr (K + 1 < D) {
+      if (!shifts_along<D, K + 1>(lo, hi, shift, f)) return false;
+    } else if (!f(static_cast<std::int32_t const *>(shift))) {
+      return false;
     }
-    return true;
   }
+  return true;
+}
+
+// Calls f(shift) for every shift of [lo, hi] (lexicographic order) until
+// f returns false; returns false then.
+template <int D, typename F>
+PW85_INLINE bool for_each_shift(std::int64_t const *lo, std::int64_t const *hi,
+                                F &&f) noexcept {
+  std::int32_t shift[D];
+  return shifts_along<D, 0>(lo, hi, shift, f);
 }
 
 // The box test on r̂ = (c_j + n∘L) − c formed in double (written to r):
