@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Compiled as C (several standards, -Werror -pedantic): pw85.h and
- * pw85_index.h (and pw85_image.h, pw85_2d.h) stand alone, twice included, and their prototypes accept
+ * pw85_index.h (and pw85_image.h, pw85_2d.h, pw85_2d_index.h) stand alone, twice included, and their prototypes accept
  * const arrays. */
 #include <pw85/pw85_2d.h>
 #include <pw85/pw85_2d.h>
+#include <pw85/pw85_2d_index.h>
+#include <pw85/pw85_2d_index.h>
 #include <pw85/pw85_image.h>
 #include <pw85/pw85_image.h>
 #include <pw85/pw85_index.h>
@@ -83,5 +85,13 @@ int main(void) {
                  PW85_SUCCESS;
   ok = ok && pw85_2d_principal_axes_batch(1, q2d, 0, axes, &theta, NULL, 1) ==
                  PW85_SUCCESS;
+  double const box2[PW85_2D_DIM] = {4., 4.};
+  pw85_2d_index *index2 = NULL;
+  ok = ok && pw85_2d_index_create(box2, &index2) == PW85_SUCCESS;
+  ok = ok && pw85_2d_index_insert(index2, 0, r2, q2d) == PW85_SUCCESS;
+  ok = ok && pw85_2d_index_within(index2, r2, q2d, 1., PW85_INDEX_NO_ID, 0,
+                                  NULL, NULL, NULL, &count) == PW85_SUCCESS &&
+       count == 1;
+  pw85_2d_index_destroy(index2);
   return ok ? 0 : 1;
 }

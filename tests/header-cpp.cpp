@@ -3,6 +3,8 @@
 // together, in either order; pw85_index.hpp first, standing alone.
 #include <pw85/pw85_pack.hpp>
 #include <pw85/pw85_2d.h>
+#include <pw85/pw85_2d_index.h>
+#include <pw85/pw85_2d_index.hpp>
 #include <pw85/pw85_image.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
@@ -17,6 +19,8 @@ static_assert(noexcept(pw85_2d_overlap(nullptr, nullptr, nullptr, nullptr)),
               "pw85_2d.h is noexcept for C++ callers");
 static_assert(noexcept(pw85_index_destroy(nullptr)),
               "pw85_index.h is noexcept for C++ callers");
+static_assert(noexcept(pw85_2d_index_destroy(nullptr)),
+              "pw85_2d_index.h is noexcept for C++ callers");
 
 int main() {
   double const r[pw85::dim] = {1., 0., 0.};

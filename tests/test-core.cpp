@@ -18,6 +18,7 @@
 #include "index/index.hpp"
 #include "ldl.hpp"
 #include "pw85.h"
+#include "pw85_2d.h"
 #include "testutil.h"
 
 namespace {
@@ -147,6 +148,109 @@ void check_radius(double const q[PW85_SYM], double lmin, double lmax,
     g_assert_cmpfloat(rho * rho, >=, lmin / std::sqrt(3.0) * (1.0 - 0x1p-9));
     if (rho * rho >= lmin * (1.0 - 0x1p-15)) ++*tight;
   }
+}
+
+// inscribed_radius<2>(q) of an ellipse: as check_radius(), on forms whose
+// eigenvalues are exact (diagonal ones; [[a, b], [b, a]], eigenvalues
+// a ± b, a and b small integers times a power of two, to
+// λmin/λmax = 2⁻⁴⁵), then on rounded rotations R·diag(e)·Rᵀ.
+void check_radius_2d(double const q[3], double lmin, double lmax, int *tight) {
+  double const rho = pw85::detail::inscribed_radius<2>(q);
+  g_assert_cmpfloat(rho, >=, 0.0);
+  if (rho > 0.0 && !(std::fma(rho, rho, -lmin) < 0.0))
+    g_error("2D: ρ = %.17g, λmin = %.17g: ρ² ≥ λmin", rho, lmin);
+  if (lmax <= 1e4 * lmin) {
+    // The Frobenius bound at worst: λmin(Q) ≥ 1/‖Q⁻¹‖_F ≥ λmin/√2.
+    g_assert_cmpfloat(rho * rho, >=, lmin / std::sqrt(2.0) * (1.0 - 0x1p-9));
+    if (rho * rho >= lmin * (1.0 - 0x1p-15)) ++*tight;
+  }
+}
+
+void test_inscribed_radius_2d() {
+  GRand *rng = g_rand_new_with_seed(2029);
+  int tight = 0, moderate = 0;
+  for (int n = 0; n < 20000; n++) {
+    double const scale = std::ldexp(1., g_rand_int_range(rng, -250, 251));
+    double q[3] = {0, 0, 0}, lmin = 0, lmax = 0;
+    if (n % 3 == 0) {  // diagonal
+      q[0] = scale * g_rand_int_range(rng, 1, 1 << 20);
+      q[2] = scale * g_rand_int_range(rng, 1, 1 << 20);
+      lmin = std::fmin(q[0], q[2]), lmax = std::fmax(q[0], q[2]);
+    } else {  // a ± b; n % 3 == 2: a − |b| from 1 to 4 times the scale
+      double const a = std::ldexp(1., 45) * scale;
+      double const b = (n % 3 == 1
+                            ? g_rand_int_range(rng, 0, 1 << 20) * std::ldexp(1., 25)
+                            : std::ldexp(1., 45) - g_rand_int_range(rng, 1, 5)) *
+                       scale * (n % 2 ? 1 : -1);
+      q[0] = q[2] = a, q[1] = b;
+      lmin = a - std::fabs(b), lmax = a + std::fabs(b);
+    }
+    if (lmax <= 1e4 * lmin) ++moderate;
+    check_radius_2d(q, lmin, lmax, &tight);
+  }
+  // Rotations: the entries of the rounded R·diag(e)·Rᵀ carry a few
+  // roundings each, so λmin is within 1e-12·e_max of e_min.
+  for (int n = 0; n < 20000; n++) {
+    double const scale = std::ldexp(1., g_rand_int_range(rng, -250, 251));
+    double const e0 = scale * std::pow(10., g_rand_double_range(rng, -2., 2.));
+    double const e1 = scale * std::pow(10., g_rand_double_range(rng, -2., 2.));
+    double const t = g_rand_double_range(rng, -G_PI, G_PI);
+    double const c = std::cos(t), s = std::sin(t);
+    double const q[3] = {e0 * c * c + e1 * s * s, (e0 - e1) * c * s,
+                         e0 * s * s + e1 * c * c};
+    double const emin = std::fmin(e0, e1), emax = std::fmax(e0, e1);
+    if (emax <= 1e4 * emin) ++moderate;
+    check_radius_2d(q, emin - 1e-12 * emax, emax, &tight);
+  }
+  g_assert_cmpint(tight, >=, moderate * 9 / 10);
+  double const tiny[3] = {0x1p-301, 0, 1}, huge[3] = {1, 0, 0x1p301};
+  double const unit[3] = {1, 0, 1};
+  g_assert_cmpfloat(pw85::detail::inscribed_radius<2>(tiny), ==, 0.0);
+  g_assert_cmpfloat(pw85::detail::inscribed_radius<2>(huge), ==, 0.0);
+  double const one = pw85::detail::inscribed_radius<2>(unit);
+  g_assert_cmpfloat(one, <, 1.0);
+  g_assert_cmpfloat(one, >, 1.0 - 0x1p-16);
+  g_rand_free(rng);
+}
+
+// The deep-overlap shortcut for ellipses (line_factor<2>, deep_overlap<2>,
+// with the index's filter d² < (reach + ρ)² and no slack): whenever it
+// says "deep", pw85_2d_contact_function gives μ² ≤ (1 − 2⁻²⁰)²; and it
+// decides most pairs whose centres are within half the inscribed radius.
+void test_deep_overlap_2d() {
+  GRand *rng = g_rand_new_with_seed(2030);
+  int deep = 0, close = 0;
+  for (int n = 0; n < 20000; n++) {
+    double q[2][3];
+    for (auto &f : q) {
+      double const a[2] = {g_rand_double_range(rng, .1, 1.),
+                           g_rand_double_range(rng, .1, 1.)};
+      g_assert_cmpint(pw85_2d_ellipse(a, g_rand_double_range(rng, -3.2, 3.2), f), ==,
+                      PW85_SUCCESS);
+    }
+    double const rho = pw85::detail::inscribed_radius<2>(q[1]);
+    double l[3], s = 0.;
+    if (!(rho > 0.) || !pw85::detail::line_factor<2>(q[0], l, &s)) continue;
+    g_assert_cmpfloat(s, >, 0.);
+    double const len = g_rand_double_range(rng, 0., 2.5);
+    double const t = g_rand_double_range(rng, -3.2, 3.2);
+    double const r[2] = {len * std::cos(t), len * std::sin(t)};
+    double const d2 = r[0] * r[0] + r[1] * r[1];
+    bool const near = len < .5 * rho;
+    if (!pw85::detail::deep_overlap<2>(l, r, d2, rho)) {
+      if (near) close++;  // a miss, counted below
+      continue;
+    }
+    deep++;
+    double out[2];
+    g_assert_cmpint(pw85_2d_contact_function(r, q[0], q[1], out), ==, PW85_SUCCESS);
+    if (!(out[0] <= (1. - 0x1p-20) * (1. - 0x1p-20)))
+      g_error("deep_overlap<2>: mu2 = %.17g for r = (%.17g, %.17g)", out[0], r[0], r[1]);
+  }
+  g_test_message("2D: %d deep overlaps, %d near pairs missed", deep, close);
+  g_assert_cmpint(deep, >, 2000);
+  g_assert_cmpint(close, ==, 0);
+  g_rand_free(rng);
 }
 
 void test_inscribed_radius() {
@@ -327,6 +431,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/core/ldl/backward-error", test_ldl_backward_error);
   g_test_add_func("/pw85/core/golden-bracket", test_golden_bracket);
   g_test_add_func("/pw85/core/index/inscribed-radius", test_inscribed_radius);
+  g_test_add_func("/pw85/core/index/inscribed-radius-2d", test_inscribed_radius_2d);
+  g_test_add_func("/pw85/core/index/deep-overlap-2d", test_deep_overlap_2d);
   g_test_add_func("/pw85/core/index/bulk-insert", test_bulk_insert);
   return g_test_run();
 }

@@ -55,77 +55,121 @@ constexpr std::size_t index_max_id = PW85_INDEX_MAX_ID;
  *  @since 2.2.0 */
 constexpr std::size_t index_no_id = PW85_INDEX_NO_ID;
 
+namespace index_detail {
+
+/// @cond INTERNAL
+// The table of the C functions of an index header, whose functions are
+// PREFIX_create, PREFIX_destroy, PREFIX_count, ..., for BasicIndex: the
+// struct NAME with the header's handle type and sizes (dim, sym) and a
+// static member per function, forwarding its arguments (Api3 below;
+// pw85_2d_index.hpp makes Api2).
+#define PW85_INDEX_CXX_API(NAME, PREFIX, HANDLE, DIM, SYM)                    \
+  struct NAME {                                                               \
+    using handle = HANDLE;                                                    \
+    static constexpr std::size_t dim = DIM;                                   \
+    static constexpr std::size_t sym = SYM;                                   \
+    static void destroy(HANDLE *h) noexcept { PREFIX##_destroy(h); }          \
+    PW85_INDEX_CXX_CALL_(PREFIX, create)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, count)                                       \
+    PW85_INDEX_CXX_CALL_(PREFIX, insert)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, insert_many)                                 \
+    PW85_INDEX_CXX_CALL_(PREFIX, insert_many_threads)                         \
+    PW85_INDEX_CXX_CALL_(PREFIX, update)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, remove)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, get)                                         \
+    PW85_INDEX_CXX_CALL_(PREFIX, overlap_any)                                 \
+    PW85_INDEX_CXX_CALL_(PREFIX, overlap_any_batch)                           \
+    PW85_INDEX_CXX_CALL_(PREFIX, within)                                      \
+    PW85_INDEX_CXX_CALL_(PREFIX, overlapping_pairs)                           \
+    PW85_INDEX_CXX_CALL_(PREFIX, pairs_within)                                \
+  }
+#define PW85_INDEX_CXX_CALL_(PREFIX, FN)                                      \
+  template <typename... Args>                                                 \
+  static int FN(Args... args) noexcept {                                      \
+    return PREFIX##_##FN(args...);                                            \
+  }
+
+PW85_INDEX_CXX_API(Api3, pw85_index, pw85_index, PW85_DIM, PW85_SYM);
+/// @endcond
+
 /**
- * @brief A spatial index of ellipsoids (pw85_index.h), owned: created by
- *        open() or periodic(), destroyed with the object.
+ * @brief What pw85::Index (ellipsoids, pw85_index.h) and pw85::d2::Index
+ *        (ellipses, pw85_2d_index.h) share, written once: ownership, the
+ *        storage calls and the queries (internal: use the two classes).
  *
- * Move-only. An Index that holds no index (default-constructed, moved
- * from, or whose creation failed) is valid: it can be destroyed, assigned
- * to, or created into again; it converts to false, handle() is nullptr,
- * and the members that query or modify an index return PW85_EFAULT (the
- * status of the C functions given a NULL index) and change nothing.
- * @since 2.2.0
+ * Derived: the class itself; Api: the C functions of its header, with its
+ * `handle` type and its sizes `dim` (coordinates of a centre, of an image
+ * shift) and `sym` (stored entries of a quadratic form). Each member calls
+ * the C function of the same name of that header, whose description is
+ * its contract.
  */
-class Index {
+template <class Derived, class Api>
+class BasicIndex {
+  using handle_type = typename Api::handle;  // the C handle of the index
+
  public:
   /** A result of within(): stored ellipsoid `id`, its image `shift` n
-   *  (the image is at c_id + n∘L), μ² and λ of
-   *  pw85_contact_function(r, q, q_id) with r from the candidate's centre
-   *  to that image (λ weighs the stored ellipsoid's form). */
+   *  (the image is at c_id + n∘L), μ² and λ of the contact function
+   *  (pw85_contact_function(), pw85_2d_contact_function()) of the
+   *  candidate and the stored shape, r from the candidate's centre to that
+   *  image (λ weighs the stored shape's form). */
   struct Neighbour {
-    std::size_t id;              ///< the stored ellipsoid's id
-    std::array<int, dim> shift;  ///< its image shift n
-    double mu2;                  ///< μ² (dimensionless)
-    double lambda;               ///< λ, in [0, 1]
+    std::size_t id;                   ///< the stored shape's id
+    std::array<int, Api::dim> shift;  ///< its image shift n
+    double mu2;                       ///< μ² (dimensionless)
+    double lambda;                    ///< λ, in [0, 1]
   };
 
-  /** A result of overlapping_pairs(): ellipsoids i < j, the image shift n
-   *  of j, and pw85_overlap(r, q_i, q_j) with r = (c_j + n∘L) − c_i: −1
-   *  (overlap) or 0 (tangent to 4 ulps). */
+  /** A result of overlapping_pairs(): shapes i < j, the image shift n of
+   *  j, and the overlap test (pw85_overlap(), pw85_2d_overlap()) of
+   *  r = (c_j + n∘L) − c_i, q_i, q_j: −1 (overlap) or 0 (tangent to 4
+   *  ulps). */
   struct OverlappingPair {
-    std::size_t i;               ///< the first id
-    std::size_t j;               ///< the second id, j > i
-    std::array<int, dim> shift;  ///< the image shift n of j
-    int result;                  ///< −1 (overlap) or 0 (tangent)
+    std::size_t i;                    ///< the first id
+    std::size_t j;                    ///< the second id, j > i
+    std::array<int, Api::dim> shift;  ///< the image shift n of j
+    int result;                       ///< −1 (overlap) or 0 (tangent)
   };
 
-  /** A result of pairs_within(): ellipsoids i ≤ j (i = j for an
-   *  ellipsoid and one of its own images, n then lexicographically
-   *  positive), the image shift n of j, μ² and λ of
-   *  pw85_contact_function(r, q_i, q_j) with r = (c_j + n∘L) − c_i. */
+  /** A result of pairs_within(): shapes i ≤ j (i = j for a shape and one
+   *  of its own images, n then lexicographically positive), the image
+   *  shift n of j, μ² and λ of the contact function of
+   *  r = (c_j + n∘L) − c_i, q_i, q_j. */
   struct Pair {
-    std::size_t i;               ///< the first id
-    std::size_t j;               ///< the second id, j ≥ i
-    std::array<int, dim> shift;  ///< the image shift n of j
-    double mu2;                  ///< μ² (dimensionless)
-    double lambda;               ///< λ, in [0, 1]
+    std::size_t i;                    ///< the first id
+    std::size_t j;                    ///< the second id, j ≥ i
+    std::array<int, Api::dim> shift;  ///< the image shift n of j
+    double mu2;                       ///< μ² (dimensionless)
+    double lambda;                    ///< λ, in [0, 1]
   };
 
-  /** An Index that holds no index (see the class description). */
-  Index() noexcept = default;
+  /** Holds no index (see the class description). */
+  BasicIndex() noexcept = default;
 
-  /** Takes ownership of an index made by pw85_index_create() (or
-   *  nullptr): destroyed with this object. */
-  explicit Index(pw85_index *owned) noexcept : handle_(owned) {}
+  /** Takes ownership of an index made by the header's create function
+   *  (pw85_index_create(), pw85_2d_index_create()), or nullptr: destroyed
+   *  with this object. */
+  explicit BasicIndex(handle_type *owned) noexcept : handle_(owned) {}
 
-  /** Destroys the index held, if any (pw85_index_destroy()). */
-  ~Index() { pw85_index_destroy(handle_); }
+  /** Destroys the index held, if any (pw85_index_destroy(),
+   *  pw85_2d_index_destroy()). */
+  ~BasicIndex() { Api::destroy(handle_); }
 
   /** Not copyable: an index has one owner. */
-  Index(Index const &) = delete;
+  BasicIndex(BasicIndex const &) = delete;
   /** Not copyable: an index has one owner. */
-  Index &operator=(Index const &) = delete;
+  BasicIndex &operator=(BasicIndex const &) = delete;
 
   /** Takes other's index; other then holds none. */
-  Index(Index &&other) noexcept : handle_(other.handle_) {
+  BasicIndex(BasicIndex &&other) noexcept : handle_(other.handle_) {
     other.handle_ = nullptr;
   }
 
   /** Destroys the index held, then takes other's; other then holds none.
-   *  Moving an Index into itself changes nothing. */
-  Index &operator=(Index &&other) noexcept {
+   *  Moving an index into itself changes nothing. */
+  BasicIndex &operator=(BasicIndex &&other) noexcept {
     if (this != &other) {
-      pw85_index_destroy(handle_);
+      Api::destroy(handle_);
       handle_ = other.handle_;
       other.handle_ = nullptr;
     }
@@ -133,49 +177,49 @@ class Index {
   }
 
   /**
-   * @brief Creates an empty index for an open domain into `out`
-   *        (pw85_index_create() with no box).
+   * @brief Creates an empty index for an open domain (an open plane in
+   *        2D) into `out` (the create function with no box).
    * @param[out] out receives the new index; the index it held before is
    *             destroyed. Unchanged on error.
    * @return PW85_SUCCESS; PW85_ENOMEM.
    */
-  static int open(Index &out) noexcept { return create(nullptr, out); }
+  static int open(Derived &out) noexcept { return create(nullptr, out); }
 
   /**
-   * @brief Creates an empty index for a periodic orthorhombic box into
-   *        `out` (pw85_index_create()).
-   * @param[in] box the sides L0, L1, L2 (lengths, > 0 and finite).
+   * @brief Creates an empty index for a periodic box (a rectangle in 2D)
+   *        into `out` (pw85_index_create(), pw85_2d_index_create()).
+   * @param[in] box the sides L_k (`dim` lengths, > 0 and finite).
    * @param[out] out as open().
    * @return PW85_SUCCESS; PW85_EFAULT if box is nullptr; PW85_EDOM if a
    *         side is not finite; PW85_EINVAL if a side is not > 0;
    *         PW85_ENOMEM. `out` is unchanged on error.
    */
-  static int periodic(double const box[dim], Index &out) noexcept {
+  static int periodic(double const box[Api::dim], Derived &out) noexcept {
     return box == nullptr ? PW85_EFAULT : create(box, out);
   }
 
-  /** Does this libpw85 run overlapping_pairs() and pairs_within() on
-   *  several threads (pw85_index_openmp())? */
+  /** Does this libpw85 run the all-pairs queries on several threads
+   *  (pw85_index_openmp())? */
   static bool openmp() noexcept { return pw85_index_openmp() != 0; }
 
   /** Does this object hold an index? */
   explicit operator bool() const noexcept { return handle_ != nullptr; }
 
   /** The index held (nullptr if none), still owned by this object: for
-   *  the C functions of pw85_index.h. */
-  pw85_index *handle() const noexcept { return handle_; }
+   *  the C functions of its header. */
+  handle_type *handle() const noexcept { return handle_; }
 
   /**
-   * @brief The number of ellipsoids stored (pw85_index_count()).
+   * @brief The number of shapes stored (pw85_index_count(),
+   *        pw85_2d_index_count()).
    * @param[out] n that number (unchanged on error).
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held.
    */
-  int count(std::size_t &n) const noexcept {
-    return pw85_index_count(handle_, &n);
-  }
+  int count(std::size_t &n) const noexcept { return Api::count(handle_, &n); }
 
   /**
-   * @brief Inserts an ellipsoid, O(1) amortised (pw85_index_insert()).
+   * @brief Inserts a shape, O(1) amortised (pw85_index_insert(),
+   *        pw85_2d_index_insert()).
    * @param[in] id its id, not in use, at most index_max_id.
    * @param[in] centre its centre c.
    * @param[in] q its quadratic form Q.
@@ -185,32 +229,34 @@ class Index {
    *         above index_max_id, or, in a periodic box, if
    *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k; PW85_ENOMEM.
    */
-  int insert(std::size_t id, double const centre[dim],
-             double const q[sym]) noexcept {
-    return pw85_index_insert(handle_, id, centre, q);
+  int insert(std::size_t id, double const centre[Api::dim],
+             double const q[Api::sym]) noexcept {
+    return Api::insert(handle_, id, centre, q);
   }
 
   /**
-   * @brief Inserts n ellipsoids, all or none (pw85_index_insert_many()).
+   * @brief Inserts n shapes, all or none (pw85_index_insert_many(),
+   *        pw85_2d_index_insert_many()).
    * @param[in] n their number (0 does nothing).
    * @param[in] ids n distinct ids, not in use.
-   * @param[in] centres 3·n doubles, centre i at centres[3·i].
-   * @param[in] q 6·n doubles, form i at q[6·i].
+   * @param[in] centres dim·n doubles, centre i at centres[dim·i].
+   * @param[in] q sym·n doubles, form i at q[sym·i].
    * @return the statuses of insert(), the first error met in the order of
    *         the arrays; on error none is inserted.
    */
   int insert_many(std::size_t n, std::size_t const *ids, double const *centres,
                   double const *q) noexcept {
-    return pw85_index_insert_many(handle_, n, ids, centres, q);
+    return Api::insert_many(handle_, n, ids, centres, q);
   }
 
   /**
    * @brief insert_many() on `threads` threads, with the same result for
-   *        any count (pw85_index_insert_many_threads()).
+   *        any count (pw85_index_insert_many_threads(),
+   *        pw85_2d_index_insert_many_threads()).
    * @param[in] n their number (0 does nothing).
    * @param[in] ids n distinct ids, not in use.
-   * @param[in] centres 3·n doubles, centre i at centres[3·i].
-   * @param[in] q 6·n doubles, form i at q[6·i].
+   * @param[in] centres dim·n doubles, centre i at centres[dim·i].
+   * @param[in] q sym·n doubles, form i at q[sym·i].
    * @param[in] threads the number of threads (≥ 1).
    * @return the statuses of insert_many(); PW85_EINVAL also if
    *         threads < 1.
@@ -218,93 +264,93 @@ class Index {
    */
   int insert_many(std::size_t n, std::size_t const *ids, double const *centres,
                   double const *q, int threads) noexcept {
-    return pw85_index_insert_many_threads(handle_, n, ids, centres, q, threads);
+    return Api::insert_many_threads(handle_, n, ids, centres, q, threads);
   }
 
   /**
-   * @brief Moves or reshapes a stored ellipsoid, O(1) amortised
-   *        (pw85_index_update()).
-   * @param[in] id the id of a stored ellipsoid.
+   * @brief Moves or reshapes a stored shape, O(1) amortised
+   *        (pw85_index_update(), pw85_2d_index_update()).
+   * @param[in] id the id of a stored shape.
    * @param[in] centre its new centre.
    * @param[in] q its new quadratic form.
    * @return the statuses of insert(); PW85_EINVAL if id is not stored.
    */
-  int update(std::size_t id, double const centre[dim],
-             double const q[sym]) noexcept {
-    return pw85_index_update(handle_, id, centre, q);
+  int update(std::size_t id, double const centre[Api::dim],
+             double const q[Api::sym]) noexcept {
+    return Api::update(handle_, id, centre, q);
   }
 
   /**
-   * @brief Removes a stored ellipsoid, O(1) (pw85_index_remove()).
-   * @param[in] id the id of a stored ellipsoid; it becomes free.
+   * @brief Removes a stored shape, O(1) (pw85_index_remove(),
+   *        pw85_2d_index_remove()).
+   * @param[in] id the id of a stored shape; it becomes free.
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held; PW85_EINVAL if
    *         id is not stored.
    */
-  int remove(std::size_t id) noexcept { return pw85_index_remove(handle_, id); }
+  int remove(std::size_t id) noexcept { return Api::remove(handle_, id); }
 
   /**
-   * @brief The centre and form of a stored ellipsoid, as given
-   *        (pw85_index_get()).
-   * @param[in] id the id of a stored ellipsoid.
+   * @brief The centre and form of a stored shape, as given
+   *        (pw85_index_get(), pw85_2d_index_get()).
+   * @param[in] id the id of a stored shape.
    * @param[out] centre its centre (not wrapped into the box).
    * @param[out] q its quadratic form.
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held or a pointer is
    *         nullptr; PW85_EINVAL if id is not stored. The outputs are
    *         written on success only.
    */
-  int get(std::size_t id, double centre[dim], double q[sym]) const noexcept {
-    return pw85_index_get(handle_, id, centre, q);
+  int get(std::size_t id, double centre[Api::dim],
+          double q[Api::sym]) const noexcept {
+    return Api::get(handle_, id, centre, q);
   }
 
   /**
-   * @brief Does a candidate overlap a stored ellipsoid? Stops at the first
-   *        overlap (pw85_index_overlap_any()).
+   * @brief Does a candidate overlap a stored shape? Stops at the first
+   *        overlap (pw85_index_overlap_any(), pw85_2d_index_overlap_any()).
    * @param[in] centre the candidate's centre (in a periodic box,
    *            |c_k| ≤ 2²⁹·L_k).
    * @param[in] q the candidate's quadratic form.
-   * @param[in] exclude the id of a stored ellipsoid to skip, or
-   *            index_no_id.
-   * @param[out] result −1 if some stored ellipsoid overlaps the candidate,
+   * @param[in] exclude the id of a stored shape to skip, or index_no_id.
+   * @param[out] result −1 if some stored shape overlaps the candidate,
    *             else 0 if some is tangent to it (4 ulps), else +1.
-   * @param[out] id an ellipsoid with that result, or index_no_id for +1.
+   * @param[out] id a shape with that result, or index_no_id for +1.
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held or a pointer is
    *         nullptr; PW85_EDOM, PW85_ENOTPOSDEF, PW85_EINVAL, PW85_ERANGE
-   *         as pw85_index_overlap_any(). The outputs are written on
-   *         success only.
+   *         as the C function. The outputs are written on success only.
    */
-  int overlap_any(double const centre[dim], double const q[sym],
+  int overlap_any(double const centre[Api::dim], double const q[Api::sym],
                   std::size_t exclude, int &result,
                   std::size_t &id) const noexcept {
-    return pw85_index_overlap_any(handle_, centre, q, exclude, &result, &id);
+    return Api::overlap_any(handle_, centre, q, exclude, &result, &id);
   }
 
   /**
    * @brief overlap_any() for n candidates, on threads
-   *        (pw85_index_overlap_any_batch()).
+   *        (pw85_index_overlap_any_batch(),
+   *        pw85_2d_index_overlap_any_batch()).
    * @param[in] n the number of candidates.
-   * @param[in] centres n centres, contiguous (3·n doubles).
-   * @param[in] q n quadratic forms, contiguous (6·n doubles).
+   * @param[in] centres n centres, contiguous (dim·n doubles).
+   * @param[in] q n quadratic forms, contiguous (sym·n doubles).
    * @param[in] exclude nullptr, or n ids to skip (one per candidate).
    * @param[out] results n results (−1, 0, +1).
    * @param[out] ids n ids, or index_no_id.
    * @param[out] status nullptr, or n statuses.
    * @param[in] threads 1, 0 (OpenMP's default) or up to k.
    * @return PW85_SUCCESS, or the status of the first failing candidate;
-   *         PW85_EFAULT if no index is held, or as
-   *         pw85_index_overlap_any_batch().
+   *         PW85_EFAULT if no index is held, or as the C function.
    */
   int overlap_any_batch(std::size_t n, double const *centres,
                         double const *q, std::size_t const *exclude,
                         int *results, std::size_t *ids, int *status = nullptr,
                         int threads = 1) const noexcept {
-    return pw85_index_overlap_any_batch(handle_, n, centres, dim, q, sym,
-                                        exclude, results, ids, status,
-                                        threads);
+    return Api::overlap_any_batch(handle_, n, centres, Api::dim, q, Api::sym,
+                                  exclude, results, ids, status, threads);
   }
 
   /**
-   * @brief Every stored ellipsoid and image with μ² < t from a candidate,
-   *        sorted by id then shift (pw85_index_within()).
+   * @brief Every stored shape and image with μ² < t from a candidate,
+   *        sorted by id then shift (pw85_index_within(),
+   *        pw85_2d_index_within()).
    * @param[in] centre the candidate's centre (as overlap_any()).
    * @param[in] q the candidate's quadratic form.
    * @param[in] t the threshold (dimensionless, > 0 and finite; 1 for
@@ -312,18 +358,19 @@ class Index {
    * @param[in] exclude as overlap_any().
    * @param[out] out the results, resized to their number.
    * @return the statuses of overlap_any(); PW85_EDOM if t is not finite;
-   *         PW85_EINVAL if t ≤ 0; PW85_ERANGE as pw85_index_within();
+   *         PW85_EINVAL if t ≤ 0; PW85_ERANGE as the C function;
    *         PW85_ENOMEM if out or a scratch array cannot grow. `out` is
    *         unchanged on error.
    */
-  int within(double const centre[dim], double const q[sym], double t,
-             std::size_t exclude, std::vector<Neighbour> &out) const noexcept {
+  int within(double const centre[Api::dim], double const q[Api::sym],
+             double t, std::size_t exclude,
+             std::vector<Neighbour> &out) const noexcept {
     Results<1> r;
     int const status = collect(
         [&](std::size_t cap, std::size_t *ids, int *shifts, double *values,
             std::size_t *n) {
-          return pw85_index_within(handle_, centre, q, t, exclude, cap, ids,
-                                   shifts, values, n);
+          return Api::within(handle_, centre, q, t, exclude, cap, ids, shifts,
+                             values, n);
         },
         out.capacity() > 16 ? out.capacity() : 16, r);
     if (status != PW85_SUCCESS) return status;
@@ -337,12 +384,13 @@ class Index {
   /**
    * @brief Every overlapping (or tangent) pair, each once, sorted by i,
    *        j, then shift; the same for any thread count
-   *        (pw85_index_overlapping_pairs()).
+   *        (pw85_index_overlapping_pairs(),
+   *        pw85_2d_index_overlapping_pairs()).
    * @param[in] threads the number of threads (≥ 1; serial without
    *            OpenMP, see openmp()).
    * @param[out] out the pairs, resized to their number.
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held; PW85_EINVAL if
-   *         threads < 1; PW85_ERANGE as pw85_overlap() on some pair;
+   *         threads < 1; PW85_ERANGE as the overlap test on some pair;
    *         PW85_ENOMEM. `out` is unchanged on error.
    */
   int overlapping_pairs(int threads,
@@ -351,8 +399,8 @@ class Index {
     int const status = collect(
         [&](std::size_t cap, std::size_t *ids, int *shifts, int *values,
             std::size_t *n) {
-          return pw85_index_overlapping_pairs(handle_, threads, cap, ids,
-                                              shifts, values, n);
+          return Api::overlapping_pairs(handle_, threads, cap, ids, shifts,
+                                        values, n);
         },
         out.capacity() > 64 ? out.capacity() : 64, r);
     if (status != PW85_SUCCESS) return status;
@@ -366,7 +414,7 @@ class Index {
   /**
    * @brief Every pair and image with μ² < t, each once, sorted by i, j,
    *        then shift; the same for any thread count
-   *        (pw85_index_pairs_within()).
+   *        (pw85_index_pairs_within(), pw85_2d_index_pairs_within()).
    * @param[in] t the threshold (> 0 and finite).
    * @param[in] threads the number of threads (≥ 1).
    * @param[out] out the pairs, resized to their number.
@@ -380,8 +428,8 @@ class Index {
     int const status = collect(
         [&](std::size_t cap, std::size_t *ids, int *shifts, double *values,
             std::size_t *n) {
-          return pw85_index_pairs_within(handle_, t, threads, cap, ids, shifts,
-                                         values, n);
+          return Api::pairs_within(handle_, t, threads, cap, ids, shifts,
+                                   values, n);
         },
         out.capacity() > 64 ? out.capacity() : 64, r);
     if (status != PW85_SUCCESS) return status;
@@ -392,6 +440,96 @@ class Index {
       x.lambda = r.values[2 * k + 1];
     });
   }
+
+ protected:
+  // Resizes v to n, PW85_ENOMEM if it cannot grow (v then unchanged).
+  template <typename T>
+  static int resize(std::vector<T> &v, std::size_t n) noexcept {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+    try {
+      v.resize(n);
+    } catch (std::bad_alloc const &) {
+      return PW85_ENOMEM;
+    } catch (std::length_error const &) {
+      return PW85_ENOMEM;
+    }
+#else
+    v.resize(n);
+#endif
+    return PW85_SUCCESS;
+  }
+
+ private:
+  handle_type *handle_ = nullptr;
+
+  static int create(double const *box, Derived &out) noexcept {
+    handle_type *created = nullptr;
+    int const status = Api::create(box, &created);
+    if (status == PW85_SUCCESS) out = Derived(created);
+    return status;
+  }
+
+  // The arrays of the C queries: IDS ids, dim shifts and one result (int)
+  // or two values (μ², λ) per result.
+  template <std::size_t IDS, typename Value = double>
+  struct Results {
+    std::vector<std::size_t> ids;
+    std::vector<int> shifts;
+    std::vector<Value> values;
+    std::size_t count = 0;
+  };
+
+  // The protocol of the C queries: call with room for `guess` results,
+  // and once more with room for all of them if they did not fit.
+  template <typename Call, std::size_t IDS, typename Value>
+  static int collect(Call call, std::size_t guess,
+                     Results<IDS, Value> &r) noexcept {
+    std::size_t cap = guess;
+    for (;;) {
+      int status = resize(r.ids, IDS * cap);
+      if (status == PW85_SUCCESS) status = resize(r.shifts, Api::dim * cap);
+      if (status == PW85_SUCCESS)
+        status =
+            resize(r.values, (std::is_same<Value, int>::value ? 1 : 2) * cap);
+      if (status == PW85_SUCCESS)
+        status =
+            call(cap, r.ids.data(), r.shifts.data(), r.values.data(), &r.count);
+      if (status != PW85_SUCCESS || r.count <= cap) return status;
+      cap = r.count;
+    }
+  }
+
+  // out = the r.count results, each from set(x, k) and the shifts.
+  template <typename T, std::size_t IDS, typename Value, typename Set>
+  static int fill(Results<IDS, Value> const &r, std::vector<T> &out,
+                  Set set) noexcept {
+    int const status = resize(out, r.count);
+    if (status != PW85_SUCCESS) return status;
+    for (std::size_t k = 0; k < r.count; ++k) {
+      for (std::size_t d = 0; d < Api::dim; ++d)
+        out[k].shift[d] = r.shifts[Api::dim * k + d];
+      set(out[k], k);
+    }
+    return PW85_SUCCESS;
+  }
+};
+
+}  // namespace index_detail
+
+/**
+ * @brief A spatial index of ellipsoids (pw85_index.h), owned: created by
+ *        open() or periodic(), destroyed with the object.
+ *
+ * Move-only. An Index that holds no index (default-constructed, moved
+ * from, or whose creation failed) is valid: it can be destroyed, assigned
+ * to, or created into again; it converts to false, handle() is nullptr,
+ * and the members that query or modify an index return PW85_EFAULT (the
+ * status of the C functions given a NULL index) and change nothing.
+ * @since 2.2.0
+ */
+class Index : public index_detail::BasicIndex<Index, index_detail::Api3> {
+ public:
+  using BasicIndex::BasicIndex;
 
   /**
    * @brief The overlap energy ε·Σ(1 − μ)² over the pairs with μ < 1, the
@@ -440,8 +578,6 @@ class Index {
   }
 
  private:
-  pw85_index *handle_ = nullptr;
-
   template <typename F>
   static int call_energy(double mu2, void *data, double out[2]) noexcept {
     F &f = *static_cast<F *>(data);
@@ -465,7 +601,7 @@ class Index {
     if (status == PW85_SUCCESS) status = resize(t, 3 * n);
     double e = 0.0;
     if (status == PW85_SUCCESS)
-      status = pw85_index_energy(handle_, kind, param, fn, data, threads, n,
+      status = pw85_index_energy(handle(), kind, param, fn, data, threads, n,
                                  &e, f.data(), t.data());
     if (status != PW85_SUCCESS) return status;
     energy = e;
@@ -474,73 +610,6 @@ class Index {
     return PW85_SUCCESS;
   }
 
-  static int create(double const *box, Index &out) noexcept {
-    pw85_index *created = nullptr;
-    int const status = pw85_index_create(box, &created);
-    if (status == PW85_SUCCESS) out = Index(created);
-    return status;
-  }
-
-  // The arrays of the C queries: IDS ids, 3 shifts and one result (int)
-  // or two values (μ², λ) per result.
-  template <std::size_t IDS, typename Value = double>
-  struct Results {
-    std::vector<std::size_t> ids;
-    std::vector<int> shifts;
-    std::vector<Value> values;
-    std::size_t count = 0;
-  };
-
-  // Resizes v to n, PW85_ENOMEM if it cannot grow (v then unchanged).
-  template <typename T>
-  static int resize(std::vector<T> &v, std::size_t n) noexcept {
-#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
-    try {
-      v.resize(n);
-    } catch (std::bad_alloc const &) {
-      return PW85_ENOMEM;
-    } catch (std::length_error const &) {
-      return PW85_ENOMEM;
-    }
-#else
-    v.resize(n);
-#endif
-    return PW85_SUCCESS;
-  }
-
-  // The protocol of the C queries: call with room for `guess` results,
-  // and once more with room for all of them if they did not fit.
-  template <typename Call, std::size_t IDS, typename Value>
-  static int collect(Call call, std::size_t guess,
-                     Results<IDS, Value> &r) noexcept {
-    std::size_t cap = guess;
-    for (;;) {
-      int status = resize(r.ids, IDS * cap);
-      if (status == PW85_SUCCESS) status = resize(r.shifts, dim * cap);
-      if (status == PW85_SUCCESS)
-        status =
-            resize(r.values, (std::is_same<Value, int>::value ? 1 : 2) * cap);
-      if (status == PW85_SUCCESS)
-        status =
-            call(cap, r.ids.data(), r.shifts.data(), r.values.data(), &r.count);
-      if (status != PW85_SUCCESS || r.count <= cap) return status;
-      cap = r.count;
-    }
-  }
-
-  // out = the r.count results, each from set(x, k) and the shifts.
-  template <typename T, std::size_t IDS, typename Value, typename Set>
-  static int fill(Results<IDS, Value> const &r, std::vector<T> &out,
-                  Set set) noexcept {
-    int const status = resize(out, r.count);
-    if (status != PW85_SUCCESS) return status;
-    for (std::size_t k = 0; k < r.count; ++k) {
-      for (std::size_t d = 0; d < dim; ++d)
-        out[k].shift[d] = r.shifts[dim * k + d];
-      set(out[k], k);
-    }
-    return PW85_SUCCESS;
-  }
 };
 
 }  // namespace pw85

@@ -33,9 +33,15 @@
 
 namespace pw85::detail {
 
+// The index is written once for D = 2 and 3 (namespace spatial, every
+// template on D); the 3D names of the rest of the core (Index, Entry, ...)
+// are aliases of its D = 3 (index.hpp).
+namespace spatial {
+
 // The AABB half-widths √Q_kk of a positive definite q.
-inline void half_widths(double const q[sym], double h[dim]) noexcept {
-  for (int k = 0; k < dim; ++k) h[k] = std::sqrt(q[diag_of[k]]);
+template <int D>
+PW85_INLINE void half_widths(double const *q, double *h) noexcept {
+  for (int k = 0; k < D; ++k) h[k] = std::sqrt(q[Layout<D>::diag[k]]);
 }
 
 // The absolute rounding allowance σ_k of a query along an axis
@@ -53,19 +59,21 @@ inline double box_bound(double sqrt_t, double h1, double h2) noexcept {
 // A query's extent in a level of the grid (or a grid of the snapshot),
 // per axis: the largest bound of its box tests there (its h and the
 // level's largest), and the slack σ_k; slack_sum = Σσ_k.
+template <int D>
 struct Reach {
-  double reach[dim];
-  double slack[dim];
+  double reach[D];
+  double slack[D];
   double slack_sum;
 };
 
 // box: the sides, or zeros in an open domain.
-inline Reach reach_of(double const c[dim], double const h[dim],
-                      double const hmax[dim], double sqrt_t, double cmax,
-                      double const box[dim]) noexcept {
-  Reach rc;
+template <int D>
+inline Reach<D> reach_of(double const *c, double const *h,
+                         double const *hmax, double sqrt_t, double cmax,
+                         double const *box) noexcept {
+  Reach<D> rc;
   rc.slack_sum = 0.0;
-  for (int k = 0; k < dim; ++k) {
+  for (int k = 0; k < D; ++k) {
     rc.reach[k] = box_bound(sqrt_t, h[k], hmax[k]);
     rc.slack[k] = rounding_slack(cmax, c[k], rc.reach[k], box[k]);
     rc.slack_sum += rc.slack[k];
@@ -78,12 +86,13 @@ inline Reach reach_of(double const c[dim], double const h[dim],
 // [first_k, last_k] (an open domain's clamp; ±∞ for none). The cell of a
 // centre x is ⌊(x − origin)·inv⌋ clamped alike (monotone in x). Returns
 // the number of cells of the block.
-inline double cell_range(Reach const &rc, double const c[dim],
-                         double const origin[dim], double const inv[dim],
-                         double const first[dim], double const last[dim],
-                         double lo[dim], double hi[dim]) noexcept {
+template <int D>
+inline double cell_range(Reach<D> const &rc, double const *c,
+                         double const *origin, double const *inv,
+                         double const *first, double const *last,
+                         double *lo, double *hi) noexcept {
   double cells = 1.0;
-  for (int k = 0; k < dim; ++k) {
+  for (int k = 0; k < D; ++k) {
     double const x = c[k] - origin[k], w = rc.reach[k] + rc.slack[k];
     lo[k] = std::min(std::max(std::floor((x - w) * inv[k]), first[k]), last[k]);
     hi[k] = std::min(std::max(std::floor((x + w) * inv[k]), first[k]), last[k]);
@@ -96,11 +105,12 @@ inline double cell_range(Reach const &rc, double const c[dim],
 // within reach + slack of c along each axis: [lo_k, hi_k] (a superset: the
 // box test decides). Open domain: n = 0. Returns false when an axis spans
 // more than max_span shifts.
-inline bool shift_range(bool periodic, double const c[dim],
-                        double const reach[dim], double const slack[dim],
-                        double const cj[dim], double const box[dim],
-                        std::int64_t lo[dim], std::int64_t hi[dim]) noexcept {
-  for (int k = 0; k < dim; ++k) {
+template <int D>
+inline bool shift_range(bool periodic, double const *c, double const *reach,
+                        double const *slack, double const *cj,
+                        double const *box, std::int64_t *lo,
+                        std::int64_t *hi) noexcept {
+  for (int k = 0; k < D; ++k) {
     lo[k] = hi[k] = 0;
     if (!periodic) continue;
     double const w = reach[k] + slack[k];
@@ -113,32 +123,40 @@ inline bool shift_range(bool periodic, double const c[dim],
   return true;
 }
 
+// The loop over the shifts along axis K, nesting those along the axes
+// after it (D nested loops once inlined): for_each_shift().
+template <int D, int K, typename F>
+PW85_INLINE bool shifts_along(std::int64_t const *lo, std::int64_t const *hi,
+                              std::int32_t *shift, F &f) noexcept {
+  for (std::int64_t a = lo[K]; a <= hi[K]; ++a) {
+    shift[K] = std::int32_t(a);
+    if constexpr (K + 1 < D) {
+      if (!shifts_along<D, K + 1>(lo, hi, shift, f)) return false;
+    } else if (!f(static_cast<std::int32_t const *>(shift))) {
+      return false;
+    }
+  }
+  return true;
+}
+
 // Calls f(shift) for every shift of [lo, hi] (lexicographic order) until
 // f returns false; returns false then.
-template <typename F>
-bool for_each_shift(std::int64_t const lo[dim], std::int64_t const hi[dim],
-                    F &&f) noexcept {
-  std::int32_t shift[dim];
-  for (std::int64_t a = lo[0]; a <= hi[0]; ++a)
-    for (std::int64_t b = lo[1]; b <= hi[1]; ++b)
-      for (std::int64_t d = lo[2]; d <= hi[2]; ++d) {
-        shift[0] = std::int32_t(a);
-        shift[1] = std::int32_t(b);
-        shift[2] = std::int32_t(d);
-        if (!f(static_cast<std::int32_t const *>(shift))) return false;
-      }
-  return true;
+template <int D, typename F>
+PW85_INLINE bool for_each_shift(std::int64_t const *lo, std::int64_t const *hi,
+                                F &&f) noexcept {
+  std::int32_t shift[D];
+  return shifts_along<D, 0>(lo, hi, shift, f);
 }
 
 // The box test on r̂ = (c_j + n∘L) − c formed in double (written to r):
 // false proves μ² > t·(1 + broad_margin) (margins.hpp: the slack covers
 // the rounding of r̂). box: the sides, or zeros in an open domain.
-PW85_INLINE bool boxes_meet(double const c[dim], double const h[dim],
-                       double const cj[dim], double const hj[dim],
-                       std::int32_t const shift[dim], double const box[dim],
-                       double sqrt_t, double const slack[dim],
-                       double r[dim]) noexcept {
-  for (int k = 0; k < dim; ++k) {
+template <int D>
+PW85_INLINE bool boxes_meet(double const *c, double const *h, double const *cj,
+                            double const *hj, std::int32_t const *shift,
+                            double const *box, double sqrt_t,
+                            double const *slack, double *r) noexcept {
+  for (int k = 0; k < D; ++k) {
     r[k] = (cj[k] + shift[k] * box[k]) - c[k];
     if (!(std::fabs(r[k]) <= box_bound(sqrt_t, h[k], hj[k]) + slack[k]))
       return false;
@@ -150,16 +168,17 @@ namespace line {
 
 // The bound √(rᵀQr) + √(rᵀQ'r) of the line test, each term raised by its
 // rounding (form_rounding) and by form_floor (underflow).
-PW85_INLINE double projections(double const r[dim], double const q1[sym],
-                          double const h1[dim], double const q2[sym],
-                          double const h2[dim]) noexcept {
-  double y[dim];
-  sym_mul(q1, r, y);
-  double const a1 = dot(r, y);
-  sym_mul(q2, r, y);
-  double const a2 = dot(r, y);
+template <int D>
+PW85_INLINE double projections(double const *r, double const *q1,
+                               double const *h1, double const *q2,
+                               double const *h2) noexcept {
+  double y[D];
+  sym_mul<D>(q1, r, y);
+  double const a1 = dot<D>(r, y);
+  sym_mul<D>(q2, r, y);
+  double const a2 = dot<D>(r, y);
   double b1 = 0.0, b2 = 0.0;
-  for (int k = 0; k < dim; ++k) {
+  for (int k = 0; k < D; ++k) {
     double const x = std::fabs(r[k]);
     b1 += h1[k] * x;
     b2 += h2[k] * x;
@@ -169,20 +188,29 @@ PW85_INLINE double projections(double const r[dim], double const q1[sym],
 }
 
 // The test proper on r (with |r|² = d2) and the slack Σσ_k.
-PW85_INLINE bool separated(double const r[dim], double d2, double const q1[sym],
-                      double const h1[dim], double const q2[sym],
-                      double const h2[dim], double sqrt_t,
-                      double slack_sum) noexcept {
+template <int D>
+PW85_INLINE bool separated(double const *r, double d2, double const *q1,
+                           double const *h1, double const *q2,
+                           double const *h2, double sqrt_t,
+                           double slack_sum) noexcept {
   if (!(slack_sum * slack_sum <= slack_fold * slack_fold * d2)) return false;
-  return d2 > sqrt_t * projections(r, q1, h1, q2, h2) * (1.0 + broad_margin);
+  return d2 > sqrt_t * projections<D>(r, q1, h1, q2, h2) * (1.0 + broad_margin);
 }
 
 // The test on r and the forms scaled by powers of two, r to order one
 // (a length scale far from one: margins.hpp, line_low).
-bool separated_scaled(double const r[dim], double const q1[sym],
-                      double const h1[dim], double const q2[sym],
-                      double const h2[dim], double sqrt_t,
+template <int D>
+bool separated_scaled(double const *r, double const *q1, double const *h1,
+                      double const *q2, double const *h2, double sqrt_t,
                       double slack_sum) noexcept;
+extern template bool separated_scaled<2>(double const *, double const *,
+                                         double const *, double const *,
+                                         double const *, double,
+                                         double) noexcept;
+extern template bool separated_scaled<3>(double const *, double const *,
+                                         double const *, double const *,
+                                         double const *, double,
+                                         double) noexcept;
 
 }  // namespace line
 
@@ -195,14 +223,15 @@ bool separated_scaled(double const r[dim], double const q1[sym],
 // the slack Σσ_k bounds (margins.hpp, slack_fold). True means
 // μ² > t·(1 + broad_margin) at every length scale: outside
 // [line_low, line_high], r̂ and the forms are scaled first.
-PW85_INLINE bool separated_along_r(double const r[dim], double const q1[sym],
-                              double const h1[dim], double const q2[sym],
-                              double const h2[dim], double sqrt_t,
-                              double slack_sum) noexcept {
-  double const d2 = dot(r, r);
+template <int D>
+PW85_INLINE bool separated_along_r(double const *r, double const *q1,
+                                   double const *h1, double const *q2,
+                                   double const *h2, double sqrt_t,
+                                   double slack_sum) noexcept {
+  double const d2 = dot<D>(r, r);
   if (PW85_UNLIKELY(!(d2 >= line_low && d2 <= line_high)))
-    return line::separated_scaled(r, q1, h1, q2, h2, sqrt_t, slack_sum);
-  return line::separated(r, d2, q1, h1, q2, h2, sqrt_t, slack_sum);
+    return line::separated_scaled<D>(r, q1, h1, q2, h2, sqrt_t, slack_sum);
+  return line::separated<D>(r, d2, q1, h1, q2, h2, sqrt_t, slack_sum);
 }
 
 // The image vector r = (c_j + n∘L) − c, formed exactly (an error-free
@@ -211,9 +240,10 @@ PW85_INLINE bool separated_along_r(double const r[dim], double const q1[sym],
 // within 2⁻¹⁰⁵·|r_k| + 2⁻²⁰⁰·(|c_j,k| + |n_k·L_k| + |c_k|) along each axis
 // (exactly, in the common case where c_j + n_k·L_k is a double). exact:
 // lo = 0, r̂ of the box test was exact. box: zeros in an open domain.
+template <int D>
 struct ImageVector {
-  double r[dim];
-  double lo[dim];
+  double r[D];
+  double lo[D];
   bool exact;
 };
 
@@ -222,12 +252,13 @@ struct ImageVector {
 void image_vector_tail(double b, double b_lo, double a_lo, double p_lo,
                        double *r, double *lo) noexcept;
 
-PW85_INLINE void image_vector_exact(double const c[dim], double const cj[dim],
-                               std::int32_t const shift[dim],
-                               double const box[dim],
-                               ImageVector *v) noexcept {
+template <int D>
+PW85_INLINE void image_vector_exact(double const *c, double const *cj,
+                                    std::int32_t const *shift,
+                                    double const *box,
+                                    ImageVector<D> *v) noexcept {
   bool exact = true;
-  for (int k = 0; k < dim; ++k) {
+  for (int k = 0; k < D; ++k) {
     if (shift[k] == 0) {  // the most common case: c_j − c
       dd const b = two_sum(cj[k], -c[k]);
       v->r[k] = b.hi;
@@ -253,17 +284,21 @@ PW85_INLINE void image_vector_exact(double const c[dim], double const cj[dim],
 // The narrow phase on an exact image vector: pw85_overlap()'s decision and
 // pw85_contact_function()'s μ² and λ for the exact r (overlap_dd(),
 // contact_function_dd()), through the double paths when r is a double.
-inline Status image_overlap(ImageVector const &v, double const q1[sym],
-                            double const q2[sym], int *result) noexcept {
-  return v.exact ? overlap(v.r, q1, q2, result)
-                 : overlap_dd(v.r, v.lo, q1, q2, result);
+template <int D>
+inline Status image_overlap(ImageVector<D> const &v, double const *q1,
+                            double const *q2, int *result) noexcept {
+  return v.exact ? overlap<D>(v.r, q1, q2, result)
+                 : overlap_dd<D>(v.r, v.lo, q1, q2, result);
 }
 
-inline Status image_contact(ImageVector const &v, double const q1[sym],
-                            double const q2[sym], double out[2]) noexcept {
-  return v.exact ? contact_function(v.r, q1, q2, out)
-                 : contact_function_dd(v.r, v.lo, q1, q2, out);
+template <int D>
+inline Status image_contact(ImageVector<D> const &v, double const *q1,
+                            double const *q2, double out[2]) noexcept {
+  return v.exact ? contact_function<D>(v.r, q1, q2, out)
+                 : contact_function_dd<D>(v.r, v.lo, q1, q2, out);
 }
+
+}  // namespace spatial
 
 }  // namespace pw85::detail
 

@@ -33,7 +33,7 @@
 #include "checks.hpp"
 #include "index.hpp"
 
-namespace pw85::detail {
+namespace pw85::detail::spatial {
 
 namespace {
 
@@ -154,7 +154,8 @@ ChunkStatus first_failure(Buffer<ChunkStatus> const &chunks, std::size_t n) noex
 
 }  // namespace
 
-Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
+template <int D>
+Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
                           double const *c, double const *q,
                           int threads) noexcept {
 #if !defined(PW85_OPENMP)
@@ -177,15 +178,15 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     auto const [i0, i1] = items_of(k, n);
     status[k] = ChunkStatus{n, Status::success};
     for (std::size_t i = i0; i < i1; ++i) {
-      double const *ci = c + dim * i, *qi = q + sym * i;
+      double const *ci = c + D * i, *qi = q + S * i;
       Status s = check_ellipsoid(ci, qi);
       std::size_t const id = ids[i];
-      double h[dim];
+      double h[D];
       if (s == Status::success) {
         if (id > max_id || (id < slots_.size() && slots_[id].level >= 0)) {
           s = Status::invalid_argument;
         } else {
-          half_widths(qi, h);
+          half_widths<D>(qi, h);
           if (!fits_box(h)) s = Status::invalid_argument;
         }
       }
@@ -193,7 +194,7 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
         status[k] = ChunkStatus{i, s};
         return;
       }
-      place[i] = level_exponent(h);
+      place[i] = level_exponent<D>(h);
     }
   });
   ChunkStatus failed = first_failure(status, n);
@@ -273,10 +274,12 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   for (std::size_t l = 0; ok && l < nlevels; ++l) {
     if (items_in[l] == 0) continue;
     std::size_t keys = items_in[l];
-    Level const &lv = levels_[l];
-    if (periodic_)
-      keys = std::size_t(std::min(double(keys), double(lv.n[0]) * double(lv.n[1]) *
-                                                    double(lv.n[2])));
+    Level<D> const &lv = levels_[l];
+    if (periodic_) {
+      double cells = double(lv.n[0]);
+      for (int k = 1; k < D; ++k) cells *= double(lv.n[k]);
+      keys = std::size_t(std::min(double(keys), cells));
+    }
     ok = maps[l].init(keys);
   }
   if (!ok) {
@@ -286,11 +289,11 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     auto const [i0, i1] = items_of(k, n);
     std::uint64_t keys[bulk_chunk];  // the chunk's keys, then their slots prefetched
     for (std::size_t i = i0; i < i1; ++i) {
-      std::int32_t w[dim];
-      std::uint64_t u[dim];
-      wraps(c + dim * i, w);
-      cell_coords(levels_[std::size_t(place[i])], c + dim * i, w, u);
-      keys[i - i0] = Level::pack(u);
+      std::int32_t w[D];
+      std::uint64_t u[D];
+      wraps(c + D * i, w);
+      cell_coords(levels_[std::size_t(place[i])], c + D * i, w, u);
+      keys[i - i0] = Level<D>::pack(u);
     }
     for (std::size_t i = i0; i < i1; ++i) {
       if (i + prefetch_ahead < i1)
@@ -304,13 +307,14 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   // level, then prefix sums from the level's count of cells).
   for (std::size_t l = 0; l < nlevels; ++l) {
     TouchedMap &map = maps[l];
-    Level const &lv = levels_[l];
+    Level<D> const &lv = levels_[l];
     for_each_chunk(nt, (map.size() + bulk_chunk - 1) / bulk_chunk, [&](std::size_t k) {
       auto const [s0, s1] = items_of(k, map.size());
       for (std::size_t s = s0; s < s1; ++s) {
         std::uint64_t const key = map[s].key;
         if (key == TouchedMap::empty) continue;
-        std::uint64_t const u[dim] = {key >> 42, (key >> 21) & 0x1FFFFF, key & 0x1FFFFF};
+        std::uint64_t u[D];
+        Level<D>::unpack(key, u);
         map[s].cell = lv.find(u);
       }
     });
@@ -368,18 +372,19 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
 
   // The new cells, registered in order (as reserve_for() registers them).
   for (std::size_t l = 0; l < nlevels; ++l) {
-    Level &lv = levels_[l];
+    Level<D> &lv = levels_[l];
     for (std::size_t p = 0; p < new_cells[l]; ++p) {
       std::uint64_t const key = new_keys[l][p];
       if (lv.dense.empty() && !lv.map.reserve_one()) {
         return fail(Status::no_memory);
       }
       std::uint32_t const at = static_cast<std::uint32_t>(lv.cells.size());
-      lv.cells.push_back_reserved(Cell{});
+      lv.cells.push_back_reserved(Cell<D>{});
       if (lv.dense.empty()) {
         lv.map.insert_reserved(key, at);
       } else {
-        std::uint64_t const u[dim] = {key >> 42, (key >> 21) & 0x1FFFFF, key & 0x1FFFFF};
+        std::uint64_t u[D];
+        Level<D>::unpack(key, u);
         lv.dense[lv.dense_index(u)] = at;
       }
     }
@@ -392,7 +397,8 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
     most = std::max(most, (maps[l].size() + bulk_chunk - 1) / bulk_chunk);
   Buffer<std::uint32_t> by_cell;  // items, by cell
   Buffer<double> bounds;          // per chunk of slots: max h_k, max |c_k|
-  ok = by_cell.resize_uninitialised(n) && bounds.resize_uninitialised(4 * most) &&
+  ok = by_cell.resize_uninitialised(n) &&
+       bounds.resize_uninitialised((D + 1) * most) &&
        (most <= status.size() || status.resize_uninitialised(most));
   std::size_t at = 0;
   for (std::size_t l = 0; ok && l < nlevels; ++l) {
@@ -406,14 +412,14 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   }
   for (std::size_t l = 0; ok && l < nlevels; ++l) {
     TouchedMap &map = maps[l];
-    Level &lv = levels_[l];
+    Level<D> &lv = levels_[l];
     std::size_t const mchunks_l = (map.size() + bulk_chunk - 1) / bulk_chunk;
     for_each_chunk(nt, mchunks_l, [&](std::size_t k) {
       auto const [s0, s1] = items_of(k, map.size());
       status[k] = ChunkStatus{n, Status::success};
       for (std::size_t s = s0; s < s1; ++s) {
         if (map[s].key == TouchedMap::empty) continue;
-        Cell &cell = lv.cells[map[s].cell];
+        Cell<D> &cell = lv.cells[map[s].cell];
         if (!cell.reserve(cell.size() + map[s].count)) {
           status[k] = ChunkStatus{s, Status::no_memory};
           return;
@@ -444,44 +450,45 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   // the ids' slots; the levels' bounds (maxima, in any order).
   for (std::size_t l = 0; l < nlevels; ++l) {
     TouchedMap &map = maps[l];
-    Level &lv = levels_[l];
+    Level<D> &lv = levels_[l];
     if (items_in[l] == 0) continue;
     std::size_t const mchunks_l = (map.size() + bulk_chunk - 1) / bulk_chunk;
     for_each_chunk(nt, mchunks_l, [&](std::size_t k) {
       auto const [s0, s1] = items_of(k, map.size());
-      double b[4] = {0.0, 0.0, 0.0, 0.0};
+      double b[D + 1] = {};  // max h_k, then max |c_k|
       for (std::size_t s = s0; s < s1; ++s) {
         Touched const &t = map[s];
         if (t.key == TouchedMap::empty) continue;
         std::uint32_t *run = by_cell.data() + t.start;
         std::sort(run, run + t.count);
-        Cell &cell = lv.cells[t.cell];
+        Cell<D> &cell = lv.cells[t.cell];
         for (std::uint32_t r = 0; r < t.count; ++r) {
           std::size_t const i = run[r];
           // The inputs of an item some way ahead in the list (the same
           // items, sorted per run or not yet): items in cell order are
           // scattered in the input arrays, each read a cache miss.
           std::size_t const ahead = by_cell[std::min<std::size_t>(t.start + r + prefetch_ahead, n - 1)];
-          PW85_PREFETCH(c + dim * ahead);
-          PW85_PREFETCH(q + sym * ahead);
-          PW85_PREFETCH(q + sym * ahead + sym - 1);
+          PW85_PREFETCH(c + D * ahead);
+          PW85_PREFETCH(q + S * ahead);
+          PW85_PREFETCH(q + S * ahead + S - 1);
           PW85_PREFETCH(ids + ahead);
-          Entry e;
-          make_entry(ids[i], c + dim * i, q + sym * i, &e);
-          for (int a = 0; a < dim; ++a) {
+          Entry<D> e;
+          make_entry(ids[i], c + D * i, q + S * i, &e);
+          for (int a = 0; a < D; ++a) {
             b[a] = std::max(b[a], e.h[a]);
-            b[3] = std::max(b[3], std::fabs(e.c[a]));
+            b[D] = std::max(b[D], std::fabs(e.c[a]));
           }
-          cell.push_back_reserved(static_cast<Entry &&>(e));
+          cell.push_back_reserved(static_cast<Entry<D> &&>(e));
           slots_[ids[i]] = Slot{std::int32_t(l), t.cell,
                                 static_cast<std::uint32_t>(cell.size() - 1)};
         }
       }
-      for (int a = 0; a < 4; ++a) bounds[4 * k + a] = b[a];
+      for (int a = 0; a <= D; ++a) bounds[(D + 1) * k + a] = b[a];
     });
     for (std::size_t k = 0; k < mchunks_l; ++k) {
-      for (int a = 0; a < dim; ++a) lv.hmax[a] = std::max(lv.hmax[a], bounds[4 * k + a]);
-      cmax_ = std::max(cmax_, bounds[4 * k + 3]);
+      for (int a = 0; a < D; ++a)
+        lv.hmax[a] = std::max(lv.hmax[a], bounds[(D + 1) * k + a]);
+      cmax_ = std::max(cmax_, bounds[(D + 1) * k + D]);
     }
     lv.count += items_in[l];
     count_ += items_in[l];
@@ -489,4 +496,11 @@ Status Index::insert_bulk(std::size_t n, std::size_t const *ids,
   return Status::success;
 }
 
-}  // namespace pw85::detail
+template Status Index<2>::insert_bulk(std::size_t, std::size_t const *,
+                                      double const *, double const *,
+                                      int) noexcept;
+template Status Index<3>::insert_bulk(std::size_t, std::size_t const *,
+                                      double const *, double const *,
+                                      int) noexcept;
+
+}  // namespace pw85::detail::spatial

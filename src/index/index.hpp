@@ -17,6 +17,11 @@
 // lies in the copy w = ⌊c/L⌋ (its wrap), so the copy p of a cell holds
 // the image shift p − w. Cells are visited over the unwrapped range, so
 // every image in reach is found, however many.
+//
+// Dimension: written once for D = 3 (ellipsoids, pw85_index.h) and D = 2
+// (ellipses in a plane or a periodic rectangle, pw85_2d_index.h), every
+// type and function of namespace spatial a template on D; "3 axes",
+// "ellipsoid" below read "D axes", "ellipse" in 2D.
 #ifndef PW85_SRC_INDEX_INDEX_HPP
 #define PW85_SRC_INDEX_INDEX_HPP
 
@@ -51,18 +56,6 @@ constexpr int snapshot_cell_octaves = 0;
 // insert(); both leave the same index (but for spare capacity).
 constexpr std::size_t bulk_min = 1024;
 
-// A stored ellipsoid, as its cell holds it. What the broad phase reads
-// (id, wrap, centre, half-widths) fills the first cache line; the form,
-// read by the narrow phase only, the second.
-struct alignas(64) Entry {
-  std::uint32_t id;
-  std::int32_t wrap[dim];  // ⌊c_k/L_k⌋ (periodic), else 0
-  double c[dim];           // centre, as given
-  double h[dim];           // AABB half-widths √Q_kk
-  double q[sym];           // quadratic form
-  double rho;              // inscribed_radius(q)
-};
-
 // Where an id is stored: level −1 when absent.
 struct Slot {
   std::int32_t level = -1;
@@ -70,60 +63,103 @@ struct Slot {
   std::uint32_t index = 0;
 };
 
-using Cell = Buffer<Entry>;
+// ⌊a / b⌋ for b > 0.
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
+  std::int64_t const d = a / b;
+  return (a % b != 0 && a < 0) ? d - 1 : d;
+}
 
+namespace spatial {
+
+// A stored ellipsoid, as its cell holds it. What the broad phase reads
+// (id, wrap, centre, half-widths) fills the first cache line; the form,
+// read by the narrow phase only, the second.
+template <int D>
+struct alignas(64) Entry {
+  std::uint32_t id;
+  std::int32_t wrap[D];      // ⌊c_k/L_k⌋ (periodic), else 0
+  double c[D];               // centre, as given
+  double h[D];               // AABB half-widths √Q_kk
+  double q[sym_size(D)];     // quadratic form
+  double rho;                // inscribed_radius(q)
+};
+
+template <int D>
+using Cell = Buffer<Entry<D>>;
+
+// Cell coordinates are packed into a key of cell_bits bits per axis
+// (coordinates below 2²¹: margins.hpp, max_span and open_half), axis 0
+// in the highest bits.
+constexpr int cell_bits = 21;
+constexpr std::uint64_t cell_mask = (std::uint64_t{1} << cell_bits) - 1;
+
+template <int D>
 struct Level {
   int exponent = 0;       // H ≤ 2^exponent
-  double side[dim] = {};  // cell sides
-  double inv[dim] = {};   // 1/side, as n_k/L_k (periodic) or 2^−exponent
-  std::int64_t n[dim] = {};  // periodic: cells per axis; open: 0
-  double hmax[dim] = {};  // ≥ every h_k of the level (reset when emptied)
+  double side[D] = {};    // cell sides
+  double inv[D] = {};     // 1/side, as n_k/L_k (periodic) or 2^−exponent
+  std::int64_t n[D] = {};  // periodic: cells per axis; open: 0
+  double hmax[D] = {};    // ≥ every h_k of the level (reset when emptied)
   std::size_t count = 0;
   CellMap map;
-  Buffer<Cell> cells;
+  Buffer<Cell<D>> cells;
   // A periodic level of at most dense_cells cells finds them in a dense
   // array instead of the hash map: the position in `cells` of the cell of
-  // coordinates u (row-major, (u0·n1 + u1)·n2 + u2), or CellMap::absent.
-  // A row of cells along axis 2 is then one cache line or two (random
-  // sequential addition visits ~100 cells per attempt; each probe of the
-  // hash map was a cache miss).
+  // coordinates u (row-major, in 3D (u0·n1 + u1)·n2 + u2), or
+  // CellMap::absent. A row of cells along the last axis is then one cache
+  // line or two (random sequential addition visits ~100 cells per attempt;
+  // each probe of the hash map was a cache miss).
   Buffer<std::uint32_t> dense;
 
-  static std::uint64_t pack(std::uint64_t const u[dim]) noexcept {
-    return (u[0] << 42) | (u[1] << 21) | u[2];
+  static std::uint64_t pack(std::uint64_t const u[D]) noexcept {
+    std::uint64_t key = u[0];
+    for (int k = 1; k < D; ++k) key = (key << cell_bits) | u[k];
+    return key;
   }
-  std::size_t dense_index(std::uint64_t const u[dim]) const noexcept {
-    return static_cast<std::size_t>((u[0] * std::uint64_t(n[1]) + u[1]) *
-                                        std::uint64_t(n[2]) + u[2]);
+  static void unpack(std::uint64_t key, std::uint64_t u[D]) noexcept {
+    for (int k = D - 1; k >= 0; --k, key >>= cell_bits) u[k] = key & cell_mask;
+  }
+  std::size_t dense_index(std::uint64_t const u[D]) const noexcept {
+    std::uint64_t i = u[0];
+    for (int k = 1; k < D; ++k) i = i * std::uint64_t(n[k]) + u[k];
+    return static_cast<std::size_t>(i);
   }
   // The position of the cell of coordinates u in `cells`, or absent.
-  std::uint32_t find(std::uint64_t const u[dim]) const noexcept {
+  std::uint32_t find(std::uint64_t const u[D]) const noexcept {
     return dense.empty() ? map.find(pack(u)) : dense[dense_index(u)];
   }
 };
 
 // A result of a query on a candidate: a stored ellipsoid's image.
+template <int D>
 struct Hit {
   std::uint32_t id;
-  std::int32_t shift[dim];
+  std::int32_t shift[D];
   double mu2, lambda;
 };
 
 // A result of an all-pairs query: (i, j, n), i ≤ j; result (overlap
 // mode: −1 or 0) or μ² and λ (μ² < t).
+template <int D>
 struct PairHit {
   std::uint32_t i, j;
-  std::int32_t shift[dim];
+  std::int32_t shift[D];
   int result;
   double mu2, lambda;
 };
-static_assert(sizeof(PairHit) == 40, "pw85_index_energy()'s memory figure");
+static_assert(sizeof(PairHit<3>) == 40, "pw85_index_energy()'s memory figure");
 
+// The index in D = 2 or 3 dimensions: its members are defined in
+// index.cpp, queries.cpp, pairs.cpp and bulk.cpp, and each is
+// instantiated there for both.
+template <int D>
 class Index {
  public:
-  // box: nullptr (open) or three sides, finite and > 0 (checked by the
+  static constexpr int S = sym_size(D);
+
+  // box: nullptr (open) or D sides, finite and > 0 (checked by the
   // caller).
-  explicit Index(double const box[dim]) noexcept;
+  explicit Index(double const *box) noexcept;
 
   bool periodic() const noexcept { return periodic_; }
   std::size_t count() const noexcept { return count_; }
@@ -131,29 +167,27 @@ class Index {
   std::size_t id_bound() const noexcept { return slots_.size(); }
 
   // The statuses of pw85_index.h; pointers are checked by the caller.
-  Status insert(std::size_t id, double const c[dim],
-                double const q[sym]) noexcept;
+  // Centres are D doubles, forms S.
+  Status insert(std::size_t id, double const *c, double const *q) noexcept;
   // As n calls of insert(), in order, all or none; on `threads` OpenMP
   // threads (≥ 1, checked by the caller) for n ≥ bulk_min (bulk.cpp),
   // with the same resulting index for any count.
   Status insert_many(std::size_t n, std::size_t const *ids,
                      double const *c, double const *q,
                      int threads = 1) noexcept;
-  Status update(std::size_t id, double const c[dim],
-                double const q[sym]) noexcept;
+  Status update(std::size_t id, double const *c, double const *q) noexcept;
   Status remove(std::size_t id) noexcept;
-  Status get(std::size_t id, double c[dim], double q[sym]) const noexcept;
+  Status get(std::size_t id, double *c, double *q) const noexcept;
 
-  Status overlap_any(double const c[dim], double const q[sym],
-                     std::size_t exclude, int *result,
-                     std::size_t *id) const noexcept;
+  Status overlap_any(double const *c, double const *q, std::size_t exclude,
+                     int *result, std::size_t *id) const noexcept;
   // Hits sorted by (id, shift).
-  Status within(double const c[dim], double const q[sym], double t,
-                std::size_t exclude, Buffer<Hit> *hits) const noexcept;
+  Status within(double const *c, double const *q, double t,
+                std::size_t exclude, Buffer<Hit<D>> *hits) const noexcept;
   // Pairs sorted by (i, j, shift). within = false: overlap mode (t = 1,
   // pw85_overlap's decision); true: μ² < t. candidates, if not null,
   // receives the number of pairs that passed the broad phase.
-  Status pairs(bool within, double t, int threads, Buffer<PairHit> *out,
+  Status pairs(bool within, double t, int threads, Buffer<PairHit<D>> *out,
                std::size_t *candidates) const noexcept;
 
   // For pairs.cpp.
@@ -162,40 +196,38 @@ class Index {
   Slot slot(std::size_t id) const noexcept {
     return id < slots_.size() ? slots_[id] : Slot{};
   }
-  Buffer<Level> const &levels() const noexcept { return levels_; }
+  Buffer<Level<D>> const &levels() const noexcept { return levels_; }
   double coordinate_bound() const noexcept { return cmax_; }
 
  private:
-  Status check_ellipsoid(double const c[dim], double const q[sym]) const
-      noexcept;
-  Status check_centre(double const c[dim]) const noexcept;
+  Status check_ellipsoid(double const *c, double const *q) const noexcept;
+  Status check_centre(double const *c) const noexcept;
   // The side rule of a periodic box: 2·h_k·(1 + broad_margin) < L_k.
-  bool fits_box(double const h[dim]) const noexcept;
+  bool fits_box(double const *h) const noexcept;
   // Fills *e, the entry of an ellipsoid; returns the exponent of its
   // level (H ≤ 2^exponent).
-  int make_entry(std::size_t id, double const c[dim], double const q[sym],
-                 Entry *e) const noexcept;
+  int make_entry(std::size_t id, double const *c, double const *q,
+                 Entry<D> *e) const noexcept;
   // The position in levels_ of the level of that exponent, or
   // levels_.size() when there is none yet.
   int level_of(int exponent) const noexcept;
   // ⌊c_k/L_k⌋ (periodic), else 0: Entry::wrap.
-  void wraps(double const c[dim], std::int32_t w[dim]) const noexcept;
-  void cell_coords(Level const &lv, double const c[dim],
-                   std::int32_t const wrap[dim], std::uint64_t u[dim]) const
-      noexcept;
+  void wraps(double const *c, std::int32_t *w) const noexcept;
+  void cell_coords(Level<D> const &lv, double const *c,
+                   std::int32_t const *wrap, std::uint64_t *u) const noexcept;
   // insert_many() of n ≥ bulk_min ellipsoids (bulk.cpp).
   Status insert_bulk(std::size_t n, std::size_t const *ids, double const *c,
                      double const *q, int threads) noexcept;
   // Every allocation insert_entry(e, exponent) needs; false on failure
   // (the index is unchanged but for spare capacity, or an empty new
   // level).
-  bool reserve_for(Entry const &e, int exponent) noexcept;
-  void insert_entry(Entry const &e, int exponent) noexcept;  // after reserve_for()
+  bool reserve_for(Entry<D> const &e, int exponent) noexcept;
+  void insert_entry(Entry<D> const &e, int exponent) noexcept;  // after reserve_for()
   // A new level of that exponent, with its dense array of cells when
   // small enough; false on failure.
   bool add_level(int exponent) noexcept;
   void erase(std::size_t id) noexcept;
-  void init_level(Level *lv, int exponent) const noexcept;
+  void init_level(Level<D> *lv, int exponent) const noexcept;
 
   // The broad phase of the queries on a candidate (broad.hpp): calls
   // f(entry, shift, r, slack_sum) for every image of every stored
@@ -206,41 +238,48 @@ class Index {
   // many images (max_span). With nearest_first, the cells nearest to c
   // are visited before the others (for a query that stops early).
   template <typename F>
-  Status visit(double const c[dim], double const h[dim], double sqrt_t,
+  Status visit(double const *c, double const *h, double sqrt_t,
                std::uint32_t exclude, bool nearest_first, F &&f) const
       noexcept;
   template <typename F>
-  Status visit_level(Level const &lv, double const c[dim],
-                     double const h[dim], double sqrt_t,
-                     std::uint32_t exclude, bool nearest_first, bool *go_on,
-                     F &f) const noexcept;
+  Status visit_level(Level<D> const &lv, double const *c, double const *h,
+                     double sqrt_t, std::uint32_t exclude,
+                     bool nearest_first, bool *go_on, F &f) const noexcept;
   // A level wider than the reach: every entry, with its shifts in reach.
   template <typename Test>
-  Status visit_every_entry(Level const &lv, double const c[dim],
-                           Reach const &rc, std::uint32_t exclude,
+  Status visit_every_entry(Level<D> const &lv, double const *c,
+                           Reach<D> const &rc, std::uint32_t exclude,
                            bool *go_on, Test &test) const noexcept;
 
   bool periodic_;
-  double box_[dim] = {};
+  double box_[D] = {};
   double cmax_ = 0.0;  // ≥ every |c_k| ever stored (for rounding margins)
   std::size_t count_ = 0;
   Buffer<Slot> slots_;  // by id
-  Buffer<Level> levels_;
+  Buffer<Level<D>> levels_;
 };
 
 // The exponent e of the level of an ellipsoid of AABB half-widths h:
 // H = max_k h_k ≤ 2^e (index.hpp, "Grid").
-inline int level_exponent(double const h[dim]) noexcept {
+template <int D>
+inline int level_exponent(double const *h) noexcept {
+  double m = h[0];
+  for (int k = 1; k < D; ++k) m = std::max(m, h[k]);
   int exponent = 0;
-  std::frexp(std::max(std::max(h[0], h[1]), h[2]), &exponent);
+  std::frexp(m, &exponent);
   return exponent;
 }
 
-// ⌊a / b⌋ for b > 0.
-inline std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
-  std::int64_t const d = a / b;
-  return (a % b != 0 && a < 0) ? d - 1 : d;
-}
+}  // namespace spatial
+
+// The 3D index, as the rest of the core names it (energy, packer).
+using Index = spatial::Index<3>;
+using Entry = spatial::Entry<3>;
+using Cell = spatial::Cell<3>;
+using Level = spatial::Level<3>;
+using Hit = spatial::Hit<3>;
+using PairHit = spatial::PairHit<3>;
+using ImageVector = spatial::ImageVector<3>;
 
 }  // namespace pw85::detail
 

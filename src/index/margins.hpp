@@ -118,6 +118,13 @@ constexpr double deep_form = deep_shrink / 4;  // 2⁻²²
 constexpr double deep_rounding = 0x1p-48;
 constexpr double deep_bound = 2 * deep_shrink;  // 2⁻¹⁹
 constexpr double deep_slack = (deep_shrink / 2) * (deep_shrink / 2);  // 2⁻⁴²
+//
+// Ellipses (D = 2, deep.cpp): the bounds above hold a fortiori. The 2 × 2
+// Cholesky factorisation and forward substitution have backward errors
+// with γ₃ and γ₂ where the 3 × 3 ones have γ₄ and γ₃ (th. 10.3 and 8.5);
+// σmin(L) ≥ g = |det L|/‖L‖_F (σ₁·σ₂ = |det L|, σ₂ ≤ ‖L‖_F), formed with
+// fewer roundings than the 3D g; the estimates of λmin (the root of the
+// quadratic, then 1/‖Q⁻¹‖_F) are only estimates, certified as in 3D.
 
 // ---- Limits --------------------------------------------------------------
 //

@@ -6,8 +6,8 @@
 //
 // Snapshot: per level e, a dense grid (cells of side ≥ 2^e, coarsened until
 // there are at most 2·count + 64 cells) whose entries are sorted by cell
-// (a counting sort), so that the entries of a row of cells along axis 2
-// are contiguous, and neighbours in space are neighbours in memory. The
+// (a counting sort), so that the entries of a row of cells along the last
+// axis are contiguous, and neighbours in space are neighbours in memory. The
 // hot fields (centre, half-widths, wrap, id) and the forms are separate
 // arrays.
 //
@@ -26,40 +26,45 @@
 #include <omp.h>
 #endif
 
-namespace pw85::detail {
+namespace pw85::detail::spatial {
 
 namespace {
 
+template <int D>
 struct Hot {
-  double c[dim];
-  double h[dim];
-  std::int32_t wrap[dim];
+  double c[D];
+  double h[D];
+  std::int32_t wrap[D];
   std::uint32_t id;
 };
 
+template <int D>
 struct Form {
-  double q[sym];
+  double q[sym_size(D)];
 };
 
+template <int D>
 struct Grid {
-  double origin[dim];  // open: the least centre; periodic: 0
-  double inv[dim];     // 1/side of a cell
-  std::int64_t n[dim];
-  double hmax[dim];
+  double origin[D];  // open: the least centre; periodic: 0
+  double inv[D];     // 1/side of a cell
+  std::int64_t n[D];
+  double hmax[D];
   std::size_t first;    // the level's entries: [first, first + count)
   std::size_t count;
-  std::size_t cells;    // n0·n1·n2
+  std::size_t cells;    // n0·n1·…
   Buffer<std::uint32_t> start;  // cells + 1 offsets, relative to first
 };
 
+template <int D>
 struct Snapshot {
-  Buffer<Grid> grids;
-  Buffer<Hot> hot;
-  Buffer<Form> forms;
+  Buffer<Grid<D>> grids;
+  Buffer<Hot<D>> hot;
+  Buffer<Form<D>> forms;
 };
 
-std::int64_t cell_along(Grid const &g, double const c[dim],
-                        std::int32_t const wrap[dim], double const box[dim],
+template <int D>
+std::int64_t cell_along(Grid<D> const &g, double const *c,
+                        std::int32_t const *wrap, double const *box,
                         bool periodic, int k) noexcept {
   double const x = periodic ? c[k] - wrap[k] * box[k] : c[k] - g.origin[k];
   double const m = std::floor(x * g.inv[k]);
@@ -67,12 +72,15 @@ std::int64_t cell_along(Grid const &g, double const c[dim],
       std::min(std::max(m, 0.0), double(g.n[k] - 1)));
 }
 
-std::size_t cell_of(Grid const &g, double const c[dim],
-                    std::int32_t const wrap[dim], double const box[dim],
+// Row-major: in 3D (m0·n1 + m1)·n2 + m2.
+template <int D>
+std::size_t cell_of(Grid<D> const &g, double const *c,
+                    std::int32_t const *wrap, double const *box,
                     bool periodic) noexcept {
-  std::int64_t m[dim];
-  for (int k = 0; k < dim; ++k) m[k] = cell_along(g, c, wrap, box, periodic, k);
-  return static_cast<std::size_t>((m[0] * g.n[1] + m[1]) * g.n[2] + m[2]);
+  std::int64_t m = cell_along(g, c, wrap, box, periodic, 0);
+  for (int k = 1; k < D; ++k)
+    m = m * g.n[k] + cell_along(g, c, wrap, box, periodic, k);
+  return static_cast<std::size_t>(m);
 }
 
 // The number of threads a loop of n iterations is worth (a thread per
@@ -87,22 +95,23 @@ int threads_for(int threads, std::size_t n) noexcept {
 constexpr int max_snapshot_threads = 16;
 
 // The shape of the snapshot's grid of a level: origin, sides (1/inv) and
-// cells per axis, then n0·n1·n2 (g.cells).
-void grid_shape(Level const &lv, double const box[dim], bool periodic,
-                Grid *gp) noexcept {
-  Grid &g = *gp;
+// cells per axis, then their product (g.cells).
+template <int D>
+void grid_shape(Level<D> const &lv, double const *box, bool periodic,
+                Grid<D> *gp) noexcept {
+  Grid<D> &g = *gp;
   std::size_t const ncells = lv.cells.size();
-  double lo[dim] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
-  double hi[dim] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  double lo[D], hi[D];
+  for (int k = 0; k < D; ++k) lo[k] = HUGE_VAL, hi[k] = -HUGE_VAL;
   if (!periodic)
     for (std::size_t ci = 0; ci < ncells; ++ci)
       for (std::size_t ei = 0; ei < lv.cells[ci].size(); ++ei)
-        for (int k = 0; k < dim; ++k) {
+        for (int k = 0; k < D; ++k) {
           lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
           hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
         }
   double cells = 1.0;
-  for (int k = 0; k < dim; ++k) {
+  for (int k = 0; k < D; ++k) {
     g.hmax[k] = lv.hmax[k];
     double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
     if (periodic) {
@@ -122,7 +131,7 @@ void grid_shape(Level const &lv, double const box[dim], bool periodic,
   double const most = 2.0 * double(lv.count) + 64.0;
   while (cells > most) {
     int k = 0;
-    for (int a = 1; a < dim; ++a)
+    for (int a = 1; a < D; ++a)
       if (g.n[a] > g.n[k]) k = a;
     cells /= double(g.n[k]);
     g.n[k] = (g.n[k] + 1) / 2;
@@ -139,15 +148,16 @@ void grid_shape(Level const &lv, double const box[dim], bool periodic,
 // own histogram; in each dense cell, thread t's entries then follow those
 // of threads t' < t, which is the serial order: the snapshot is the same
 // for any number of threads.
+template <int D>
 struct LevelSort {
-  Level const &lv;
-  Grid &g;
+  Level<D> const &lv;
+  Grid<D> &g;
   Buffer<std::size_t> const &base;  // the level's cells: offsets of their entries
   double const *box;
   bool periodic;
   Buffer<std::uint32_t> &where;  // the grid's cell of each entry
   Buffer<std::uint32_t> &hist;   // nt histograms of g.cells counts
-  Snapshot *s;
+  Snapshot<D> *s;
   int nt = 1;
   std::size_t split[max_snapshot_threads + 1] = {};
 
@@ -169,7 +179,7 @@ struct LevelSort {
   void locate(int t) noexcept {
     std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
     for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
-      Cell const &cell = lv.cells[ci];
+      Cell<D> const &cell = lv.cells[ci];
       for (std::size_t ei = 0; ei < cell.size(); ++ei) {
         std::uint32_t const w = static_cast<std::uint32_t>(
             cell_of(g, cell[ei].c, cell[ei].wrap, box, periodic));
@@ -199,18 +209,18 @@ struct LevelSort {
   void scatter(int t) noexcept {
     std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
     for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
-      Cell const &cell = lv.cells[ci];
+      Cell<D> const &cell = lv.cells[ci];
       for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-        Entry const &e = cell[ei];
+        Entry<D> const &e = cell[ei];
         std::size_t const to = g.first + h[where[base[ci] + ei]]++;
-        Hot &x = s->hot[to];
-        for (int k = 0; k < dim; ++k) {
+        Hot<D> &x = s->hot[to];
+        for (int k = 0; k < D; ++k) {
           x.c[k] = e.c[k];
           x.h[k] = e.h[k];
           x.wrap[k] = e.wrap[k];
         }
         x.id = e.id;
-        for (int k = 0; k < sym; ++k) s->forms[to].q[k] = e.q[k];
+        for (int k = 0; k < sym_size(D); ++k) s->forms[to].q[k] = e.q[k];
       }
     }
   }
@@ -247,8 +257,9 @@ struct LevelSort {
 // Each level's counting sort runs on `threads` threads (LevelSort), in an
 // order that does not depend on their number; the loops over the level's
 // cells here (offsets, and the bounds of an open domain) are serial.
-bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
-  Buffer<Level> const &levels = index.levels();
+template <int D>
+bool take_snapshot(Index<D> const &index, int threads, Snapshot<D> *s) noexcept {
+  Buffer<Level<D>> const &levels = index.levels();
   double const *box = index.box();
   bool const periodic = index.periodic();
   if (!s->hot.resize_uninitialised(index.count()) ||
@@ -259,9 +270,9 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
   Buffer<std::uint32_t> where, hist;
   std::size_t first = 0;
   for (std::size_t l = 0; l < levels.size(); ++l) {
-    Level const &lv = levels[l];
+    Level<D> const &lv = levels[l];
     if (lv.count == 0) continue;
-    Grid g;
+    Grid<D> g;
     g.first = first;
     g.count = lv.count;
     first += lv.count;
@@ -272,24 +283,26 @@ bool take_snapshot(Index const &index, int threads, Snapshot *s) noexcept {
     for (std::size_t ci = 0; ci < ncells; ++ci)
       base[ci + 1] = base[ci] + lv.cells[ci].size();
     grid_shape(lv, box, periodic, &g);
-    LevelSort sort{lv, g, base, box, periodic, where, hist, s};
+    LevelSort<D> sort{lv, g, base, box, periodic, where, hist, s};
     if (!g.start.resize(g.cells + 1) || !sort.prepare(threads)) return false;
     sort.run();
-    s->grids.push_back_reserved(static_cast<Grid &&>(g));
+    s->grids.push_back_reserved(static_cast<Grid<D> &&>(g));
   }
   return true;
 }
 
-bool shift_positive(std::int32_t const n[dim]) noexcept {
-  for (int k = 0; k < dim; ++k)
+template <int D>
+bool shift_positive(std::int32_t const *n) noexcept {
+  for (int k = 0; k < D; ++k)
     if (n[k] != 0) return n[k] > 0;
   return false;
 }
 
-bool pair_less(PairHit const &a, PairHit const &b) noexcept {
+template <int D>
+bool pair_less(PairHit<D> const &a, PairHit<D> const &b) noexcept {
   if (a.i != b.i) return a.i < b.i;
   if (a.j != b.j) return a.j < b.j;
-  for (int k = 0; k < dim; ++k)
+  for (int k = 0; k < D; ++k)
     if (a.shift[k] != b.shift[k]) return a.shift[k] < b.shift[k];
   return false;
 }
@@ -298,46 +311,49 @@ bool pair_less(PairHit const &a, PairHit const &b) noexcept {
 // pairs, each next one twice as large up to 2^18 pairs (10 MB). A growing
 // array would copy its content at each doubling, and the copies into fresh
 // pages cost 8% of the all-pairs query at N = 1e6 (perf).
+template <int D>
 class PairList {
  public:
   std::size_t size() const noexcept { return size_; }
   std::size_t blocks() const noexcept { return blocks_.size(); }
-  Buffer<PairHit> const &block(std::size_t b) const noexcept {
+  Buffer<PairHit<D>> const &block(std::size_t b) const noexcept {
     return blocks_[b];
   }
-  [[nodiscard]] bool push_back(PairHit const &hit) noexcept {
+  [[nodiscard]] bool push_back(PairHit<D> const &hit) noexcept {
     if (blocks_.empty() || blocks_.back().size() == blocks_.back().capacity()) {
       std::size_t const n =
           blocks_.empty() ? 4096
                           : std::min<std::size_t>(2 * blocks_.back().capacity(),
                                                   std::size_t(1) << 18);
-      Buffer<PairHit> block;
+      Buffer<PairHit<D>> block;
       if (!blocks_.grow_for(1) || !block.reserve(n)) return false;
-      blocks_.push_back_reserved(static_cast<Buffer<PairHit> &&>(block));
+      blocks_.push_back_reserved(static_cast<Buffer<PairHit<D>> &&>(block));
     }
-    PairHit copy = hit;
-    blocks_.back().push_back_reserved(static_cast<PairHit &&>(copy));
+    PairHit<D> copy = hit;
+    blocks_.back().push_back_reserved(static_cast<PairHit<D> &&>(copy));
     ++size_;
     return true;
   }
 
  private:
-  Buffer<Buffer<PairHit>> blocks_;
+  Buffer<Buffer<PairHit<D>>> blocks_;
   std::size_t size_ = 0;
 };
 
 // One thread's share: its pairs, its count of broad-phase candidates, and
 // the least pair (in the output order) on which the narrow phase failed.
+template <int D>
 struct Share {
-  PairList pairs;
+  PairList<D> pairs;
   std::size_t candidates = 0;
   Status status = Status::success;
-  PairHit failed_at{};
+  PairHit<D> failed_at{};
 };
 
+template <int D>
 class Search {
  public:
-  Search(Index const &index, Snapshot const &s, bool within, double t)
+  Search(Index<D> const &index, Snapshot<D> const &s, bool within, double t)
       : periodic_(index.periodic()),
         box_(index.box()),
         cmax_(index.coordinate_bound()),
@@ -350,7 +366,7 @@ class Search {
     // h_k of any grid), above the σ_k of each pair (margins.hpp), and a
     // function of the index alone, as test() must be.
     slack_sum_ = 0.0;
-    for (int k = 0; k < dim; ++k) {
+    for (int k = 0; k < D; ++k) {
       double h = 0.0;
       for (std::size_t g = 0; g < s.grids.size(); ++g)
         h = std::max(h, s.grids[g].hmax[k]);
@@ -360,14 +376,15 @@ class Search {
   }
 
   // The pairs found from entry a (an index into the snapshot).
-  void from(std::size_t a, Share *share) const noexcept {
+  void from(std::size_t a, Share<D> *share) const noexcept {
     for (std::size_t g = 0; g < s_.grids.size(); ++g) {
       if (!grid(s_.grids[g], a, share)) return;
     }
   }
 
  private:
-  void fail(Share *share, Status status, PairHit const &at) const noexcept {
+  void fail(Share<D> *share, Status status, PairHit<D> const &at) const
+      noexcept {
     if (share->status == Status::success ||
         (share->status != Status::no_memory && pair_less(at, share->failed_at))) {
       share->status = status;
@@ -381,24 +398,30 @@ class Search {
   // that orientation (the box test with the pair's own bound, the
   // line test, the narrow phase on the exact r = (c_j + n∘L) − c_i), as a
   // brute force over (i, j, n) would. False stops (no memory).
-  bool test(std::size_t a, std::size_t b, std::int32_t const shift[dim],
-            Share *share) const noexcept {
-    std::int32_t n[dim] = {shift[0], shift[1], shift[2]};
+  bool test(std::size_t a, std::size_t b, std::int32_t const *shift,
+            Share<D> *share) const noexcept {
+    std::int32_t n[D];
+    for (int k = 0; k < D; ++k) n[k] = shift[k];
     if (s_.hot[b].id < s_.hot[a].id) {
       std::swap(a, b);
-      for (int k = 0; k < dim; ++k) n[k] = -n[k];
+      for (int k = 0; k < D; ++k) n[k] = -n[k];
     }
-    Hot const &x = s_.hot[a];
-    Hot const &y = s_.hot[b];
-    double r[dim];
-    if (!boxes_meet(x.c, x.h, y.c, y.h, n, box_, sqrt_t_, slack_, r)) return true;
+    Hot<D> const &x = s_.hot[a];
+    Hot<D> const &y = s_.hot[b];
+    double r[D];
+    if (!boxes_meet<D>(x.c, x.h, y.c, y.h, n, box_, sqrt_t_, slack_, r))
+      return true;
     double const *q1 = s_.forms[a].q;
     double const *q2 = s_.forms[b].q;
-    if (separated_along_r(r, q1, x.h, q2, y.h, sqrt_t_, slack_sum_)) return true;
+    if (separated_along_r<D>(r, q1, x.h, q2, y.h, sqrt_t_, slack_sum_))
+      return true;
     ++share->candidates;
-    ImageVector v;
+    ImageVector<D> v;
     image_vector_exact(x.c, y.c, n, box_, &v);
-    PairHit hit{x.id, y.id, {n[0], n[1], n[2]}, 0, 0.0, 0.0};
+    PairHit<D> hit;
+    hit.i = x.id, hit.j = y.id;
+    for (int k = 0; k < D; ++k) hit.shift[k] = n[k];
+    hit.result = 0, hit.mu2 = hit.lambda = 0.0;
     if (!narrow(v, q1, q2, &hit, share)) return true;
     if (!share->pairs.push_back(hit)) {
       share->status = Status::no_memory;
@@ -409,8 +432,8 @@ class Search {
 
   // The narrow phase of test(): true when the pair is reported (hit
   // filled); a failure is recorded in the share.
-  bool narrow(ImageVector const &v, double const q1[sym], double const q2[sym],
-              PairHit *hit, Share *share) const noexcept {
+  bool narrow(ImageVector<D> const &v, double const *q1, double const *q2,
+              PairHit<D> *hit, Share<D> *share) const noexcept {
     if (within_) {
       double out[2] = {NAN, NAN};
       Status const st = image_contact(v, q1, q2, out);
@@ -438,11 +461,11 @@ class Search {
   // it is kept from the one earlier in the snapshot, b > a, or, for an
   // entry's own image (b = a), with a positive shift (the pair (a, a, −n)
   // is the same as (a, a, n)).
-  bool grid(Grid const &g, std::size_t a, Share *share) const noexcept {
-    Hot const &x = s_.hot[a];
-    Reach const rc = reach_of(x.c, x.h, g.hmax, sqrt_t_, cmax_, box_);
-    double first[dim], last[dim], lo[dim], hi[dim];
-    for (int k = 0; k < dim; ++k) {  // open: clamped as the entries' cells
+  bool grid(Grid<D> const &g, std::size_t a, Share<D> *share) const noexcept {
+    Hot<D> const &x = s_.hot[a];
+    Reach<D> const rc = reach_of<D>(x.c, x.h, g.hmax, sqrt_t_, cmax_, box_);
+    double first[D], last[D], lo[D], hi[D];
+    for (int k = 0; k < D; ++k) {  // open: clamped as the entries' cells
       first[k] = periodic_ ? -HUGE_VAL : 0.0;
       last[k] = periodic_ ? HUGE_VAL : double(g.n[k] - 1);
     }
@@ -458,74 +481,109 @@ class Search {
   // own view, not of the order of the snapshot. The images of y kept from
   // x are those within the pair's own bound plus the slack, a superset of
   // those that the box test keeps.
-  bool every_entry(Grid const &g, std::size_t a, Reach const &rc,
-                   Share *share) const noexcept {
-    Hot const &x = s_.hot[a];
-    std::int64_t lo[dim], hi[dim];
+  bool every_entry(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
+                   Share<D> *share) const noexcept {
+    Hot<D> const &x = s_.hot[a];
+    std::int64_t lo[D], hi[D];
     for (std::size_t b = g.first; b < g.first + g.count; ++b) {
-      Hot const &y = s_.hot[b];
+      Hot<D> const &y = s_.hot[b];
       if (y.id >= x.id &&
-          !shift_range(periodic_, x.c, rc.reach, rc.slack, y.c, box_, lo, hi)) {
-        fail(share, Status::out_of_range, PairHit{x.id, y.id, {}, 0, 0, 0});
+          !shift_range<D>(periodic_, x.c, rc.reach, rc.slack, y.c, box_, lo, hi)) {
+        fail(share, Status::out_of_range, PairHit<D>{x.id, y.id, {}, 0, 0, 0});
         return true;
       }
     }
     for (std::size_t b = std::max(g.first, a); b < g.first + g.count; ++b) {
-      Hot const &y = s_.hot[b];
-      double bound[dim];
-      for (int k = 0; k < dim; ++k) bound[k] = box_bound(sqrt_t_, x.h[k], y.h[k]);
-      if (!shift_range(periodic_, x.c, bound, rc.slack, y.c, box_, lo, hi)) {
+      Hot<D> const &y = s_.hot[b];
+      double bound[D];
+      for (int k = 0; k < D; ++k) bound[k] = box_bound(sqrt_t_, x.h[k], y.h[k]);
+      if (!shift_range<D>(periodic_, x.c, bound, rc.slack, y.c, box_, lo, hi)) {
         // only if y.id < x.id (see above)
         std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
-        fail(share, Status::out_of_range, PairHit{i, j, {}, 0, 0, 0});
+        fail(share, Status::out_of_range, PairHit<D>{i, j, {}, 0, 0, 0});
         return true;
       }
-      if (!for_each_shift(lo, hi, [&](std::int32_t const *shift) {
-            return (b == a && !shift_positive(shift)) || test(a, b, shift, share);
+      if (!for_each_shift<D>(lo, hi, [&](std::int32_t const *shift) {
+            return (b == a && !shift_positive<D>(shift)) ||
+                   test(a, b, shift, share);
           }))
         return false;
     }
     return true;
   }
 
-  // The cells [lo, hi] of the grid: along axis 2, one contiguous run of
-  // entries per copy of the box. Runs of entries wholly before a are
-  // skipped without reading them. The box test from x with the grid's
+  // The cells [lo, hi] of the grid: along the last axis, one contiguous
+  // run of entries per copy of the box. Runs of entries wholly before a
+  // are skipped without reading them. The box test from x with the grid's
   // slack is a first filter, inlined: it discards only images that the
   // test in the output's orientation discards too (both slacks bound the
   // rounding of r̂, formed from either end: margins.hpp).
-  bool runs(Grid const &g, std::size_t a, Reach const &rc, double const lo[dim],
-            double const hi[dim], Share *share) const noexcept {
-    Hot const &x = s_.hot[a];
-    std::int32_t shift[dim];
-    double r[dim];
-    std::int64_t const lo2 = std::int64_t(lo[2]), hi2 = std::int64_t(hi[2]);
-    std::int64_t const plo = periodic_ ? floor_div(lo2, g.n[2]) : 0;
-    std::int64_t const phi = periodic_ ? floor_div(hi2, g.n[2]) : 0;
-    for (std::int64_t m0 = std::int64_t(lo[0]); m0 <= std::int64_t(hi[0]); ++m0) {
-      std::int64_t const p0 = periodic_ ? floor_div(m0, g.n[0]) : 0;
-      std::int64_t const u0 = m0 - p0 * g.n[0];
-      for (std::int64_t m1 = std::int64_t(lo[1]); m1 <= std::int64_t(hi[1]); ++m1) {
-        std::int64_t const p1 = periodic_ ? floor_div(m1, g.n[1]) : 0;
-        std::int64_t const u1 = m1 - p1 * g.n[1];
-        std::size_t const row = static_cast<std::size_t>((u0 * g.n[1] + u1) * g.n[2]);
-        for (std::int64_t p2 = plo; p2 <= phi; ++p2) {
-          std::int64_t const z0 = std::max(lo2, p2 * g.n[2]) - p2 * g.n[2];
-          std::int64_t const z1 = std::min(hi2, p2 * g.n[2] + g.n[2] - 1) - p2 * g.n[2];
-          std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
-          if (b1 <= a) continue;
-          std::size_t const b0 = std::max(g.first + g.start[row + std::size_t(z0)], a);
-          for (std::size_t b = b0; b < b1; ++b) {
-            Hot const &y = s_.hot[b];
-            shift[0] = std::int32_t(p0 - y.wrap[0]);
-            shift[1] = std::int32_t(p1 - y.wrap[1]);
-            shift[2] = std::int32_t(p2 - y.wrap[2]);
-            if (!boxes_meet(x.c, x.h, y.c, y.h, shift, box_, sqrt_t_, rc.slack, r))
-              continue;
-            if (b == a && !shift_positive(shift)) continue;
-            if (!test(a, b, shift, share)) return false;
-          }
-        }
+  bool runs(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
+            double const *lo, double const *hi, Share<D> *share) const
+      noexcept {
+    constexpr int z = D - 1;
+    std::int64_t const lo_z = std::int64_t(lo[z]), hi_z = std::int64_t(hi[z]);
+    Rows const rows{g, a, rc, lo, hi, share, lo_z, hi_z,
+                    periodic_ ? floor_div(lo_z, g.n[z]) : 0,
+                    periodic_ ? floor_div(hi_z, g.n[z]) : 0};
+    std::int64_t p[D];
+    return along<0>(rows, 0, p);
+  }
+
+  // What runs() hands down its loops: the block of cells, and along the
+  // last axis its ends and the copies of the box they fall in.
+  struct Rows {
+    Grid<D> const &g;
+    std::size_t a;
+    Reach<D> const &rc;
+    double const *lo, *hi;
+    Share<D> *share;
+    std::int64_t lo_z, hi_z, copy_lo, copy_hi;
+  };
+
+  // The loops along the axes K < D − 1 (nested once inlined): the cell
+  // m of the copy p_K of the box; row: the position of the row's first
+  // cell so far (row-major, in 3D (u0·n1 + u1)·n2).
+  template <int K>
+  PW85_INLINE bool along(Rows const &w, std::int64_t row,
+                         std::int64_t p[D]) const noexcept {
+    Grid<D> const &g = w.g;
+    for (std::int64_t m = std::int64_t(w.lo[K]); m <= std::int64_t(w.hi[K]); ++m) {
+      p[K] = periodic_ ? floor_div(m, g.n[K]) : 0;
+      std::int64_t const inner = row * g.n[K] + (m - p[K] * g.n[K]);
+      if constexpr (K + 2 < D) {
+        if (!along<K + 1>(w, inner, p)) return false;
+      } else if (!run(w, static_cast<std::size_t>(inner * g.n[D - 1]), p)) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // The cells of a row along the last axis (p: the copies along the
+  // others), one contiguous run of entries per copy of the box.
+  PW85_INLINE bool run(Rows const &w, std::size_t row,
+                       std::int64_t const p[D]) const noexcept {
+    constexpr int z = D - 1;
+    Grid<D> const &g = w.g;
+    std::size_t const a = w.a;
+    Hot<D> const &x = s_.hot[a];
+    std::int32_t shift[D];
+    double r[D];
+    for (std::int64_t pz = w.copy_lo; pz <= w.copy_hi; ++pz) {
+      std::int64_t const z0 = std::max(w.lo_z, pz * g.n[z]) - pz * g.n[z];
+      std::int64_t const z1 = std::min(w.hi_z, pz * g.n[z] + g.n[z] - 1) - pz * g.n[z];
+      std::size_t const b1 = g.first + g.start[row + std::size_t(z1) + 1];
+      if (b1 <= a) continue;
+      std::size_t const b0 = std::max(g.first + g.start[row + std::size_t(z0)], a);
+      for (std::size_t b = b0; b < b1; ++b) {
+        Hot<D> const &y = s_.hot[b];
+        for (int k = 0; k < z; ++k) shift[k] = std::int32_t(p[k] - y.wrap[k]);
+        shift[z] = std::int32_t(pz - y.wrap[z]);
+        if (!boxes_meet<D>(x.c, x.h, y.c, y.h, shift, box_, sqrt_t_, w.rc.slack, r))
+          continue;
+        if (b == a && !shift_positive<D>(shift)) continue;
+        if (!test(a, b, shift, w.share)) return false;
       }
     }
     return true;
@@ -534,17 +592,18 @@ class Search {
   bool periodic_;
   double const *box_;
   double cmax_;
-  Snapshot const &s_;
+  Snapshot<D> const &s_;
   bool within_;
   double t_, sqrt_t_;
-  double slack_[dim], slack_sum_;  // test()'s
+  double slack_[D], slack_sum_;  // test()'s
 };
 
 // The pairs of every share into out, sorted by (i, j, shift); ids: the
 // id table's size, total: the number of pairs. False when an allocation
 // fails.
-bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
-           std::size_t total, Buffer<PairHit> *out) noexcept {
+template <int D>
+bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
+           std::size_t total, Buffer<PairHit<D>> *out) noexcept {
   // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
   // The keys (i, j, n) are distinct, so the order within an i before its
   // sort does not matter: the shares are scattered concurrently (slots
@@ -555,7 +614,7 @@ bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
   int const nt = threads_for(threads, total);
   auto count_share = [&](std::size_t k, bool atomic) {
     for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      Buffer<PairHit<D>> const &p = shares[k].pairs.block(b);
       for (std::size_t q = 0; q < p.size(); ++q) {
         std::size_t *c = &first[p[q].i + 1];
         if (atomic)
@@ -567,7 +626,7 @@ bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
   };
   auto scatter_share = [&](std::size_t k, bool atomic) {
     for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit> const &p = shares[k].pairs.block(b);
+      Buffer<PairHit<D>> const &p = shares[k].pairs.block(b);
       for (std::size_t q = 0; q < p.size(); ++q) {
         std::size_t *c = &first[p[q].i];
         std::size_t const to =
@@ -580,7 +639,7 @@ bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
     // first[i] is now the end of i's pairs, first[i − 1] their start.
     std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
     if (end - begin > 1)
-      std::sort(out->data() + begin, out->data() + end, pair_less);
+      std::sort(out->data() + begin, out->data() + end, pair_less<D>);
   };
   if (nt <= 1) {
     for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
@@ -609,8 +668,10 @@ bool merge(Buffer<Share> const &shares, int threads, std::size_t ids,
 
 }  // namespace
 
-Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
-                    std::size_t *candidates) const noexcept {
+template <int D>
+Status Index<D>::pairs(bool within, double t, int threads,
+                       Buffer<PairHit<D>> *out,
+                       std::size_t *candidates) const noexcept {
   if (within) {
     if (!std::isfinite(t)) return Status::not_finite;
     if (!(t > 0.0)) return Status::invalid_argument;
@@ -619,15 +680,15 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
 #if !defined(PW85_OPENMP)
   threads = 1;
 #endif
-  Snapshot snap;
+  Snapshot<D> snap;
   if (!take_snapshot(*this, threads, &snap)) return Status::no_memory;
-  Buffer<Share> shares;
+  Buffer<Share<D>> shares;
   if (!shares.resize(std::size_t(threads))) return Status::no_memory;
-  Search const search(*this, snap, within, within ? t : 1.0);
+  Search<D> const search(*this, snap, within, within ? t : 1.0);
   std::size_t const n = snap.hot.size();
   constexpr std::size_t chunk = 256;
   std::size_t const chunks = (n + chunk - 1) / chunk;
-  auto run = [&](std::size_t k, Share *share) {
+  auto run = [&](std::size_t k, Share<D> *share) {
     if (share->status == Status::no_memory) return;
     std::size_t const end = std::min(n, (k + 1) * chunk);
     for (std::size_t a = k * chunk; a < end; ++a) search.from(a, share);
@@ -639,7 +700,7 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
     long long const nchunks = static_cast<long long>(chunks);
 #pragma omp parallel num_threads(threads)
     {
-      Share *share = &shares[std::size_t(omp_get_thread_num())];
+      Share<D> *share = &shares[std::size_t(omp_get_thread_num())];
 #pragma omp for schedule(dynamic, 1)
       for (long long k = 0; k < nchunks; ++k) run(std::size_t(k), share);
     }
@@ -648,15 +709,15 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
 
   // The least failure in the output order, whatever the schedule.
   Status status = Status::success;
-  PairHit at{};
+  PairHit<D> at{};
   std::size_t total = 0, found = 0;
   for (std::size_t k = 0; k < shares.size(); ++k) {
-    Share const &sh = shares[k];
+    Share<D> const &sh = shares[k];
     total += sh.pairs.size();
     found += sh.candidates;
     if (sh.status == Status::no_memory) return Status::no_memory;
     if (sh.status != Status::success &&
-        (status == Status::success || pair_less(sh.failed_at, at))) {
+        (status == Status::success || pair_less<D>(sh.failed_at, at))) {
       status = sh.status;
       at = sh.failed_at;
     }
@@ -670,4 +731,9 @@ Status Index::pairs(bool within, double t, int threads, Buffer<PairHit> *out,
   return Status::success;
 }
 
-}  // namespace pw85::detail
+template Status Index<2>::pairs(bool, double, int, Buffer<PairHit<2>> *,
+                                std::size_t *) const noexcept;
+template Status Index<3>::pairs(bool, double, int, Buffer<PairHit<3>> *,
+                                std::size_t *) const noexcept;
+
+}  // namespace pw85::detail::spatial

@@ -1,0 +1,427 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/**
+ * @file pw85_2d_index.h
+ * @brief A spatial index of ellipses, in an open plane or a periodic
+ *        rectangle: overlap and near-contact queries certified as
+ *        pw85_2d_overlap() and pw85_2d_contact_function() decide them.
+ *
+ * The two-dimensional counterpart of pw85_index.h, with the same contract
+ * word for word where it is not about sizes: the library runs the same
+ * code for both (the grid, the images, the broad phase and its margins,
+ * the queries, the all-pairs search and the bulk insertion are written
+ * once, for a dimension D = 2 or 3).
+ *
+ * Conventions of pw85_2d.h (vectors `double[2]`, symmetric forms
+ * `double[3]` = (Q00, Q01, Q11), an ellipse {m : (m − c)ᵀ Q⁻¹ (m − c) ≤ 1});
+ * lengths in the caller's unit, Q in that unit squared. Arrays of n
+ * vectors or forms are contiguous, row by row: `centres[2·i + k]`,
+ * `q[3·i + k]`.
+ *
+ * Ellipses are named by ids chosen by the caller, integers from 0 to
+ * PW85_INDEX_MAX_ID (pw85_index.h); the index keeps a table indexed by id,
+ * so its memory grows with the largest id in use (12 bytes per id, besides
+ * 128 bytes per stored ellipse): use small ids, such as the positions of
+ * the ellipses in the caller's arrays.
+ *
+ * Domain. Open: any finite centre. Periodic: a rectangle of sides
+ * L = (L0, L1); an ellipse stands for all its images c + n∘L, n ∈ ℤ²
+ * (n∘L = (n0·L0, n1·L1)); centres need not be wrapped into the
+ * rectangle, but |c_k| ≤ 2²⁹·L_k. Each stored ellipse must be narrower
+ * than the rectangle along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that
+ * it cannot meet its own images; the queries consider every image of
+ * every stored ellipse (not only the nearest), so the rectangle may be as
+ * small as that rule allows, and a pair may meet through several images.
+ *
+ * Images. A result names a stored ellipse j by its id and an image shift
+ * n (two ints; 0 in an open plane); the vector from the query's centre c
+ * to that image is r = (c_j + n∘L) − c, formed exactly (an error-free
+ * sum, a double-double). The queries decide and report for the
+ * configuration as stored: μ² is correctly rounded for that exact r, and
+ * overlaps are decided by its sign of μ² − 1 (4-ulp band as
+ * pw85_2d_overlap()). Where r is a double (as when the centres and sides
+ * lie on a common grid of 2^−k, far enough from the range's ends), these
+ * are the results of pw85_2d_overlap() and pw85_2d_contact_function() on
+ * r, bit for bit. (Where the exact r does not fit two doubles, centres
+ * with bits far below ulp(L), it is carried to 2⁻¹⁰⁵ relative.) Periodic
+ * images of the query ellipse itself are not considered by the queries on
+ * a candidate.
+ *
+ * Certification. The broad phase (a grid over the axis-aligned bounding
+ * boxes of the ellipses, whose half-widths are √Q_kk exactly, then the
+ * projections of the two ellipses on the line of their centres) only
+ * discards pairs with μ² > t·(1 + 2⁻²⁰), far outside the rounding of any
+ * decision, at every length scale; every other pair is decided by the
+ * logic of pw85_2d_overlap() or by pw85_2d_contact_function() on the exact
+ * image vector. The answers are therefore those of a brute force loop over
+ * every pair and every image, deciding each exact configuration as these
+ * functions decide theirs.
+ *
+ * Memory and threads: as pw85_index.h. The index allocates from the heap,
+ * and every allocation that fails is reported as PW85_ENOMEM, never by an
+ * abort; a failed call leaves the index as it was. In a periodic
+ * rectangle it also keeps, for each octave of ellipse sizes in use, a
+ * table of 4 bytes per cell of a grid of the rectangle (cells 2 to 4 times
+ * as wide as the largest √Q_kk of those ellipses), at most 16 MiB each (a
+ * larger grid uses a hash table instead). The all-pairs queries allocate,
+ * for the time of the call, about 100 bytes per ellipse and 80 per pair
+ * reported. Calls that modify an index (insert, update, remove, destroy)
+ * need exclusive access to it; queries only read it and may run
+ * concurrently with each other from several threads. The all-pairs
+ * queries, pw85_2d_index_overlap_any_batch() and
+ * pw85_2d_index_insert_many_threads() start `threads` OpenMP threads when
+ * libpw85 was built with OpenMP (see pw85_index_openmp()), and run
+ * serially otherwise; their output (the index they leave, for the last) is
+ * the same, bit for bit, for any number of threads. No other function
+ * starts a thread.
+ *
+ * PW85_EINVAL, the status of a finite argument outside its domain, has
+ * these causes, each documented with its function: a side not > 0
+ * (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
+ * call (insert, insert_many, insert_many_threads); an id not stored
+ * (update, remove, get); in a periodic rectangle, an ellipse not narrower
+ * than the rectangle, 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k, or a centre with
+ * |c_k| > 2²⁹·L_k (insert, insert_many, update; the centre rule also for
+ * the queries on a candidate); t ≤ 0 (within, pairs_within); threads < 1
+ * (the all-pairs queries, insert_many_threads) or < 0, or a stride
+ * between 1 and its record's size − 1 (overlap_any_batch).
+ *
+ * Outputs that may not fit take a capacity (a number of results) and
+ * return the number of results in *count, as snprintf does: the first
+ * min(count, capacity) results are written, in the documented order;
+ * output arrays may be NULL when capacity is 0 (to ask for the count).
+ *
+ * @since 2.6.0
+ */
+#ifndef PW85_2D_INDEX_H
+#define PW85_2D_INDEX_H
+
+#include <stddef.h>
+
+#include "pw85_2d.h"
+#include "pw85_index.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** An index of ellipses (opaque).
+ *  @since 2.6.0 */
+typedef struct pw85_2d_index pw85_2d_index;
+
+/**
+ * @brief Create an empty index, for an open plane or a periodic rectangle.
+ *
+ * @param[in] box NULL for an open plane; else the sides L0, L1 of the
+ *            periodic rectangle (lengths, each > 0 and finite).
+ * @param[out] index the new index, to be freed with
+ *             pw85_2d_index_destroy().
+ * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EDOM if a side
+ *         is not finite; PW85_EINVAL if a side is not > 0; PW85_ENOMEM.
+ *         *index is written on success only.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_create(double const box[PW85_2D_DIM],
+                                  pw85_2d_index **index) PW85_NOEXCEPT;
+
+/**
+ * @brief Free an index and everything it holds. NULL is accepted (and
+ *        does nothing).
+ * @param[in] index the index.
+ * @since 2.6.0
+ */
+PW85_API void pw85_2d_index_destroy(pw85_2d_index *index) PW85_NOEXCEPT;
+
+/**
+ * @brief The number of ellipses in an index.
+ * @param[in] index the index.
+ * @param[out] count the number of ellipses stored.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_count(pw85_2d_index const *index,
+                                 size_t *count) PW85_NOEXCEPT;
+
+/**
+ * @brief Insert an ellipse (O(1) amortised).
+ *
+ * @param[in,out] index the index.
+ * @param[in] id its id, not in use, at most PW85_INDEX_MAX_ID.
+ * @param[in] centre its centre c.
+ * @param[in] q its quadratic form Q.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
+ *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
+ *         positive definite (the rule of pw85_2d.h); PW85_EINVAL if id is
+ *         in use or above PW85_INDEX_MAX_ID, or, in a periodic rectangle,
+ *         if 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k for some k;
+ *         PW85_ENOMEM. The index is unchanged on error.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_insert(pw85_2d_index *index, size_t id,
+                                  double const centre[PW85_2D_DIM],
+                                  double const q[PW85_2D_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Insert n ellipses, all or none.
+ *
+ * As n calls of pw85_2d_index_insert(), in order, except that on error
+ * none is inserted.
+ * @param[in,out] index the index.
+ * @param[in] n the number of ellipses (0 does nothing).
+ * @param[in] ids their ids (n values, distinct, not in use).
+ * @param[in] centres their centres (2·n doubles).
+ * @param[in] q their quadratic forms (3·n doubles).
+ * @return the statuses of pw85_2d_index_insert() (the first error met, in
+ *         the order of the arrays; for n ≥ 1024, PW85_ENOMEM only when
+ *         every ellipse is valid); the index is unchanged on error.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_insert_many(pw85_2d_index *index, size_t n,
+                                       size_t const *ids,
+                                       double const *centres,
+                                       double const *q) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_index_insert_many() on `threads` threads.
+ *
+ * The same index, status and all-or-none rule as
+ * pw85_2d_index_insert_many() (and as n calls of pw85_2d_index_insert(),
+ * in order), whatever the number of threads: the same stored order, so
+ * that every later query, and the id returned by
+ * pw85_2d_index_overlap_any(), are those of a serial insertion, bit for
+ * bit. At most n/4096 + 1 threads are started (none for threads = 1). For
+ * n ≥ 1024 the ellipses are placed in passes over the whole call, which
+ * allocate, for the time of the call, 12 bytes per ellipse and a hash
+ * table of 48 to 96 bytes per cell that the ellipses of a level may occupy
+ * (as many as they are, or, in a periodic rectangle, as the cells of the
+ * level's grid if fewer).
+ * @param[in,out] index the index.
+ * @param[in] n the number of ellipses (0 does nothing).
+ * @param[in] ids their ids (n values, distinct, not in use).
+ * @param[in] centres their centres (2·n doubles).
+ * @param[in] q their quadratic forms (3·n doubles).
+ * @param[in] threads the number of threads (≥ 1; see the file
+ *            description).
+ * @return the statuses of pw85_2d_index_insert_many(); PW85_EINVAL also
+ *         if threads < 1. PW85_ENOMEM only when every ellipse is valid.
+ *         The index is unchanged on error (but for the spare capacity of
+ *         its tables).
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_insert_many_threads(pw85_2d_index *index,
+                                               size_t n, size_t const *ids,
+                                               double const *centres,
+                                               double const *q,
+                                               int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief Move or reshape a stored ellipse (O(1) amortised).
+ * @param[in,out] index the index.
+ * @param[in] id the id of a stored ellipse.
+ * @param[in] centre its new centre.
+ * @param[in] q its new quadratic form.
+ * @return the statuses of pw85_2d_index_insert(); PW85_EINVAL if id is
+ *         not stored. The index is unchanged on error.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_update(pw85_2d_index *index, size_t id,
+                                  double const centre[PW85_2D_DIM],
+                                  double const q[PW85_2D_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Remove a stored ellipse (O(1)); its id becomes free.
+ * @param[in,out] index the index.
+ * @param[in] id the id of a stored ellipse.
+ * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EINVAL if id is
+ *         not stored (the index is then unchanged).
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_remove(pw85_2d_index *index,
+                                  size_t id) PW85_NOEXCEPT;
+
+/**
+ * @brief The centre and quadratic form of a stored ellipse, as given.
+ * @param[in] index the index.
+ * @param[in] id the id of a stored ellipse.
+ * @param[out] centre its centre (as inserted: not wrapped into the
+ *             rectangle).
+ * @param[out] q its quadratic form.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EINVAL if
+ *         id is not stored. The outputs are written on success only.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
+                               double centre[PW85_2D_DIM],
+                               double q[PW85_2D_SYM]) PW85_NOEXCEPT;
+
+/**
+ * @brief Does a candidate ellipse overlap a stored one? Stops at the first
+ *        overlap found: the inner loop of random sequential addition and
+ *        of hard-particle Monte Carlo.
+ *
+ * Every image of every stored ellipse but `exclude` is decided as
+ * pw85_2d_overlap(r, q, q_j) decides it, r the exact image vector of the
+ * file description ("Images").
+ * @param[in] index the index.
+ * @param[in] centre the candidate's centre c (in a periodic rectangle,
+ *            |c_k| ≤ 2²⁹·L_k).
+ * @param[in] q the candidate's quadratic form Q.
+ * @param[in] exclude the id of a stored ellipse to skip (the one the
+ *            candidate would replace, in a Monte Carlo move), or
+ *            PW85_INDEX_NO_ID; an id not stored skips nothing.
+ * @param[out] result −1 if some stored ellipse overlaps the candidate
+ *             (pw85_2d_overlap() gives −1), else 0 if some is tangent to
+ *             it (gives 0), else +1; the least result of pw85_2d_overlap()
+ *             over all pairs.
+ * @param[out] id the id of an ellipse with that result (which one, when
+ *             several, depends on the history of the index), or
+ *             PW85_INDEX_NO_ID for +1.
+ * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
+ *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
+ *         positive definite; PW85_EINVAL if |c_k| > 2²⁹·L_k in a periodic
+ *         rectangle; PW85_ERANGE if a pair's forms span more than the
+ *         range of a double (as pw85_2d_overlap()); PW85_ENOMEM (not
+ *         expected, as pw85_2d_overlap()). The outputs are written on
+ *         success only.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_overlap_any(pw85_2d_index const *index,
+                                       double const centre[PW85_2D_DIM],
+                                       double const q[PW85_2D_SYM],
+                                       size_t exclude, int *result,
+                                       size_t *id) PW85_NOEXCEPT;
+
+/**
+ * @brief pw85_2d_index_overlap_any() for n candidates, each against the
+ *        stored ellipses (not against each other), on threads.
+ *
+ * Candidate i is decided alone, exactly as pw85_2d_index_overlap_any()
+ * decides it: the same result, id and status, whatever the thread count.
+ * The batch conventions of pw85.h ("Batches") apply: strides, `status`,
+ * the return value, `threads` (1, 0 for OpenMP's default, or up to k; at
+ * most n/256 threads, none started for n < 512).
+ * @param[in] index the index (read only, as by every query).
+ * @param[in] n the number of candidates (0 is valid).
+ * @param[in] centres the candidates' centres.
+ * @param[in] centre_stride doubles from one centre to the next:
+ *            PW85_2D_DIM when contiguous, 0 for the same centre for every
+ *            candidate.
+ * @param[in] q the candidates' quadratic forms.
+ * @param[in] q_stride PW85_2D_SYM when contiguous, 0 for one form.
+ * @param[in] exclude NULL (PW85_INDEX_NO_ID for every candidate), or n ids
+ *            (`exclude[i]` for candidate i, as pw85_2d_index_overlap_any()).
+ * @param[out] results n ints: the result of each candidate (−1, 0, +1).
+ * @param[out] ids n ids: the id found for each candidate, or
+ *             PW85_INDEX_NO_ID.
+ * @param[out] status NULL, or n ints: the status of each candidate.
+ * @param[in] threads 1, 0 (OpenMP's default) or up to k.
+ * @return PW85_SUCCESS, or the status of the first failing candidate
+ *         (those of pw85_2d_index_overlap_any(), whose outputs are left
+ *         untouched); for the call itself (nothing computed): PW85_EFAULT
+ *         if n > 0 and index, centres, q, results or ids is NULL;
+ *         PW85_EINVAL if a stride is between 1 and its record's size − 1,
+ *         or threads < 0.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_overlap_any_batch(
+    pw85_2d_index const *index, size_t n, double const *centres,
+    size_t centre_stride, double const *q, size_t q_stride,
+    size_t const *exclude, int *results, size_t *ids, int *status,
+    int threads) PW85_NOEXCEPT;
+
+/**
+ * @brief Every stored ellipse, and image, within μ² < t of a candidate.
+ *
+ * μ² and λ of pw85_2d_contact_function(r, q, q_j), r the exact image
+ * vector of the file description ("Images"): λ is the weight of the
+ * stored ellipse's form. The results are sorted by id, then by image
+ * shift (lexicographically).
+ * @param[in] index the index.
+ * @param[in] centre the candidate's centre (as
+ *            pw85_2d_index_overlap_any()).
+ * @param[in] q the candidate's quadratic form.
+ * @param[in] t the threshold (dimensionless, > 0 and finite; 1 for
+ *            overlaps, above 1 for near neighbours).
+ * @param[in] exclude as pw85_2d_index_overlap_any().
+ * @param[in] capacity the number of results the arrays below can hold.
+ * @param[out] ids the ids (capacity values).
+ * @param[out] shifts the image shifts (2·capacity ints).
+ * @param[out] mu2_lambda μ² and λ (2·capacity doubles).
+ * @param[out] count the number of results (which may exceed capacity).
+ * @return the statuses of pw85_2d_index_overlap_any(); PW85_EFAULT also
+ *         if an array is NULL while capacity > 0; PW85_EDOM if t is not
+ *         finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE if the reach of the
+ *         query, √t times the bounding boxes, spans more than 2²⁰
+ *         rectangles along an axis. Nothing is written on error.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_within(pw85_2d_index const *index,
+                                  double const centre[PW85_2D_DIM],
+                                  double const q[PW85_2D_SYM], double t,
+                                  size_t exclude, size_t capacity,
+                                  size_t *ids, int *shifts,
+                                  double *mu2_lambda,
+                                  size_t *count) PW85_NOEXCEPT;
+
+/**
+ * @brief Every overlapping (or tangent) pair of stored ellipses, each
+ *        once, with its image shift.
+ *
+ * A pair is (i, j, n), i < j, decided by pw85_2d_overlap(r, q_i, q_j) with
+ * r = (c_j + n∘L) − c_i, exact ("Images"); it is reported when the result
+ * is −1 or 0 (the side rule of a periodic rectangle keeps an ellipse from
+ * meeting its own images). Sorted by i, then j, then n; the same output,
+ * bit for bit, for any number of threads.
+ * @param[in] index the index.
+ * @param[in] threads the number of threads (≥ 1; see the file
+ *            description).
+ * @param[in] capacity the number of pairs the arrays below can hold.
+ * @param[out] ids i and j of each pair (2·capacity values).
+ * @param[out] shifts n (2·capacity ints).
+ * @param[out] results −1 (overlap) or 0 (tangent to 4 ulps), as
+ *             pw85_2d_overlap() (capacity ints).
+ * @param[out] count the number of pairs (which may exceed capacity).
+ * @return PW85_SUCCESS; PW85_EFAULT if index or count is NULL, or an array
+ *         is NULL while capacity > 0; PW85_EINVAL if threads < 1;
+ *         PW85_ERANGE as pw85_2d_overlap() on some pair; PW85_ENOMEM.
+ *         Nothing is written on error.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_overlapping_pairs(pw85_2d_index const *index,
+                                             int threads, size_t capacity,
+                                             size_t *ids, int *shifts,
+                                             int *results,
+                                             size_t *count) PW85_NOEXCEPT;
+
+/**
+ * @brief Every pair of stored ellipses, and image, with μ² < t, each
+ *        once.
+ *
+ * A pair (i, j, n) as in pw85_2d_index_overlapping_pairs(), with μ² and λ
+ * of pw85_2d_contact_function(r, q_i, q_j). With t > 1 an ellipse may be
+ * within reach of its own image: such a pair is (i, i, n), reported once,
+ * with n lexicographically positive. Sorted by i, then j, then n; the same
+ * output, bit for bit, for any number of threads.
+ * @param[in] index the index.
+ * @param[in] t the threshold (> 0 and finite).
+ * @param[in] threads the number of threads (≥ 1).
+ * @param[in] capacity the number of pairs the arrays below can hold.
+ * @param[out] ids i and j of each pair (2·capacity values).
+ * @param[out] shifts n (2·capacity ints).
+ * @param[out] mu2_lambda μ² and λ (2·capacity doubles).
+ * @param[out] count the number of pairs (which may exceed capacity).
+ * @return the statuses of pw85_2d_index_overlapping_pairs(); PW85_EDOM if
+ *         t is not finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE also as
+ *         pw85_2d_index_within(). Nothing is written on error.
+ * @since 2.6.0
+ */
+PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
+                                        int threads, size_t capacity,
+                                        size_t *ids, int *shifts,
+                                        double *mu2_lambda,
+                                        size_t *count) PW85_NOEXCEPT;
+
+#ifdef __cplusplus
+} /* extern "C" */
+#endif
+
+#endif /* PW85_2D_INDEX_H */
