@@ -90,7 +90,7 @@
  * min(count, capacity) results are written, in the documented order;
  * output arrays may be NULL when capacity is 0 (to ask for the count).
  *
- * @since 2.6.0
+ * @since 2.5.0
  */
 #ifndef PW85_2D_INDEX_H
 #define PW85_2D_INDEX_H
@@ -105,7 +105,7 @@ extern "C" {
 #endif
 
 /** An index of ellipses (opaque).
- *  @since 2.6.0 */
+ *  @since 2.5.0 */
 typedef struct pw85_2d_index pw85_2d_index;
 
 /**
@@ -118,7 +118,7 @@ typedef struct pw85_2d_index pw85_2d_index;
  * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EDOM if a side
  *         is not finite; PW85_EINVAL if a side is not > 0; PW85_ENOMEM.
  *         *index is written on success only.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_create(double const box[PW85_2D_DIM],
                                   pw85_2d_index **index) PW85_NOEXCEPT;
@@ -127,7 +127,7 @@ PW85_API int pw85_2d_index_create(double const box[PW85_2D_DIM],
  * @brief Free an index and everything it holds. NULL is accepted (and
  *        does nothing).
  * @param[in] index the index.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API void pw85_2d_index_destroy(pw85_2d_index *index) PW85_NOEXCEPT;
 
@@ -136,7 +136,7 @@ PW85_API void pw85_2d_index_destroy(pw85_2d_index *index) PW85_NOEXCEPT;
  * @param[in] index the index.
  * @param[out] count the number of ellipses stored.
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_count(pw85_2d_index const *index,
                                  size_t *count) PW85_NOEXCEPT;
@@ -154,7 +154,7 @@ PW85_API int pw85_2d_index_count(pw85_2d_index const *index,
  *         in use or above PW85_INDEX_MAX_ID, or, in a periodic rectangle,
  *         if 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k for some k;
  *         PW85_ENOMEM. The index is unchanged on error.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_insert(pw85_2d_index *index, size_t id,
                                   double const centre[PW85_2D_DIM],
@@ -173,7 +173,7 @@ PW85_API int pw85_2d_index_insert(pw85_2d_index *index, size_t id,
  * @return the statuses of pw85_2d_index_insert() (the first error met, in
  *         the order of the arrays; for n ≥ 1024, PW85_ENOMEM only when
  *         every ellipse is valid); the index is unchanged on error.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_insert_many(pw85_2d_index *index, size_t n,
                                        size_t const *ids,
@@ -205,7 +205,7 @@ PW85_API int pw85_2d_index_insert_many(pw85_2d_index *index, size_t n,
  *         if threads < 1. PW85_ENOMEM only when every ellipse is valid.
  *         The index is unchanged on error (but for the spare capacity of
  *         its tables).
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_insert_many_threads(pw85_2d_index *index,
                                                size_t n, size_t const *ids,
@@ -221,7 +221,7 @@ PW85_API int pw85_2d_index_insert_many_threads(pw85_2d_index *index,
  * @param[in] q its new quadratic form.
  * @return the statuses of pw85_2d_index_insert(); PW85_EINVAL if id is
  *         not stored. The index is unchanged on error.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_update(pw85_2d_index *index, size_t id,
                                   double const centre[PW85_2D_DIM],
@@ -233,7 +233,7 @@ PW85_API int pw85_2d_index_update(pw85_2d_index *index, size_t id,
  * @param[in] id the id of a stored ellipse.
  * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EINVAL if id is
  *         not stored (the index is then unchanged).
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_remove(pw85_2d_index *index,
                                   size_t id) PW85_NOEXCEPT;
@@ -247,7 +247,7 @@ PW85_API int pw85_2d_index_remove(pw85_2d_index *index,
  * @param[out] q its quadratic form.
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EINVAL if
  *         id is not stored. The outputs are written on success only.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
                                double centre[PW85_2D_DIM],
@@ -282,7 +282,7 @@ PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
  *         range of a double (as pw85_2d_overlap()); PW85_ENOMEM (not
  *         expected, as pw85_2d_overlap()). The outputs are written on
  *         success only.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_overlap_any(pw85_2d_index const *index,
                                        double const centre[PW85_2D_DIM],
@@ -320,7 +320,7 @@ PW85_API int pw85_2d_index_overlap_any(pw85_2d_index const *index,
  *         if n > 0 and index, centres, q, results or ids is NULL;
  *         PW85_EINVAL if a stride is between 1 and its record's size − 1,
  *         or threads < 0.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_overlap_any_batch(
     pw85_2d_index const *index, size_t n, double const *centres,
@@ -352,7 +352,7 @@ PW85_API int pw85_2d_index_overlap_any_batch(
  *         finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE if the reach of the
  *         query, √t times the bounding boxes, spans more than 2²⁰
  *         rectangles along an axis. Nothing is written on error.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_within(pw85_2d_index const *index,
                                   double const centre[PW85_2D_DIM],
@@ -384,7 +384,7 @@ PW85_API int pw85_2d_index_within(pw85_2d_index const *index,
  *         is NULL while capacity > 0; PW85_EINVAL if threads < 1;
  *         PW85_ERANGE as pw85_2d_overlap() on some pair; PW85_ENOMEM.
  *         Nothing is written on error.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_overlapping_pairs(pw85_2d_index const *index,
                                              int threads, size_t capacity,
@@ -412,7 +412,7 @@ PW85_API int pw85_2d_index_overlapping_pairs(pw85_2d_index const *index,
  * @return the statuses of pw85_2d_index_overlapping_pairs(); PW85_EDOM if
  *         t is not finite; PW85_EINVAL if t ≤ 0; PW85_ERANGE also as
  *         pw85_2d_index_within(). Nothing is written on error.
- * @since 2.6.0
+ * @since 2.5.0
  */
 PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
                                         int threads, size_t capacity,

@@ -15,7 +15,7 @@
  * Conventions, memory, threads and the rule on failed calls: those of
  * pw85_index.hpp.
  *
- * @since 2.6.0
+ * @since 2.5.0
  */
 #ifndef PW85_2D_INDEX_HPP
 #define PW85_2D_INDEX_HPP
@@ -48,7 +48,7 @@ namespace d2 {
  * index (default-constructed, moved from, or whose creation failed): its
  * members return PW85_EFAULT and change nothing. Results: Neighbour,
  * OverlappingPair and Pair, with image shifts of 2 ints.
- * @since 2.6.0
+ * @since 2.5.0
  */
 class Index
     : public index_detail::BasicIndex<Index, index_detail::Api2> {
