@@ -11,8 +11,8 @@ Reads the Sphinx inventory HTML_DIR/objects.inv and requires:
   function of the reference, whose Doxygen entry has a description, and
   whose anchor is in the page the inventory names;
 - every macro defined by the C headers (include guards aside) as a C macro;
-- every function and constant of the C++ header (namespace pw85) as a C++
-  function or variable;
+- every function and constant of the C++ header (namespace pw85, but for
+  namespaces named *detail, implementation) as a C++ function or variable;
 - every public class that a C++ header declares, and each of its public
   members (functions, fields, nested classes), as a C++ entry of the
   reference with a description in the header;
@@ -139,13 +139,18 @@ def cpp_names(path):
     scopes = []  # a namespace name, or None for any other brace
     for m in _CPP_TOKEN.finditer(text):
         names = [s for s in scopes if s is not None]
+        # A namespace named *detail (pw85::index_detail) holds the headers'
+        # implementation, not API: nothing in it is required.
+        hidden = any(n.endswith("detail") for n in names)
         if m.group("ns"):
             scopes.append(m.group("name"))
         elif m.group("fn"):
-            functions.add("::".join(names + [m.group("fname")]))
+            if not hidden:
+                functions.add("::".join(names + [m.group("fname")]))
             # the body or the initialiser list follows: a brace of its own
         elif m.group("const"):
-            constants.add("::".join(names + [m.group("cname")]))
+            if not hidden:
+                constants.add("::".join(names + [m.group("cname")]))
             if m.group(0).endswith("{"):
                 scopes.append(None)
         elif m.group("open"):
