@@ -122,7 +122,12 @@ PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
     double slope = plain_step.domega;
     double const secant = (omega - prev_omega) / (lambda - prev_lambda);
     if (secant > 0.0 && secant < HUGE_VAL) slope = secant;
-    if (std::signbit(omega) != std::signbit(prev_omega)) radius = polish_max_step;
+    // The signs through copysign, not std::signbit: unoptimised, libstdc++'s
+    // std::signbit(double) is emitted as a weak symbol of default
+    // visibility, which the static archive must not export (check-archive).
+    if ((std::copysign(1.0, omega) < 0.0) !=
+        (std::copysign(1.0, prev_omega) < 0.0))
+      radius = polish_max_step;
     prev_lambda = lambda;
     prev_omega = omega;
     double const step = omega / slope;
