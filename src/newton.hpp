@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "evaluate.hpp"
 #include "ldl.hpp"
@@ -103,9 +104,11 @@ struct NoVisit {
 
 // At most max_steps safeguarded Newton steps on ω from λ (eqs. (5.6)–(5.8)).
 // visit(pt, h) is called at every point evaluated, with h the relative
-// size of the step that led there (+∞ at the first): true stops the
-// iteration there (NewtonStop::visitor; the overlap test's filters, which
-// decide on the way). Without a visitor, the search's Newton.
+// size of the step that led there (+∞ at the first), once its terms are
+// (evaluate_terms()), before ω: true stops the iteration there
+// (NewtonStop::visitor; the overlap test's filters, which decide on the
+// way, and need no ω at the point where they decide). Without a visitor,
+// the search's Newton.
 template <bool Fast, int D, class Visit = NoVisit>
 NewtonResult<D> newton_on_omega(Problem<D> const &p, double lambda,
                                 int max_steps,
@@ -127,15 +130,29 @@ NewtonResult<D> newton_on_omega(Problem<D> const &p, double lambda,
     return step_from_end(p, from_zero);
   };
   double h = HUGE_VAL;  // the relative size of the step to λ
+  // A visitor sees each point before its ω is computed; without one, the
+  // point is evaluated at once (evaluate_plain(): the same operations, and
+  // 1.1% fewer instructions in the contact function than in two parts;
+  // gcc 12, callgrind).
+  constexpr bool visits = !std::is_same_v<std::decay_t<Visit>, NoVisit>;
   for (int k = 0; k < max_steps; ++k) {
     PlainPoint<D> pt;
     NewtonStep step;
-    if (!evaluate_plain<Fast>(lambda, p, &pt)) {
+    if constexpr (visits) {
+      if (!evaluate_terms<Fast>(lambda, p, &pt)) {
+        out.stop = NewtonStop::not_evaluable;
+        return out;
+      }
+      if (visit(pt, h)) {
+        out.stop = NewtonStop::visitor;
+        return out;
+      }
+      if (!evaluate_omega(&pt)) {
+        out.stop = NewtonStop::not_evaluable;
+        return out;
+      }
+    } else if (!evaluate_plain<Fast>(lambda, p, &pt)) {
       out.stop = NewtonStop::not_evaluable;
-      return out;
-    }
-    if (visit(pt, h)) {
-      out.stop = NewtonStop::visitor;
       return out;
     }
     if (!newton_step(pt, &step)) {

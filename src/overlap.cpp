@@ -233,10 +233,11 @@ Status decide(Filtering<D> const &s, Decision *d) noexcept {
     for (int k = 0; k < overlap_extra_steps; ++k) {
       PlainPoint<D> pt;
       NewtonStep step;
-      if (!evaluate_plain<Fast>(lambda, p, &pt)) break;
+      if (!evaluate_terms<Fast>(lambda, p, &pt)) break;
       *d = point_filters(pt, h, s);
       if (*d != Decision::undecided) return Status::success;
-      if (!newton_step(pt, &step) || !(step.next > 0.0 && step.next < 1.0) ||
+      if (!evaluate_omega(&pt) || !newton_step(pt, &step) ||
+          !(step.next > 0.0 && step.next < 1.0) ||
           step.next == lambda)
         break;
       h = std::fabs(step.next - lambda) / std::min(lambda, 1.0 - lambda);
