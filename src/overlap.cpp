@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <utility>
 
 #include "compensated.hpp"
 #include "compiler.hpp"
@@ -34,7 +35,6 @@ struct Filtering {
   Problem<D> const &p;
   double one;
   double cond1, cond2;  // κ̄(Q1), κ̄(Q2)
-  double a1, a2;        // rᵀQ1⁻¹r, rᵀQ2⁻¹r
   double const *r_lo;   // nullptr, or the low part of p.r (overlap_dd())
 };
 
@@ -53,7 +53,7 @@ Decision sphere_filter(Problem<D> const &p, double one) noexcept {
 template <int D>
 Decision centre_filter(Filtering<D> const &s) noexcept {
   double const m_a = plain_form_margin * std::max(s.cond1, s.cond2);
-  if (m_a < margin_limit && std::min(s.a1, s.a2) * (1.0 + m_a) < s.one)
+  if (m_a < margin_limit && std::min(s.p.a1, s.p.a2) * (1.0 + m_a) < s.one)
     return Decision::overlap;
   return Decision::undecided;
 }
@@ -233,10 +233,11 @@ Status decide(Filtering<D> const &s, Decision *d) noexcept {
     for (int k = 0; k < overlap_extra_steps; ++k) {
       PlainPoint<D> pt;
       NewtonStep step;
-      if (!evaluate_plain<Fast>(lambda, p, &pt)) break;
+      if (!evaluate_terms<Fast>(lambda, p, &pt)) break;
       *d = point_filters(pt, h, s);
       if (*d != Decision::undecided) return Status::success;
-      if (!newton_step(pt, &step) || !(step.next > 0.0 && step.next < 1.0) ||
+      if (!evaluate_omega(&pt) || !newton_step(pt, &step) ||
+          !(step.next > 0.0 && step.next < 1.0) ||
           step.next == lambda)
         break;
       h = std::fabs(step.next - lambda) / std::min(lambda, 1.0 - lambda);
@@ -262,13 +263,11 @@ PW85_INLINE Status decide_overlap(double const *r, double const *r_lo,
   Decision d = sphere_filter(p, one);
   if (d == Decision::undecided) {
     quads(&p);
-    Filtering<D> const s{p,
-                         one,
-                         trace<D>(p.q1) * p.tinv1,  // κ̄(Q1) (ldl_cond_bound())
-                         trace<D>(p.q2) * p.tinv2,
-                      p.a1,
-                      p.a2,
-                      nullptr};
+    Filtering<D> s{p,
+                   one,
+                   trace<D>(p.q1) * p.tinv1,  // κ̄(Q1) (ldl_cond_bound())
+                   trace<D>(p.q2) * p.tinv2,
+                   nullptr};
     d = centre_filter(s);
     if (d == Decision::undecided) {
       // The remaining stages in the problem's canonical orientation, so
@@ -280,14 +279,9 @@ PW85_INLINE Status decide_overlap(double const *r, double const *r_lo,
       if (r_lo != nullptr)
         for (int k = 0; k < D; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
       // (κ̄(Qᵢ) follow the forms: orient() may have exchanged them.)
-      Filtering<D> const t{p,
-                        one,
-                        p.swapped ? s.cond2 : s.cond1,
-                        p.swapped ? s.cond1 : s.cond2,
-                        p.a1,
-                        p.a2,
-                        r_lo != nullptr ? lo : nullptr};
-      status = p.moderate ? decide<true, D>(t, &d) : decide<false, D>(t, &d);
+      if (p.swapped) std::swap(s.cond1, s.cond2);
+      if (r_lo != nullptr) s.r_lo = lo;
+      status = p.moderate ? decide<true, D>(s, &d) : decide<false, D>(s, &d);
       if (status != Status::success) return status;
     }
   }
