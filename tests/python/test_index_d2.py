@@ -174,6 +174,11 @@ def test_errors():
         with pytest.raises(pypw85.Error) as e:  # wider than the rectangle
             index.insert(5, [1.0, 1.0], [4.0, 0.0, 1.0])
         assert e.value.status == pypw85.EINVAL and "L_0" in str(e.value)
+        with pytest.raises(pypw85.Error) as e:  # taller than the rectangle
+            index.insert(5, [1.0, 1.0], [1.0, 0.0, 4.0])
+        assert e.value.status == pypw85.EINVAL
+        assert "2·√Q_11·(1 + 2⁻²⁰) = 4.0000038146972656 ≥ L_1 = 4" \
+            in str(e.value)
         with pytest.raises(pypw85.Error) as e:
             index.insert(5, [np.nan, 1.0], circle)
         assert e.value.status == pypw85.EDOM
