@@ -542,16 +542,16 @@ class Index(_Index):
     """A spatial index of ellipses (``pw85_2d_index``), in an open plane or
     a periodic rectangle: `pypw85.index.Index` for ellipses.
 
+    Ids, containers, errors, threads and the order of the results are
+    those of `pypw85.index.Index`; centres are of shape ``(n, 2)``, forms
+    ``(n, 3)`` (Q00, Q01, Q11), image shifts ``(m, 2)`` (the image of
+    ellipse j is at ``c_j + shift * box``). There is no ``energy``.
+
     Parameters
     ----------
     box : array_like of 2 floats, optional
         The sides of a periodic rectangle (each > 0 and finite); None
         (default) for an open plane.
-
-    Ids, containers, errors, threads and the order of the results are
-    those of `pypw85.index.Index`; centres are of shape ``(n, 2)``, forms
-    ``(n, 3)`` (Q00, Q01, Q11), image shifts ``(m, 2)`` (the image of
-    ellipse j is at ``c_j + shift * box``). There is no ``energy``.
 
     Raises
     ------

@@ -599,6 +599,7 @@ class _Index:
 
 class Index(_Index):
     """A spatial index of ellipsoids (``pw85_index``).
+
     Parameters
     ----------
     box : array_like of 3 floats, optional
