@@ -145,7 +145,10 @@ def cpp_names(path):
             functions.add("::".join(names + [m.group("fname")]))
             # the body or the initialiser list follows: a brace of its own
         elif m.group("const"):
-            constants.add("::".join(names + [m.group("cname")]))
+            # In a class or a function (a brace that is not a namespace's)
+            # it is a member or a local: cpp_classes checks the members.
+            if None not in scopes:
+                constants.add("::".join(names + [m.group("cname")]))
             if m.group(0).endswith("{"):
                 scopes.append(None)
         elif m.group("open"):
