@@ -915,7 +915,8 @@ class IndexBase {
     const qd = doubles(q, this._d.sym, 'q');
     const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
     const found = [0];
-    const code = this._d.c.overlapAny(this._handle(), cd, qd, ex, outInt, found);
+    const code = this._d.c.overlapAny(this._handle(), cd, qd, ex, outInt,
+      found);
     if (code !== status.PW85_SUCCESS) {
       throw this._candidateError(code, this._call('overlap_any'), cd, qd);
     }
@@ -944,7 +945,8 @@ class IndexBase {
     const found = new BigUint64Array(n);
     const args = [this._handle(), n, ins[0].data, ins[0].stride,
       ins[1].data, ins[1].stride, ex, results, found];
-    const code = this._d.c.overlapAnyBatch(...args, null, threadCount(threads));
+    const code = this._d.c.overlapAnyBatch(...args, null,
+      threadCount(threads));
     if (code !== status.PW85_SUCCESS) {
       const st = new Int32Array(n);
       this._d.c.overlapAnyBatch(...args, st, threads);
@@ -1045,7 +1047,8 @@ class IndexBase {
     }
     const th = this._threads(threads, this._call('pairs_within'));
     const r = this._collect((cap, ids, shifts, ml, count) =>
-      this._d.c.pairsWithin(this._handle(), t, th, cap, ids, shifts, ml, count),
+      this._d.c.pairsWithin(this._handle(), t, th, cap, ids, shifts, ml,
+        count),
     this._call('pairs_within'), 2, true, 8 * this.size + 16);
     return Array.from({ length: r.m }, (_, k) => ({
       i: Number(r.ids[2 * k]),
