@@ -83,9 +83,10 @@ export interface OverlappingPair { i: number; j: number; shift: number[];
 export interface Pair { i: number; j: number; shift: number[]; mu2: number;
   lambda: number }
 
-/** A spatial index of ellipsoids (pw85_index.h); close() frees it. */
-export class Index implements Iterable<number> {
-  constructor(box?: Vector | null);
+/** The index of either dimension: Index (ellipsoids: centres of 3
+ *  numbers, forms of 6, shifts of 3) and d2.Index (ellipses: 2, 3, 2). */
+declare class IndexBase implements Iterable<number> {
+  constructor(box?: ArrayLike<number> | null);
   readonly box: Float64Array | null;
   readonly size: number;
   close(): void;
@@ -107,6 +108,18 @@ export class Index implements Iterable<number> {
   overlappingPairs(options?: Threads): OverlappingPair[];
   pairsWithin(t: number, options?: Threads): Pair[];
   toString(): string;
+}
+
+/** A spatial index of ellipsoids (pw85_index.h); close() frees it. */
+export class Index extends IndexBase {
+  constructor(box?: Vector | null);
+}
+
+/** A spatial index of ellipses (pw85_2d_index.h), in an open plane or a
+ *  periodic rectangle: Index for vectors of 2 numbers and forms
+ *  [Q00, Q01, Q11]; close() frees it. */
+declare class Index2d extends IndexBase {
+  constructor(box?: ArrayLike<number> | null);
 }
 
 /** The ellipses of pw85_2d.h (pw85.d2): vectors of 2 numbers, forms of 3
@@ -143,5 +156,7 @@ export interface D2 {
     options?: Threads): Float64Array;
   principalAxesBatch(q: ArrayLike<number>, options?: Threads):
     { a: Float64Array; theta: Float64Array };
+  /** The index of ellipses (pw85_2d_index.h). */
+  readonly Index: typeof Index2d;
 }
 export const d2: D2;

@@ -76,7 +76,39 @@ function load() {
 }
 const lib = load();
 
-koffi.opaque('pw85_index');
+// The calls of pw85_index.h (prefix pw85_index) or of pw85_2d_index.h
+// (pw85_2d_index): the same prototypes, on their own opaque handle type.
+function indexCalls(prefix) {
+  const h = koffi.opaque(prefix);
+  const fn = (ret, name, args) => lib.func(`${prefix}_${name}`, ret, args);
+  const ptr = koffi.pointer(h);
+  const dbl = 'const double *';
+  const outSize = koffi.out(koffi.pointer('size_t'));
+  const outInts = koffi.out(koffi.pointer('int'));
+  const outDbls = koffi.out(koffi.pointer('double'));
+  const outIds = koffi.out(koffi.pointer('size_t'));
+  return {
+    create: fn('int', 'create', [dbl, koffi.out(koffi.pointer(ptr))]),
+    destroy: fn('void', 'destroy', [ptr]),
+    count: fn('int', 'count', [ptr, outSize]),
+    insertMany: fn('int', 'insert_many', [ptr, 'size_t', 'const size_t *',
+      dbl, dbl]),
+    update: fn('int', 'update', [ptr, 'size_t', dbl, dbl]),
+    remove: fn('int', 'remove', [ptr, 'size_t']),
+    get: fn('int', 'get', [ptr, 'size_t', outDbls, outDbls]),
+    overlapAny: fn('int', 'overlap_any', [ptr, dbl, dbl, 'size_t', outInts,
+      outSize]),
+    overlapAnyBatch: fn('int', 'overlap_any_batch', [ptr, 'size_t', dbl,
+      'size_t', dbl, 'size_t', 'const size_t *', outInts, outIds, outInts,
+      'int']),
+    within: fn('int', 'within', [ptr, dbl, dbl, 'double', 'size_t',
+      'size_t', outIds, outInts, outDbls, outSize]),
+    overlappingPairs: fn('int', 'overlapping_pairs', [ptr, 'int', 'size_t',
+      outIds, outInts, outInts, outSize]),
+    pairsWithin: fn('int', 'pairs_within', [ptr, 'double', 'int', 'size_t',
+      outIds, outInts, outDbls, outSize]),
+  };
+}
 const BATCH = 'size_t n, const double *r12, size_t r12_stride, ' +
   'const double *q1, size_t q1_stride, const double *q2, size_t q2_stride';
 const c = {
@@ -114,39 +146,6 @@ const c = {
   contactDerivativesBatch: lib.func('int pw85_contact_derivatives_batch(' +
     `${BATCH}, _Out_ double *geometry, _Out_ double *d, _Out_ int *status, ` +
     'int threads)'),
-  indexCreate: lib.func('int pw85_index_create(const double *box, ' +
-    '_Out_ pw85_index **index)'),
-  indexDestroy: lib.func('void pw85_index_destroy(pw85_index *index)'),
-  indexCount: lib.func('int pw85_index_count(const pw85_index *index, ' +
-    '_Out_ size_t *count)'),
-  indexInsertMany: lib.func('int pw85_index_insert_many(pw85_index *index, ' +
-    'size_t n, const size_t *ids, const double *centres, const double *q)'),
-  indexUpdate: lib.func('int pw85_index_update(pw85_index *index, ' +
-    'size_t id, const double *centre, const double *q)'),
-  indexRemove: lib.func('int pw85_index_remove(pw85_index *index, ' +
-    'size_t id)'),
-  indexGet: lib.func('int pw85_index_get(const pw85_index *index, ' +
-    'size_t id, _Out_ double *centre, _Out_ double *q)'),
-  indexOverlapAny: lib.func('int pw85_index_overlap_any(' +
-    'const pw85_index *index, const double *centre, const double *q, ' +
-    'size_t exclude, _Out_ int *result, _Out_ size_t *id)'),
-  indexOverlapAnyBatch: lib.func('int pw85_index_overlap_any_batch(' +
-    'const pw85_index *index, size_t n, const double *centres, ' +
-    'size_t centre_stride, const double *q, size_t q_stride, ' +
-    'const size_t *exclude, _Out_ int *results, _Out_ size_t *ids, ' +
-    '_Out_ int *status, int threads)'),
-  indexWithin: lib.func('int pw85_index_within(const pw85_index *index, ' +
-    'const double *centre, const double *q, double t, size_t exclude, ' +
-    'size_t capacity, _Out_ size_t *ids, _Out_ int *shifts, ' +
-    '_Out_ double *mu2_lambda, _Out_ size_t *count)'),
-  indexOverlappingPairs: lib.func('int pw85_index_overlapping_pairs(' +
-    'const pw85_index *index, int threads, size_t capacity, ' +
-    '_Out_ size_t *ids, _Out_ int *shifts, _Out_ int *results, ' +
-    '_Out_ size_t *count)'),
-  indexPairsWithin: lib.func('int pw85_index_pairs_within(' +
-    'const pw85_index *index, double t, int threads, size_t capacity, ' +
-    '_Out_ size_t *ids, _Out_ int *shifts, _Out_ double *mu2_lambda, ' +
-    '_Out_ size_t *count)'),
 };
 
 const loaded = c.version();
@@ -641,7 +640,7 @@ function principalAxesBatch2d(q, { threads = 1 } = {}) {
 
 /** The ellipses of pw85_2d.h, with the conventions of the functions
  *  above. */
-const d2 = Object.freeze({
+const d2 = {
   DIM: DIM_2D,
   SYM: SYM_2D,
   /** Offsets into the output of d2.contactGeometry (PW85_2D_GEOM_*). */
@@ -664,10 +663,26 @@ const d2 = Object.freeze({
   contactDerivativesBatch: contactDerivativesBatch2d,
   ellipseBatch,
   principalAxesBatch: principalAxesBatch2d,
-});
+};
 
 // ---------------------------------------------------------------------------
 // The index (pw85_index.h).
+
+const INDEX_3D = Object.freeze({
+  dim: DIM, sym: SYM, diagonal: [0, 3, 5], shape: 'ellipsoid',
+  domain: 'box', name: 'pw85.Index', prefix: 'pw85_index', isPosDef,
+  c: indexCalls('pw85_index'),
+});
+// The exact rule of pw85_2d.h, asked of the library: pw85_2d_overlap
+// answers PW85_ENOTPOSDEF for a finite form that breaks it.
+const r12Zero = new Float64Array(DIM_2D);
+const INDEX_2D = Object.freeze({
+  dim: DIM_2D, sym: SYM_2D, diagonal: [0, 2], shape: 'ellipse',
+  domain: 'rectangle', name: 'pw85.d2.Index', prefix: 'pw85_2d_index',
+  isPosDef: (q) => c2.overlap(r12Zero, q, q, outInt) !==
+    status.PW85_ENOTPOSDEF,
+  c: indexCalls('pw85_2d_index'),
+});
 
 const SIDE_MARGIN = 1 + 2 ** -20;
 const CENTRE_REACH = 2 ** 29;
@@ -681,27 +696,32 @@ function idOf(x, name) {
 }
 
 /**
- * A spatial index of ellipsoids in an open domain or a periodic box
- * (pw85_index.h): its queries give the answers of overlap() and
- * contactFunction() on every pair and periodic image. Holds library
- * memory: call close() when done. Ids are integers from 0 to MAX_ID.
+ * The index of either dimension: Index (ellipsoids) and d2.Index
+ * (ellipses) set `dimension`, the calls and sizes of their C header.
  */
-class Index {
-  /** @param {ArrayLike<number>|null} box the sides of a periodic box, or
-   *  null for an open domain. */
+class IndexBase {
+  /** @param {ArrayLike<number>|null} box the sides of a periodic box (or
+   *  rectangle), or null for an open domain. */
   constructor(box = null) {
-    const b = box == null ? null : doubles(box, DIM, 'box');
+    const d = this.constructor.dimension;
+    /** The sizes, calls and words of this dimension (INDEX_3D, INDEX_2D). */
+    this._d = d;
+    const b = box == null ? null : doubles(box, d.dim, 'box');
     const h = [null];
-    const code = c.indexCreate(b, h);
-    check(code, 'pw85_index_create', () => {
+    const code = this._d.c.create(b, h);
+    check(code, this._call('create'), () => {
       const k = b.findIndex((x) => !(Number.isFinite(x) && x > 0));
-      return `box side L_${k} = ${fmt(b[k])} ` +
+      return `${d.domain} side L_${k} = ${fmt(b[k])} ` +
         `${Number.isFinite(b[k]) ? 'is not > 0' : 'is not finite'}`;
     });
     this._h = h[0];
     this._ids = new Set();
     /** The sides of the box (a copy), or null. */
     this.box = b == null ? null : Float64Array.from(b);
+  }
+
+  _call(name) {
+    return `${this._d.prefix}_${name}`;
   }
 
   _handle() {
@@ -712,7 +732,7 @@ class Index {
   /** Free the library's memory; the index is unusable afterwards. */
   close() {
     if (this._h != null) {
-      c.indexDestroy(this._h);
+      this._d.c.destroy(this._h);
       this._h = null;
     }
   }
@@ -720,7 +740,7 @@ class Index {
   /** The number of ellipsoids stored. */
   get size() {
     const n = [0];
-    check(c.indexCount(this._handle(), n), 'pw85_index_count');
+    check(this._d.c.count(this._handle(), n), this._call('count'));
     return Number(n[0]);
   }
 
@@ -742,15 +762,17 @@ class Index {
 
   _placement(centre, q) {
     if (this.box == null) return undefined;
-    for (let k = 0; k < DIM; ++k) {
-      const d = q[[0, 3, 5][k]];
-      const width = d > 0 ? 2 * Math.sqrt(d) * SIDE_MARGIN : 0;
+    const { dim, diagonal, shape, domain } = this._d;
+    for (let k = 0; k < dim; ++k) {
+      const qkk = q[diagonal[k]];
+      const width = qkk > 0 ? 2 * Math.sqrt(qkk) * SIDE_MARGIN : 0;
       if (!(width < this.box[k])) {
         return `2·√Q_${k}${k}·(1 + 2⁻²⁰) = ${fmt(width)} ≥ L_${k} = ` +
-          `${fmt(this.box[k])} (an ellipsoid must be narrower than the box)`;
+          `${fmt(this.box[k])} (an ${shape} must be narrower than the ` +
+          `${domain})`;
       }
     }
-    for (let k = 0; k < DIM; ++k) {
+    for (let k = 0; k < dim; ++k) {
       if (!(Math.abs(centre[k]) <= CENTRE_REACH * this.box[k])) {
         return `|c_${k}| = ${fmt(Math.abs(centre[k]))} > 2²⁹·L_${k} = ` +
           `${fmt(CENTRE_REACH * this.box[k])} (a centre must lie within 2²⁹ ` +
@@ -779,7 +801,7 @@ class Index {
       }
     }
     if (causes.length === 0) {
-      if (!isPosDef(q)) {
+      if (!this._d.isPosDef(q)) {
         causes.push([status.PW85_ENOTPOSDEF,
           `q = ${list(q)} is not positive definite`]);
       }
@@ -801,8 +823,9 @@ class Index {
     const idList = one ? [ids] : Array.from(ids);
     const n = idList.length;
     idList.forEach((id, k) => idOf(id, one ? 'id' : `ids[${k}]`));
-    const cs = records([['centres', centres, DIM]]);
-    const qs = records([['q', q, SYM]]);
+    const { dim, sym, shape } = this._d;
+    const cs = records([['centres', centres, dim]]);
+    const qs = records([['q', q, sym]]);
     const expand = ({ data, stride }, size) => {
       if (stride === 0 && n !== 1) {
         const out = new Float64Array(size * n);
@@ -815,19 +838,19 @@ class Index {
       }
       return data;
     };
-    const cd = expand(cs[0], DIM);
-    const qd = expand(qs[0], SYM);
+    const cd = expand(cs[0], dim);
+    const qd = expand(qs[0], sym);
     const idArray = BigUint64Array.from(idList, BigInt);
-    const code = c.indexInsertMany(this._handle(), n, idArray, cd, qd);
+    const code = this._d.c.insertMany(this._handle(), n, idArray, cd, qd);
     if (code !== status.PW85_SUCCESS) {
       const seen = new Set();
       for (let k = 0; k < n; ++k) {
-        const ck = cd.subarray(DIM * k, DIM * k + DIM);
-        const qk = qd.subarray(SYM * k, SYM * k + SYM);
+        const ck = cd.subarray(dim * k, dim * k + dim);
+        const qk = qd.subarray(sym * k, sym * k + sym);
         const cause = this._cause(code, ck, qk, idList[k], true, seen);
         if (cause) {
-          const e = new Pw85Error(code, 'pw85_index_insert',
-            `ellipsoid ${idList[k]}${one ? '' : ` (item ${k} of ${n})`}: ` +
+          const e = new Pw85Error(code, this._call('insert'),
+            `${shape} ${idList[k]}${one ? '' : ` (item ${k} of ${n})`}: ` +
             cause);
           e.id = idList[k];
           e.item = one ? undefined : k;
@@ -835,7 +858,7 @@ class Index {
         }
         seen.add(idList[k]);
       }
-      throw new Pw85Error(code, 'pw85_index_insert');
+      throw new Pw85Error(code, this._call('insert'));
     }
     for (const id of idList) this._ids.add(id);
   }
@@ -843,12 +866,12 @@ class Index {
   /** Move or reshape a stored ellipsoid. */
   update(id, centre, q) {
     idOf(id, 'id');
-    const cd = doubles(centre, DIM, 'centre');
-    const qd = doubles(q, SYM, 'q');
-    const code = c.indexUpdate(this._handle(), id, cd, qd);
+    const cd = doubles(centre, this._d.dim, 'centre');
+    const qd = doubles(q, this._d.sym, 'q');
+    const code = this._d.c.update(this._handle(), id, cd, qd);
     if (code !== status.PW85_SUCCESS) {
-      const e = new Pw85Error(code, 'pw85_index_update',
-        `ellipsoid ${id}: ${this._cause(code, cd, qd, id, false) ||
+      const e = new Pw85Error(code, this._call('update'),
+        `${this._d.shape} ${id}: ${this._cause(code, cd, qd, id, false) ||
           `centre = ${list(cd)}, q = ${list(qd)}`}`);
       e.id = id;
       throw e;
@@ -858,7 +881,7 @@ class Index {
   /** Remove a stored ellipsoid. */
   remove(id) {
     idOf(id, 'id');
-    check(c.indexRemove(this._handle(), id), 'pw85_index_remove',
+    check(this._d.c.remove(this._handle(), id), this._call('remove'),
       `id ${id} is not stored`);
     this._ids.delete(id);
   }
@@ -866,16 +889,16 @@ class Index {
   /** {centre, q} of a stored ellipsoid, as inserted. */
   get(id) {
     idOf(id, 'id');
-    const centre = new Float64Array(DIM);
-    const q = new Float64Array(SYM);
-    check(c.indexGet(this._handle(), id, centre, q), 'pw85_index_get',
+    const centre = new Float64Array(this._d.dim);
+    const q = new Float64Array(this._d.sym);
+    check(this._d.c.get(this._handle(), id, centre, q), this._call('get'),
       `id ${id} is not stored`);
     return { centre, q };
   }
 
   _candidateError(code, call, centre, q) {
     const detail = code === status.PW85_EINVAL
-      ? (this._placement(centre, Float64Array.of(0, 0, 0, 0, 0, 0)) ||
+      ? (this._placement(centre, new Float64Array(this._d.sym)) ||
          `centre = ${list(centre)}`)
       : (this._cause(code, centre, q) ||
          `centre = ${list(centre)}, q = ${list(q)}`);
@@ -888,13 +911,14 @@ class Index {
    *          (tangent), +1 (none); id of one with that result, or null.
    */
   overlapAny(centre, q, exclude = null) {
-    const cd = doubles(centre, DIM, 'centre');
-    const qd = doubles(q, SYM, 'q');
+    const cd = doubles(centre, this._d.dim, 'centre');
+    const qd = doubles(q, this._d.sym, 'q');
     const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
     const found = [0];
-    const code = c.indexOverlapAny(this._handle(), cd, qd, ex, outInt, found);
+    const code = this._d.c.overlapAny(this._handle(), cd, qd, ex, outInt,
+      found);
     if (code !== status.PW85_SUCCESS) {
-      throw this._candidateError(code, 'pw85_index_overlap_any', cd, qd);
+      throw this._candidateError(code, this._call('overlap_any'), cd, qd);
     }
     const id = BigInt(found[0]);
     return { result: outInt[0], id: id === NO_ID ? null : Number(id) };
@@ -906,7 +930,8 @@ class Index {
    * @returns {{results: Int32Array, ids: Float64Array}} ids −1 for none.
    */
   overlapAnyBatch(centres, q, { exclude = null, threads = 1 } = {}) {
-    const ins = records([['centres', centres, DIM], ['q', q, SYM]]);
+    const ins = records([['centres', centres, this._d.dim],
+      ['q', q, this._d.sym]]);
     const n = ins[2];
     let ex = null;
     if (exclude != null) {
@@ -920,15 +945,16 @@ class Index {
     const found = new BigUint64Array(n);
     const args = [this._handle(), n, ins[0].data, ins[0].stride,
       ins[1].data, ins[1].stride, ex, results, found];
-    const code = c.indexOverlapAnyBatch(...args, null, threadCount(threads));
+    const code = this._d.c.overlapAnyBatch(...args, null,
+      threadCount(threads));
     if (code !== status.PW85_SUCCESS) {
       const st = new Int32Array(n);
-      c.indexOverlapAnyBatch(...args, st, threads);
+      this._d.c.overlapAnyBatch(...args, st, threads);
       const i = st.findIndex((s) => s !== 0);
       const at = (x) => x.data.subarray(i * x.stride, i * x.stride + x.size);
-      const inner = this._candidateError(code, 'pw85_index_overlap_any_batch',
+      const inner = this._candidateError(code, this._call('overlap_any_batch'),
         at(ins[0]), at(ins[1]));
-      const e = new Pw85Error(code, 'pw85_index_overlap_any_batch',
+      const e = new Pw85Error(code, this._call('overlap_any_batch'),
         `candidate ${i} of ${n}: ${inner.detail}`);
       e.index = i;
       e.statuses = st;
@@ -944,7 +970,7 @@ class Index {
     let cap = guess;
     for (;;) {
       const ids = new BigUint64Array(idsPerRow * cap);
-      const shifts = new Int32Array(3 * cap);
+      const shifts = new Int32Array(this._d.dim * cap);
       const values = doublesPerRow ? new Float64Array(2 * cap)
         : new Int32Array(cap);
       const count = [0];
@@ -961,24 +987,29 @@ class Index {
   /** Every stored ellipsoid and image with μ² < t from a candidate:
    *  [{id, shift, mu2, lambda}], sorted by id, then shift. */
   within(centre, q, t = 1, exclude = null) {
-    const cd = doubles(centre, DIM, 'centre');
-    const qd = doubles(q, SYM, 'q');
+    const cd = doubles(centre, this._d.dim, 'centre');
+    const qd = doubles(q, this._d.sym, 'q');
     number(t, 't');
     if (!(t > 0)) {
       throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
-        : status.PW85_EINVAL, 'pw85_index_within', `t = ${t} is not > 0`);
+        : status.PW85_EINVAL, this._call('within'), `t = ${t} is not > 0`);
     }
     const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
-    const r = this._collect((cap, ids, shifts, ml, count) => c.indexWithin(
+    const r = this._collect((cap, ids, shifts, ml, count) => this._d.c.within(
       this._handle(), cd, qd, t, ex, cap, ids, shifts, ml, count),
-    'pw85_index_within', 1, true, 16,
-    (code) => this._candidateError(code, 'pw85_index_within', cd, qd));
+    this._call('within'), 1, true, 16,
+    (code) => this._candidateError(code, this._call('within'), cd, qd));
     return Array.from({ length: r.m }, (_, k) => ({
       id: Number(r.ids[k]),
-      shift: Array.from(r.shifts.subarray(3 * k, 3 * k + 3)),
+      shift: this._shift(r.shifts, k),
       mu2: r.values[2 * k],
       lambda: r.values[2 * k + 1],
     }));
+  }
+
+  _shift(shifts, k) {
+    const n = this._d.dim;
+    return Array.from(shifts.subarray(n * k, n * k + n));
   }
 
   _threads(threads, name) {
@@ -992,15 +1023,15 @@ class Index {
   /** Every overlapping (or tangent) pair, each once:
    *  [{i, j, shift, result}], sorted by i, j, shift. */
   overlappingPairs({ threads = 1 } = {}) {
-    const th = this._threads(threads, 'pw85_index_overlapping_pairs');
+    const th = this._threads(threads, this._call('overlapping_pairs'));
     const r = this._collect((cap, ids, shifts, res, count) =>
-      c.indexOverlappingPairs(this._handle(), th, cap, ids, shifts, res,
-        count), 'pw85_index_overlapping_pairs', 2, false,
+      this._d.c.overlappingPairs(this._handle(), th, cap, ids, shifts, res,
+        count), this._call('overlapping_pairs'), 2, false,
     4 * this.size + 16);
     return Array.from({ length: r.m }, (_, k) => ({
       i: Number(r.ids[2 * k]),
       j: Number(r.ids[2 * k + 1]),
-      shift: Array.from(r.shifts.subarray(3 * k, 3 * k + 3)),
+      shift: this._shift(r.shifts, k),
       result: r.values[k],
     }));
   }
@@ -1011,30 +1042,59 @@ class Index {
     number(t, 't');
     if (!(t > 0)) {
       throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
-        : status.PW85_EINVAL, 'pw85_index_pairs_within',
+        : status.PW85_EINVAL, this._call('pairs_within'),
       `t = ${t} is not > 0`);
     }
-    const th = this._threads(threads, 'pw85_index_pairs_within');
+    const th = this._threads(threads, this._call('pairs_within'));
     const r = this._collect((cap, ids, shifts, ml, count) =>
-      c.indexPairsWithin(this._handle(), t, th, cap, ids, shifts, ml, count),
-    'pw85_index_pairs_within', 2, true, 8 * this.size + 16);
+      this._d.c.pairsWithin(this._handle(), t, th, cap, ids, shifts, ml,
+        count),
+    this._call('pairs_within'), 2, true, 8 * this.size + 16);
     return Array.from({ length: r.m }, (_, k) => ({
       i: Number(r.ids[2 * k]),
       j: Number(r.ids[2 * k + 1]),
-      shift: Array.from(r.shifts.subarray(3 * k, 3 * k + 3)),
+      shift: this._shift(r.shifts, k),
       mu2: r.values[2 * k],
       lambda: r.values[2 * k + 1],
     }));
   }
 
   toString() {
-    if (this._h == null) return 'pw85.Index (closed)';
+    const d = this._d;
+    if (this._h == null) return `${d.name} (closed)`;
     const n = this.size;
-    return `pw85.Index: ${this.box == null ? 'open domain'
-      : `periodic box (${list(this.box).slice(1, -1)})`}, ${n} ellipsoid` +
-      `${n === 1 ? '' : 's'}`;
+    return `${d.name}: ${this.box == null ? 'open domain'
+      : `periodic ${d.domain} (${list(this.box).slice(1, -1)})`}, ${n} ` +
+      `${d.shape}${n === 1 ? '' : 's'}`;
   }
 }
+
+/**
+ * A spatial index of ellipsoids in an open domain or a periodic box
+ * (pw85_index.h): its queries give the answers of overlap() and
+ * contactFunction() on every pair and periodic image. Holds library
+ * memory: call close() when done. Ids are integers from 0 to MAX_ID.
+ */
+class Index extends IndexBase {
+  static get dimension() {
+    return INDEX_3D;
+  }
+}
+
+/**
+ * The index of ellipses in an open plane or a periodic rectangle
+ * (pw85_2d_index.h, pw85.d2.Index): Index for vectors of 2 numbers and
+ * forms [Q00, Q01, Q11], shifts of 2 integers; the answers of
+ * d2.overlap() and d2.contactFunction() on every pair and image.
+ */
+class Index2d extends IndexBase {
+  static get dimension() {
+    return INDEX_2D;
+  }
+}
+
+d2.Index = Index2d;
+Object.freeze(d2);
 
 /** The version of the library loaded, "MAJOR.MINOR.PATCH". */
 function version() {

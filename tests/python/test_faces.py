@@ -314,7 +314,11 @@ def public_functions():
         obj = getattr(pypw85, name)
         if isinstance(obj, types.FunctionType):
             yield name, obj
-    for name, obj in vars(pypw85.Index).items():
+    # Index's own members and those of its base (shared with d2.Index).
+    members = {}
+    for cls in reversed(pypw85.Index.__mro__[:-1]):
+        members.update(vars(cls))
+    for name, obj in members.items():
         if isinstance(obj, types.FunctionType) and (
                 not name.startswith("_") or name in (
                     "__init__", "__len__", "__contains__", "__iter__",

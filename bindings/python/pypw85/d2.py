@@ -37,6 +37,7 @@ circle, centres (3, 1) apart::
 from __future__ import annotations
 
 import ctypes
+import fractions
 import math
 import typing
 
@@ -55,13 +56,14 @@ from ._convert import (check_finite as _check_finite, output as _output,
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 from ._symbols import LIBPW85_2D, declare as _declare
+from .index import (_Dimension, _Index, _prototypes as _index_prototypes)
 
 __all__ = [
     "DIM", "SYM", "GEOM_MU2", "GEOM_LAMBDA", "GEOM_POINT", "GEOM_NORMAL",
     "GEOM_SIZE", "DERIV_R12", "DERIV_THETA1", "DERIV_THETA2", "DERIV_Q1",
     "DERIV_Q2", "DERIV_SIZE",
     "f", "f_neg", "contact_function", "overlap", "contact_geometry",
-    "contact_derivatives", "ellipse", "principal_axes",
+    "contact_derivatives", "ellipse", "principal_axes", "Index",
 ]
 
 # The macros of pw85_2d.h (tests/python/test_d2.py parses the header and
@@ -96,6 +98,7 @@ DERIV_SIZE = 10
 
 try:
     _declare(_lib, LIBPW85_2D)
+    _declare(_lib, _index_prototypes("pw85_2d_index_"))
 except AttributeError as exc:  # a libpw85 older than 2.5.0
     raise ImportError("pypw85.d2: the libpw85 loaded (%s) has no ellipse "
                       "functions (pw85_2d.h, since 2.5.0): %s"
@@ -526,3 +529,35 @@ def principal_axes(q: ArrayLike, *,
     if status != SUCCESS:
         raise Error(status, _WHERE + "principal_axes", "q = %r" % q)
     return a, theta.value
+
+
+def _posdef(q):
+    """The rule of pw85_2d.h: Q00 > 0 and Q00·Q11 − Q01² > 0 on the exact
+    values of the three doubles (for the messages of `Index`)."""
+    q00, q01, q11 = (fractions.Fraction(float(x)) for x in q)
+    return q00 > 0 and q00 * q11 - q01 * q01 > 0
+
+
+class Index(_Index):
+    """A spatial index of ellipses (``pw85_2d_index``), in an open plane or
+    a periodic rectangle: `pypw85.index.Index` for ellipses.
+
+    Ids, containers, errors, threads and the order of the results are
+    those of `pypw85.index.Index`; centres are of shape ``(n, 2)``, forms
+    ``(n, 3)`` (Q00, Q01, Q11), image shifts ``(m, 2)`` (the image of
+    ellipse j is at ``c_j + shift * box``). There is no ``energy``.
+
+    Parameters
+    ----------
+    box : array_like of 2 floats, optional
+        The sides of a periodic rectangle (each > 0 and finite); None
+        (default) for an open plane.
+
+    Raises
+    ------
+    Error
+        `EDOM` if a side is not finite, `EINVAL` if one is not > 0.
+    """
+
+    _dim = _Dimension(2, 3, "pw85_2d_index_", (0, 2), _posdef, "ellipse",
+                      "rectangle", "pypw85.d2.Index")

@@ -23,6 +23,10 @@ and ``item`` give them to programs. The all-pairs queries and `Index.overlap_any
 run on ``threads`` OpenMP threads (`OPENMP` says whether this libpw85 has
 them), with the GIL released, and give the same arrays for any number of
 threads.
+
+`pypw85.d2.Index` is the same class for ellipses (``pw85_2d_index.h``),
+but for the sizes: centres ``(n, 2)``, forms ``(n, 3)`` (Q00, Q01, Q11),
+shifts ``(m, 2)``; it has no `Index.energy`.
 """
 
 from __future__ import annotations
@@ -33,8 +37,10 @@ import typing
 
 import numpy as np
 
+from typing import Callable, Tuple
+
 if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
-    from typing import Callable, Iterator, Optional, Tuple, Union
+    from typing import Iterator, Optional, Union
     from numpy.typing import ArrayLike, NDArray
     IdLike = Union[int, np.integer]  # an id: int or a NumPy integer
 
@@ -53,30 +59,37 @@ _DOUBLE = ctypes.c_double
 _SIZE_P = ctypes.POINTER(_SIZE)
 _INT_P = ctypes.POINTER(_INT)
 
-#: The prototypes of pw85_index.h (the handle is a ``void *``).
-LIBPW85_INDEX = {
-    "pw85_index_create": (_INT, [_P, ctypes.POINTER(_P)]),
-    "pw85_index_destroy": (None, [_P]),
-    "pw85_index_openmp": (_INT, []),
-    "pw85_index_count": (_INT, [_P, _SIZE_P]),
-    "pw85_index_insert": (_INT, [_P, _SIZE, _P, _P]),
-    "pw85_index_insert_many": (_INT, [_P, _SIZE, _P, _P, _P]),
-    "pw85_index_update": (_INT, [_P, _SIZE, _P, _P]),
-    "pw85_index_remove": (_INT, [_P, _SIZE]),
-    "pw85_index_get": (_INT, [_P, _SIZE, _P, _P]),
-    "pw85_index_overlap_any": (_INT, [_P, _P, _P, _SIZE, _INT_P, _SIZE_P]),
-    "pw85_index_overlap_any_batch": (_INT, [_P, _SIZE, _P, _SIZE, _P, _SIZE,
-                                            _P, _P, _P, _P, _INT]),
-    "pw85_index_within": (_INT, [_P, _P, _P, _DOUBLE, _SIZE, _SIZE, _P, _P,
-                                 _P, _SIZE_P]),
-    "pw85_index_overlapping_pairs": (_INT, [_P, _INT, _SIZE, _P, _P, _P,
-                                            _SIZE_P]),
-    "pw85_index_pairs_within": (_INT, [_P, _DOUBLE, _INT, _SIZE, _P, _P, _P,
-                                       _SIZE_P]),
-    # Since 2.4.0.
-    "pw85_index_energy": (_INT, [_P, _INT, _DOUBLE, _P, _P, _INT, _SIZE,
-                                 ctypes.POINTER(_DOUBLE), _P, _P]),
-}
+
+def _prototypes(prefix):
+    """The prototypes of pw85_index.h (prefix pw85_index_) or of
+    pw85_2d_index.h (pw85_2d_index_): the same but for the sizes of the
+    records (the handle is a ``void *``)."""
+    return {prefix + name: proto for name, proto in {
+        "create": (_INT, [_P, ctypes.POINTER(_P)]),
+        "destroy": (None, [_P]),
+        "count": (_INT, [_P, _SIZE_P]),
+        "insert": (_INT, [_P, _SIZE, _P, _P]),
+        "insert_many": (_INT, [_P, _SIZE, _P, _P, _P]),
+        "update": (_INT, [_P, _SIZE, _P, _P]),
+        "remove": (_INT, [_P, _SIZE]),
+        "get": (_INT, [_P, _SIZE, _P, _P]),
+        "overlap_any": (_INT, [_P, _P, _P, _SIZE, _INT_P, _SIZE_P]),
+        "overlap_any_batch": (_INT, [_P, _SIZE, _P, _SIZE, _P, _SIZE, _P,
+                                     _P, _P, _P, _INT]),
+        "within": (_INT, [_P, _P, _P, _DOUBLE, _SIZE, _SIZE, _P, _P, _P,
+                          _SIZE_P]),
+        "overlapping_pairs": (_INT, [_P, _INT, _SIZE, _P, _P, _P, _SIZE_P]),
+        "pairs_within": (_INT, [_P, _DOUBLE, _INT, _SIZE, _P, _P, _P,
+                                _SIZE_P]),
+    }.items()}
+
+
+LIBPW85_INDEX = _prototypes("pw85_index_")
+LIBPW85_INDEX["pw85_index_openmp"] = (_INT, [])
+# Since 2.4.0.
+LIBPW85_INDEX["pw85_index_energy"] = (_INT, [_P, _INT, _DOUBLE, _P, _P, _INT,
+                                             _SIZE, ctypes.POINTER(_DOUBLE),
+                                             _P, _P])
 #: pw85_pair_energy: int (*)(double mu2, void *data, double out[2]).
 _PAIR_ENERGY = ctypes.CFUNCTYPE(_INT, _DOUBLE, _P, ctypes.POINTER(_DOUBLE))
 _declare(_lib, LIBPW85_INDEX)
@@ -95,6 +108,34 @@ MAX_ID = 0xFFFFFFFE
 _SIDE_MARGIN = 1.0 + 2.0**-20
 _CENTRE_REACH = 2.0**29
 
+
+
+def _posdef_3d(f):
+    """The rule of pw85.h, by the library's own factorisation probe."""
+    probe = np.empty(6)
+    _lib.pw85__cholesky_decomp(f.ctypes.data, probe.ctypes.data)
+    return not math.isnan(probe[0])
+
+
+class _Dimension(typing.NamedTuple):
+    """What differs between the index of ellipsoids and that of ellipses:
+    the sizes of a centre and a form, the C prefix, the positions of the
+    diagonal in a stored form, the words of the messages."""
+    dim: int
+    sym: int
+    prefix: str
+    diagonal: Tuple[int, ...]
+    posdef: Callable
+    shape: str      # "ellipsoid", "ellipse"
+    domain: str     # "box", "rectangle"
+    name: str       # the class, for repr
+
+    def fn(self, name):
+        return getattr(_lib, self.prefix + name)
+
+
+_D3 = _Dimension(3, 6, "pw85_index_", (0, 3, 5), _posdef_3d, "ellipsoid",
+                 "box", "pypw85.Index")
 
 
 def _array(name, x, dtype, shape):
@@ -167,49 +208,26 @@ def _fmt(x):
     return "%.17g" % x
 
 
-class Index:
-    """A spatial index of ellipsoids (``pw85_index``).
+class _Index:
+    """The index of either dimension; `Index` (3D) and `pypw85.d2.Index`
+    (2D) set `_dim`, the calls and sizes of their C header."""
 
-    Parameters
-    ----------
-    box : array_like of 3 floats, optional
-        The sides of a periodic orthorhombic box (each > 0 and finite);
-        None (default) for an open domain.
-
-    An `Index` holds library memory: it is freed by `close` (or by the
-    ``with`` statement, or when the object is collected). Modifying calls
-    must not run concurrently with other calls on the same index; queries
-    may.
-
-    It is a container of the ids it stores: ``len(index)``,
-    ``id in index``, ``iter(index)`` (the ids, ascending); ``repr`` shows
-    the box and the count.
-
-    Returns
-    -------
-    Index
-        An empty index.
-
-    Raises
-    ------
-    Error
-        `EDOM` if a side is not finite, `EINVAL` if one is not > 0 (the
-        message names the side).
-    """
+    _dim = _D3
 
     def __init__(self, box: Optional[ArrayLike] = None) -> None:
+        d = self._dim
         self._handle = None
         self._stored = set()
-        b = None if box is None else _array("box", box, np.float64, (3,))
+        b = None if box is None else _array("box", box, np.float64, (d.dim,))
         handle = _P()
-        code = _lib.pw85_index_create(None if b is None else _ptr(b),
-                                      ctypes.byref(handle))
+        code = d.fn("create")(None if b is None else _ptr(b),
+                              ctypes.byref(handle))
         if code != 0:
             k = int(np.flatnonzero(~(np.isfinite(b) & (b > 0)))[0])
             rule = ("is not finite" if not math.isfinite(b[k])
                     else "is not > 0")
-            raise Error(code, "Index", "box side L_%d = %s %s"
-                        % (k, _fmt(b[k]), rule))
+            raise Error(code, "Index", "%s side L_%d = %s %s"
+                        % (d.domain, k, _fmt(b[k]), rule))
         self._handle = handle
         #: The sides of the periodic box (a copy), or None.
         self.box = None if b is None else b.copy()
@@ -217,13 +235,13 @@ class Index:
     def close(self) -> None:
         """Free the library's memory; the index is unusable afterwards."""
         if self._handle is not None:
-            _lib.pw85_index_destroy(self._handle)
+            self._dim.fn("destroy")(self._handle)
             self._handle = None
 
     def __del__(self):
         self.close()
 
-    def __enter__(self) -> "Index":
+    def __enter__(self) -> "_Index":
         return self
 
     def __exit__(self, *exc) -> None:
@@ -236,7 +254,7 @@ class Index:
 
     def __len__(self) -> int:
         n = _SIZE()
-        _check(_lib.pw85_index_count(self._h(), ctypes.byref(n)), "len")
+        _check(self._dim.fn("count")(self._h(), ctypes.byref(n)), "len")
         return n.value
 
     def __contains__(self, id: object) -> bool:
@@ -255,13 +273,14 @@ class Index:
 
     def __repr__(self) -> str:
         if self._handle is None:
-            return "<pypw85.Index (closed)>"
+            return "<%s (closed)>" % self._dim.name
+        d = self._dim
         domain = ("open domain" if self.box is None else
-                  "periodic box %s" % ", ".join(_fmt(x) for x in self.box)
-                  .join("()"))
+                  "periodic %s %s" % (d.domain, ", ".join(
+                      _fmt(x) for x in self.box).join("()")))
         n = len(self)
-        return "<pypw85.Index: %s, %d ellipsoid%s>" % (
-            domain, n, "" if n == 1 else "s")
+        return "<%s: %s, %d %s%s>" % (d.name, domain, n, d.shape,
+                                      "" if n == 1 else "s")
 
     # -- the causes of EINVAL and friends (pw85_index.h), for messages --
 
@@ -269,12 +288,14 @@ class Index:
         """The rule of the box that (c, f) breaks, or None."""
         if self.box is None:
             return None
-        for k, (d, side) in enumerate(zip(f[[0, 3, 5]], self.box)):
-            width = 2.0 * math.sqrt(d) * _SIDE_MARGIN if d > 0 else 0.0
+        d = self._dim
+        for k, (q, side) in enumerate(zip(f[list(d.diagonal)], self.box)):
+            width = 2.0 * math.sqrt(q) * _SIDE_MARGIN if q > 0 else 0.0
             if not width < side:
-                return ("2·√Q_%d%d·(1 + 2⁻²⁰) = %s ≥ L_%d = %s (an ellipsoid "
-                        "must be narrower than the box)"
-                        % (k, k, _fmt(width), k, _fmt(side)))
+                return ("2·√Q_%d%d·(1 + 2⁻²⁰) = %s ≥ L_%d = %s (an %s "
+                        "must be narrower than the %s)"
+                        % (k, k, _fmt(width), k, _fmt(side), d.shape,
+                           d.domain))
         for k, (x, side) in enumerate(zip(c, self.box)):
             if not abs(x) <= _CENTRE_REACH * side:
                 return ("|c_%d| = %s > 2²⁹·L_%d = %s (a centre must lie "
@@ -298,9 +319,7 @@ class Index:
             if not new and id not in self._stored:
                 causes.append((EINVAL, "id %d is not stored" % id))
         if not causes:
-            probe = np.empty(6)
-            _lib.pw85__cholesky_decomp(f.ctypes.data, probe.ctypes.data)
-            if math.isnan(probe[0]):  # the rule of pw85.h
+            if not self._dim.posdef(f):
                 causes.append((ENOTPOSDEF, "q = %r is not positive definite"
                                % f.tolist()))
             rule = self._placement(c, f)
@@ -317,7 +336,7 @@ class Index:
         detail = self._cause(c, f, id, new, seen, code) or \
             "centre = %r, q = %r" % (c.tolist(), f.tolist())
         if id is not None:
-            who = "ellipsoid %d" % id
+            who = "%s %d" % (self._dim.shape, id)
             if item is not None:
                 who += " (item %d of %d)" % (item, n)
             detail = who + ": " + detail
@@ -341,9 +360,10 @@ class Index:
         """
         one = np.ndim(ids) == 0
         i = _ids("ids", ids)
-        c = _records("centres", centres, i.size, 3)
-        f = _records("q", q, i.size, 6)
-        code = _lib.pw85_index_insert_many(self._h(), i.size, _ptr(i),
+        d = self._dim
+        c = _records("centres", centres, i.size, d.dim)
+        f = _records("q", q, i.size, d.sym)
+        code = self._dim.fn("insert_many")(self._h(), i.size, _ptr(i),
                                            _ptr(c), _ptr(f))
         if code != 0:
             # The index is unchanged: find the first item that fails
@@ -366,9 +386,8 @@ class Index:
         naming the rule; the index is then unchanged.
         """
         ident = _id("id", id)
-        c = _array("centre", centre, np.float64, (3,))
-        f = _array("q", q, np.float64, (6,))
-        code = _lib.pw85_index_update(self._h(), ident, _ptr(c), _ptr(f))
+        c, f = self._one(centre, q)
+        code = self._dim.fn("update")(self._h(), ident, _ptr(c), _ptr(f))
         if code != 0:
             self._raise(code, "update", c, f, ident)
 
@@ -376,19 +395,24 @@ class Index:
         """Remove the stored ellipsoid ``id`` (`Error` `EINVAL` if it is
         not stored)."""
         ident = _id("id", id)
-        code = _lib.pw85_index_remove(self._h(), ident)
+        code = self._dim.fn("remove")(self._h(), ident)
         if code != 0:
             raise Error(code, "remove", "id %d is not stored" % ident)
         self._stored.discard(ident)
+
+    def _one(self, centre, q):
+        """One centre and one form, as arrays of their sizes."""
+        return (_array("centre", centre, np.float64, (self._dim.dim,)),
+                _array("q", q, np.float64, (self._dim.sym,)))
 
     def get(self, id: IdLike) -> Tuple[NDArray[np.float64],
                                       NDArray[np.float64]]:
         """(centre, q) of the stored ellipsoid ``id``, as inserted (`Error`
         `EINVAL` if it is not stored)."""
         ident = _id("id", id)
-        c = np.empty(3)
-        f = np.empty(6)
-        code = _lib.pw85_index_get(self._h(), ident, _ptr(c), _ptr(f))
+        c = np.empty(self._dim.dim)
+        f = np.empty(self._dim.sym)
+        code = self._dim.fn("get")(self._h(), ident, _ptr(c), _ptr(f))
         if code != 0:
             raise Error(code, "get", "id %d is not stored" % ident)
         return c, f
@@ -397,7 +421,7 @@ class Index:
         if code == EDOM or code == ENOTPOSDEF:
             detail = self._cause(c, f, code=code)
         else:
-            rule = self._placement(c, np.ones(6))  # the centre rule only
+            rule = self._placement(c, np.ones(self._dim.sym))  # centre rule
             detail = rule if code == EINVAL and rule else (
                 "centre = %r, q = %r" % (c.tolist(), f.tolist()))
         if item is not None:
@@ -416,11 +440,10 @@ class Index:
         id of an ellipsoid with that result (None for +1). The result is
         an int, not a bool: test ``result < 0`` for "overlaps".
         """
-        c = _array("centre", centre, np.float64, (3,))
-        f = _array("q", q, np.float64, (6,))
+        c, f = self._one(centre, q)
         result = _INT()
         found = _SIZE()
-        code = _lib.pw85_index_overlap_any(
+        code = self._dim.fn("overlap_any")(
             self._h(), _ptr(c), _ptr(f),
             NO_ID if exclude is None else _id("exclude", exclude),
             ctypes.byref(result), ctypes.byref(found))
@@ -451,9 +474,10 @@ class Index:
         the serial loop's result (tutorial/rsa.py).
         """
         threads = _threads_count(threads)
-        c = _array("centres", centres, np.float64, (-1, 3))
+        d = self._dim
+        c = _array("centres", centres, np.float64, (-1, d.dim))
         n = c.shape[0]
-        f = _records("q", q, n, 6)
+        f = _records("q", q, n, d.sym)
         ex = None
         if exclude is not None:
             e = np.asarray(exclude)
@@ -470,12 +494,12 @@ class Index:
             ex[e == -1] = NO_ID
         results = np.empty(n, dtype=np.intc)
         found = np.empty(n, dtype=np.uintp)
-        args = (self._h(), n, _ptr(c), 3, _ptr(f), 6,
+        args = (self._h(), n, _ptr(c), d.dim, _ptr(f), d.sym,
                 None if ex is None else _ptr(ex), _ptr(results), _ptr(found))
-        code = _lib.pw85_index_overlap_any_batch(*args, None, threads)
+        code = self._dim.fn("overlap_any_batch")(*args, None, threads)
         if code != 0:
             status = np.empty(n, dtype=np.intc)
-            code = _lib.pw85_index_overlap_any_batch(*args, _ptr(status),
+            code = self._dim.fn("overlap_any_batch")(*args, _ptr(status),
                                                      threads)
             i = int(np.flatnonzero(status)[0])
             error = self._candidate_error(code, "overlap_any_many", c[i],
@@ -498,8 +522,7 @@ class Index:
         ``(m, 3)``, ``(m, 2)``, sorted by id then shift; the image of
         ellipsoid j is at ``c_j + shift * box``.
         """
-        c = _array("centre", centre, np.float64, (3,))
-        f = _array("q", q, np.float64, (6,))
+        c, f = self._one(centre, q)
         ex = NO_ID if exclude is None else _id("exclude", exclude)
         t = float(t)
         if not t > 0:
@@ -507,7 +530,7 @@ class Index:
                         "t = %s is not > 0" % _fmt(t))
 
         def call(cap, ids, shifts, ml, count):
-            return _lib.pw85_index_within(self._h(), _ptr(c), _ptr(f),
+            return self._dim.fn("within")(self._h(), _ptr(c), _ptr(f),
                                           t, ex, cap, ids, shifts, ml,
                                           count)
         return self._collect(call, 1, np.float64, "within", 16,
@@ -527,7 +550,7 @@ class Index:
         threads = _pair_threads("overlapping_pairs", threads)
 
         def call(cap, ids, shifts, res, count):
-            return _lib.pw85_index_overlapping_pairs(
+            return self._dim.fn("overlapping_pairs")(
                 self._h(), threads, cap, ids, shifts, res, count)
         return self._collect(call, 2, np.intc, "overlapping_pairs",
                              4 * len(self) + 16)
@@ -547,10 +570,62 @@ class Index:
                         "t = %s is not > 0" % _fmt(t))
 
         def call(cap, ids, shifts, ml, count):
-            return _lib.pw85_index_pairs_within(
+            return self._dim.fn("pairs_within")(
                 self._h(), t, threads, cap, ids, shifts, ml, count)
         return self._collect(call, 2, np.float64, "pairs_within",
                              8 * len(self) + 16)
+
+    def _collect(self, call, ids_per_row, value_dtype, where, guess,
+                 error=None):
+        """Call with room for `guess` results, then again if too few."""
+        count = _SIZE()
+        cap = guess
+        while True:
+            ids = np.empty((cap, ids_per_row), dtype=np.uintp)
+            shifts = np.empty((cap, self._dim.dim), dtype=np.intc)
+            values = (np.empty(cap, dtype=np.intc) if value_dtype is np.intc
+                      else np.empty((cap, 2), dtype=np.float64))
+            code = call(cap, _ptr(ids), _ptr(shifts), _ptr(values),
+                        ctypes.byref(count))
+            if code != 0:
+                raise error(code) if error else Error(code, where)
+            if count.value <= cap:
+                break
+            cap = count.value
+        m = count.value
+        ids = ids[:m, 0] if ids_per_row == 1 else ids[:m]
+        return ids.astype(np.int64), shifts[:m].copy(), values[:m].copy()
+
+
+class Index(_Index):
+    """A spatial index of ellipsoids (``pw85_index``).
+
+    Parameters
+    ----------
+    box : array_like of 3 floats, optional
+        The sides of a periodic orthorhombic box (each > 0 and finite);
+        None (default) for an open domain.
+
+    An `Index` holds library memory: it is freed by `close` (or by the
+    ``with`` statement, or when the object is collected). Modifying calls
+    must not run concurrently with other calls on the same index; queries
+    may.
+
+    It is a container of the ids it stores: ``len(index)``,
+    ``id in index``, ``iter(index)`` (the ids, ascending); ``repr`` shows
+    the box and the count.
+
+    Returns
+    -------
+    Index
+        An empty index.
+
+    Raises
+    ------
+    Error
+        `EDOM` if a side is not finite, `EINVAL` if one is not > 0 (the
+        message names the side).
+    """
 
     def energy(self, eps: float = 1.0, *,
                u: Optional[Callable[[float], Tuple[float, float]]] = None,
@@ -634,27 +709,6 @@ class Index:
                         "finite")
         _check(code, "energy")
         return e.value, forces, torques
-
-    @staticmethod
-    def _collect(call, ids_per_row, value_dtype, where, guess, error=None):
-        """Call with room for `guess` results, then again if too few."""
-        count = _SIZE()
-        cap = guess
-        while True:
-            ids = np.empty((cap, ids_per_row), dtype=np.uintp)
-            shifts = np.empty((cap, 3), dtype=np.intc)
-            values = (np.empty(cap, dtype=np.intc) if value_dtype is np.intc
-                      else np.empty((cap, 2), dtype=np.float64))
-            code = call(cap, _ptr(ids), _ptr(shifts), _ptr(values),
-                        ctypes.byref(count))
-            if code != 0:
-                raise error(code) if error else Error(code, where)
-            if count.value <= cap:
-                break
-            cap = count.value
-        m = count.value
-        ids = ids[:m, 0] if ids_per_row == 1 else ids[:m]
-        return ids.astype(np.int64), shifts[:m].copy(), values[:m].copy()
 
 
 def _pair_threads(where, threads):
