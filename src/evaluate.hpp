@@ -14,6 +14,7 @@
 #include "compiler.hpp"
 #include "ldl.hpp"
 #include "problem.hpp"
+#include "scaling.hpp"
 #include "sym.hpp"
 
 namespace pw85::detail {
@@ -141,6 +142,30 @@ struct NewtonStep {
   double domega;  // ω′ = 1 + ρ + λρ′ (eq. (5.7))
 };
 
+// newton_step() where its formulas overflow: aᵢ or ρ′ alone beyond the
+// range of doubles while λρ′ is not (λ near 2⁻⁵¹³ with forms 2¹⁰⁰⁰ apart:
+// aᵢ ~ 2¹⁰³⁹, ρ′ ~ 2¹⁰²⁵; fuzz-geometry, regressions/newton-overflow).
+// ρ′/ρ = a1/P1 − a2/P2 with y scaled by a power of two, then
+// λρ′ = (λρ)·(ρ′/ρ), λρ being finite where ω is. Only called where
+// newton_step()'s formulas give no finite step: elsewhere, steps are bit
+// for bit as before.
+template <int D>
+PW85_INLINE bool scaled_step(PlainPoint<D> const &pt, double const *z1,
+                             double const *z2, double *y,
+                             NewtonStep *step) noexcept {
+  double const lambda = pt.lambda;
+  double ymax = 0.0;
+  for (int i = 0; i < D; ++i) ymax = std::fmax(ymax, std::fabs(y[i]));
+  int const k = exponent(ymax);
+  for (int i = 0; i < D; ++i) y[i] = times_pow2(y[i], -k);
+  double const ratio =
+      times_pow2(dot<D>(z1, y) / pt.p1 - dot<D>(z2, y) / pt.p2, k);  // ρ′/ρ
+  double const lambda_drho = lambda * pt.rho * ratio;                 // λρ′
+  step->domega = 1.0 + pt.rho + lambda_drho;
+  step->next = (1.0 + lambda * lambda_drho) / step->domega;
+  return std::isfinite(step->next);
+}
+
 // Returns false when the step is not finite. With v = Q⁻¹·(Q2 − Q1)·s,
 // s′ = −v (ch. 4, eq. (5)), so Pᵢ′ = −2·sᵀ·Qᵢ·v and
 // ρ′ = (ρ/2)·(P2′/P2 − P1′/P1) (eq. (5.7)).
@@ -177,7 +202,9 @@ PW85_INLINE bool newton_step(PlainPoint<D> const &pt, NewtonStep *step) noexcept
     step->domega = 1.0 + pt.rho + lambda * drho;
     step->next = (1.0 + lambda * lambda * drho) / step->domega;
   }
-  return std::isfinite(step->next);
+  if (PW85_UNLIKELY(!std::isfinite(step->next)))
+    return scaled_step(pt, z1, z2, y, step);
+  return true;
 }
 
 // The bounds of μ² at a plain point (ch. 5, eqs. (1a)–(1b), (3.16)):

@@ -56,8 +56,13 @@ static Pair const *pair(char const *name) {
   return NULL;
 }
 
+/* The 2-norm of three doubles, scaled first: the torques of newton-overflow
+ * are of order 1e-252, whose squares underflow. */
 static double norm3(double const *v) {
-  return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  double const m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+  if (m == 0) return 0;
+  double const a = v[0] / m, b = v[1] / m, c = v[2] / m;
+  return m * sqrt(a * a + b * b + c * c);
 }
 
 /* |a − b| / |b| in the 2-norm of three doubles */
@@ -300,6 +305,29 @@ static void test_overlap_sphere_erange(void) {
   g_assert_cmpint(res, ==, 1);
 }
 
+/* fuzz-geometry (seed 29): 1 − λ* = 6.66e-155, the forms 2^997 apart,
+ * q2 nearly of rank one (cond 1.04e10). In the search's problem, aᵢ of
+ * the Newton step (~2^1039) and ρ′ (~2^1025) overflowed where λρ′ does
+ * not: no step, so the geometry's polish kept the search's λ, whose
+ * 1 − λ was 8.8e-13 off relative; ∂μ²/∂ω2, which scales as 1/(1 − λ)
+ * here, was 1.5e-12 of its scale off. Held to 8·u·cond(Q(λ*)) of pw85.h,
+ * cond(Q(λ*)) = 6.8547 by mpmath; relative to the torque's own norm,
+ * 1.73 times its scale |∂μ²/∂r12|·|x − c2| here (measured 2.5e-17). */
+static void test_newton_overflow(void) {
+  Pair const *p = pair("newton-overflow");
+  double const bound = 8 * 0x1p-53 * 6.8547;
+  double g[PW85_GEOM_SIZE], d[PW85_DERIV_SIZE];
+  g_assert_cmpint(
+      pw85_contact_derivatives(p->in, p->in + 3, p->in + 9, g, d), ==,
+      PW85_SUCCESS);
+  g_assert_cmpfloat(g[PW85_GEOM_MU2], ==, p->ref[0]);
+  g_assert_cmpfloat(rel3(g + PW85_GEOM_POINT, p->ref + 2), <=, bound);
+  g_assert_cmpfloat(rel3(g + PW85_GEOM_NORMAL, p->ref + 5), <=, bound);
+  g_assert_cmpfloat(rel3(d + PW85_DERIV_R12, p->ref + 8), <=, bound);
+  g_assert_cmpfloat(rel3(d + PW85_DERIV_ROT1, p->ref + 11), <=, bound);
+  g_assert_cmpfloat(rel3(d + PW85_DERIV_ROT2, p->ref + 14), <=, bound);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
@@ -325,6 +353,7 @@ int main(int argc, char **argv) {
                   test_overlap_sphere_erange);
   g_test_add_func("/pw85/regressions/point-orientation",
                   test_point_orientation);
+  g_test_add_func("/pw85/regressions/newton-overflow", test_newton_overflow);
   g_test_add_data_func("/pw85/regressions/flat-least-slope",
                        "flat-least-slope", test_geo_flat);
   g_test_add_data_func("/pw85/regressions/geo-flat-21e2b386",
