@@ -6,6 +6,7 @@
 #include <pw85/pw85_2d_index.h>
 #include <pw85/pw85_2d_index.hpp>
 #include <pw85/pw85_2d_pack.h>
+#include <pw85/pw85_2d_pack.hpp>
 #include <pw85/pw85_image.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
