@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """`pack`: N ellipsoids in a periodic box with no overlapping pair
 (``pw85_pack.h``, whose description is the contract: the method, the
-certification, determinism)."""
+certification, determinism); `pypw85.d2.pack`, N ellipses in a periodic
+rectangle (``pw85_2d_pack.h``), through the same code (`_pack`)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import typing
 import numpy as np
 
 if typing.TYPE_CHECKING:
-    from typing import Callable, Optional, Sequence
+    from typing import Callable, Optional, Sequence, Type
     from numpy.typing import ArrayLike
 
 from ._constants import EDOM, EINVAL, ERANGE
@@ -52,6 +53,23 @@ _declare(_lib, {
                                  ctypes.POINTER(ctypes.c_double),
                                  ctypes.POINTER(ctypes.c_int)]),
 })
+
+class _Shape(typing.NamedTuple):
+    """What differs between the packer of ellipsoids and that of ellipses:
+    the sizes (of a semi-axes row, a form, an orientation row: () for one
+    angle), the C function, the volume of a shape over the product of its
+    semi-axes, the words of the messages."""
+    dim: int
+    sym: int
+    orientation: tuple
+    function: str
+    measure: float
+    noun: str
+    domain: str
+
+
+_D3 = _Shape(3, 6, (4,), "pw85_pack", 4.0 / 3.0 * math.pi, "ellipsoid",
+             "box")
 
 _ORIENTATIONS = {"isotropic": 0, "aligned": 1}
 _OUTCOMES = ("target", "limit", "jammed", "cancelled")
@@ -181,17 +199,27 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
         the C type that holds it (``threads`` above 2³¹ − 1, a limit above
         2⁶⁴ − 1).
     """
+    return Packing(*_pack(_D3, semi_axes, target, seed, aspect, orientation,
+                          axis, threads, time_limit, step_limit, progress,
+                          progress_every))
+
+
+def _pack(sh, semi_axes, target, seed, aspect, orientation, axis, threads,
+          time_limit, step_limit, progress, progress_every):
+    """`pack` (sh = _D3) and `pypw85.d2.pack`: the fields of the result."""
+    d = sh.dim
     a = np.asarray(semi_axes)
     if a.dtype.kind not in "iuf":
         raise TypeError("pack: semi_axes must hold real numbers, got dtype %s"
                         % a.dtype)
-    if a.ndim != 2 or a.shape[1] != 3:
-        raise ValueError("pack: semi_axes must have shape (n, 3), got %s"
-                         % (a.shape,))
+    if a.ndim != 2 or a.shape[1] != d:
+        raise ValueError("pack: semi_axes must have shape (n, %d), got %s"
+                         % (d, a.shape))
     a = np.ascontiguousarray(a, dtype=np.float64)
     n = a.shape[0]
     if n == 0:
-        raise Error(EINVAL, "pack", "semi_axes holds no ellipsoid (n = 0)")
+        raise Error(EINVAL, "pack", "semi_axes holds no %s (n = 0)"
+                    % sh.noun)
     if not np.all(np.isfinite(a)):
         k = int(np.argmin(np.isfinite(a).all(axis=1)))
         raise Error(EDOM, "pack", "semi_axes[%d] = %s is not finite"
@@ -211,13 +239,14 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
         raise Error(EINVAL, "pack", "orientation = %r is not one of %s"
                     % (orientation, ", ".join(map(repr, _ORIENTATIONS))))
     asp = [_positive("aspect[%d]" % k, x) for k, x in
-           enumerate(_three("aspect", aspect))]
-    ax = _three("axis", axis)
+           enumerate(_reals("aspect", aspect, d))]
+    ax = _reals("axis", axis, d)
     for k, x in enumerate(ax):
         if not math.isfinite(x):
             raise Error(EDOM, "pack", "axis[%d] = %r is not finite" % (k, x))
     if not any(ax):
-        raise Error(EINVAL, "pack", "axis = (0, 0, 0) has no direction")
+        raise Error(EINVAL, "pack", "axis = (%s) has no direction"
+                    % ", ".join(["0"] * d))
     threads = _count("threads", threads, 1, 2**31 - 1)
     limit = 0.0 if time_limit is None else _positive("time_limit",
                                                      time_limit)
@@ -229,9 +258,9 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
     _lib.pw85_pack_options_init(ctypes.byref(opts))
     opts.target = target
     opts.seed = _count("seed", seed, 0, 2**64 - 1)
-    opts.aspect[:] = asp
+    opts.aspect[:d] = asp
     opts.orientation = _ORIENTATIONS[orientation]
-    opts.axis[:] = ax
+    opts.axis[:d] = ax
     opts.threads = threads
     opts.time_limit = limit
     opts.step_limit = steps
@@ -253,34 +282,35 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
                 raised.append(exc)
                 return 1
         opts.progress = _CALLBACK(call)
-    box = np.empty(3)
-    centres = np.empty((n, 3))
-    quaternions = np.empty((n, 4))
-    forms = np.empty((n, 6))
+    box = np.empty(d)
+    centres = np.empty((n, d))
+    orientations = np.empty((n,) + sh.orientation)
+    forms = np.empty((n, sh.sym))
     phi = ctypes.c_double()
     outcome = ctypes.c_int()
-    code = _lib.pw85_pack(n, a.ctypes.data, ctypes.byref(opts),
-                          box.ctypes.data, centres.ctypes.data,
-                          quaternions.ctypes.data, forms.ctypes.data,
-                          ctypes.byref(phi), ctypes.byref(outcome))
+    code = getattr(_lib, sh.function)(
+        n, a.ctypes.data, ctypes.byref(opts), box.ctypes.data,
+        centres.ctypes.data, orientations.ctypes.data, forms.ctypes.data,
+        ctypes.byref(phi), ctypes.byref(outcome))
     if raised:
         raise raised[0]
     if code == EINVAL:
         # Every other rule of PW85_EINVAL was checked above: the side rule
         # (decided by the library alone, whose arithmetic is the rule),
         # with the numbers.
-        volume = 4.0 / 3.0 * math.pi * float(np.sum(np.prod(a, axis=1)))
-        s = (volume / (target * asp[0] * asp[1] * asp[2])) ** (1.0 / 3.0)
+        volume = sh.measure * float(np.sum(np.prod(a, axis=1)))
+        s = (volume / (target * math.prod(asp))) ** (1.0 / d)
         k = int(np.argmin(np.asarray(asp)))
-        raise Error(EINVAL, "pack", "the box at target %.6g has side "
+        raise Error(EINVAL, "pack", "the %s at target %.6g has side "
                     "L_%d = %.6g, not above 2·a_max·(1 + 2⁻⁹) = %.6g "
                     "(the largest semi-axis, %.6g, must fit: lower the "
                     "target or change the aspect)"
-                    % (target, k, asp[k] * s, 2 * amax * _SIDE_MARGIN, amax))
+                    % (sh.domain, target, k, asp[k] * s,
+                       2 * amax * _SIDE_MARGIN, amax))
     if code != 0:
         raise Error(code, "pack")
-    return Packing(box, centres, quaternions, forms, phi.value,
-                   _OUTCOMES[outcome.value])
+    return (box, centres, orientations, forms, phi.value,
+            _OUTCOMES[outcome.value])
 
 
 def _count(name, x, lo, hi):
@@ -297,13 +327,14 @@ def _count(name, x, lo, hi):
     return x
 
 
-def _three(name, x):
+def _reals(name, x, d):
+    """x as a list of d floats, or raise naming it."""
     try:
         v = [float(y) for y in x]
     except (TypeError, ValueError):
-        raise TypeError("pack: %s must be 3 real numbers, got %r"
-                        % (name, x)) from None
-    if len(v) != 3:
-        raise ValueError("pack: %s must be 3 real numbers, got %d"
-                         % (name, len(v)))
+        raise TypeError("pack: %s must be %d real numbers, got %r"
+                        % (name, d, x)) from None
+    if len(v) != d:
+        raise ValueError("pack: %s must be %d real numbers, got %d"
+                         % (name, d, len(v)))
     return v
