@@ -18,7 +18,6 @@
 #define PW85_2D_PACK_HPP
 
 #include <array>
-#include <type_traits>
 #include <vector>
 
 #include "pw85_2d_pack.h"
@@ -65,12 +64,8 @@ inline int pack(std::vector<double> const &semi_axes,
 template <typename F>
 int pack(std::vector<double> const &semi_axes, PackOptions const &options,
          F &&progress, Packing &out) noexcept {
-  using G = typename std::remove_reference<F>::type;
-  pw85_pack_options o = options;
-  o.progress = &detail_pack::call_progress<G>;
-  o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
-  return detail_pack::run<2, 1, 3>(pw85_2d_pack, &Packing::angles,
-                                   semi_axes, o, out);
+  return detail_pack::run_with<2, 1, 3>(pw85_2d_pack, &Packing::angles,
+                                        semi_axes, options, progress, out);
 }
 
 }  // namespace d2

@@ -108,6 +108,20 @@ int run(Fn fn, std::vector<double> Result::*orientations,
   return PW85_SUCCESS;
 }
 
+// run() with a progress callable as the callback of a copy of the options.
+template <std::size_t D, std::size_t O, std::size_t S, typename Result,
+          typename Fn, typename F>
+int run_with(Fn fn, std::vector<double> Result::*orientations,
+             std::vector<double> const &semi_axes,
+             pw85_pack_options const &options, F &&progress,
+             Result &out) noexcept {
+  using G = typename std::remove_reference<F>::type;
+  pw85_pack_options o = options;
+  o.progress = &call_progress<G>;
+  o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
+  return run<D, O, S>(fn, orientations, semi_axes, o, out);
+}
+
 }  // namespace detail_pack
 /// @endcond
 
@@ -136,12 +150,8 @@ inline int pack(std::vector<double> const &semi_axes,
 template <typename F>
 int pack(std::vector<double> const &semi_axes, PackOptions const &options,
          F &&progress, Packing &out) noexcept {
-  using G = typename std::remove_reference<F>::type;
-  pw85_pack_options o = options;
-  o.progress = &detail_pack::call_progress<G>;
-  o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
-  return detail_pack::run<3, 4, 6>(pw85_pack, &Packing::quaternions,
-                                   semi_axes, o, out);
+  return detail_pack::run_with<3, 4, 6>(pw85_pack, &Packing::quaternions,
+                                        semi_axes, options, progress, out);
 }
 
 }  // namespace pw85

@@ -6,7 +6,6 @@ energies against central differences, the balance of forces, the C path
 through a Python pair energy; docstrings of d2.Index in two dimensions."""
 
 import inspect
-import itertools
 import math
 
 import numpy as np
@@ -14,19 +13,12 @@ import pytest
 
 import pypw85
 from pypw85 import d2
+from test_pack import brute_overlaps as _brute_overlaps
 
 
 def brute_overlaps(p):
-    """Overlapping or tangent (i, j, shift) by d2.overlap on every pair
-    i < j and image shift in {-1, 0, 1}² (centres in [0, L), sides above
-    twice the largest semi-axis), in one batch call."""
-    n = len(p.centres)
-    i, j = np.triu_indices(n, 1)
-    shifts = np.array(list(itertools.product((-1, 0, 1), repeat=2)))
-    r = (p.centres[j][:, None, :] + shifts[None, :, :] * p.box
-         - p.centres[i][:, None, :])
-    res = d2.overlap(r, p.forms[i][:, None, :], p.forms[j][:, None, :])
-    return np.argwhere(res <= 0)
+    """test_pack.brute_overlaps with d2.overlap, images {-1, 0, 1}²."""
+    return _brute_overlaps(p, d2.overlap)
 
 
 def ellipses(n, aspect=1.3, poly=False):

@@ -130,78 +130,90 @@ def _positive(name, value, allow_zero=False):
     return v
 
 
-def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
-         aspect: Sequence[float] = (1.0, 1.0, 1.0),
-         orientation: str = "isotropic",
-         axis: Sequence[float] = (0.0, 0.0, 1.0), threads: int = 1,
-         time_limit: Optional[float] = None,
-         step_limit: Optional[int] = None,
-         progress: Optional[Callable[[dict], object]] = None,
-         progress_every: int = 100) -> Packing:
-    """Pack ellipsoids in a periodic box, no pair overlapping
-    (``pw85_pack``; its header describes the method and its sources).
+def _packer(sh, result, aspect, axis, module, doc):
+    """The public function that packs the shapes of sh into a result (a
+    NamedTuple class): its signature written once for both dimensions,
+    with the defaults of aspect and axis of the dimension."""
+    def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
+             aspect: Sequence[float] = aspect,
+             orientation: str = "isotropic",
+             axis: Sequence[float] = axis, threads: int = 1,
+             time_limit: Optional[float] = None,
+             step_limit: Optional[int] = None,
+             progress: Optional[Callable[[dict], object]] = None,
+             progress_every: int = 100):
+        return result(*_pack(sh, semi_axes, target, seed, aspect,
+                             orientation, axis, threads, time_limit,
+                             step_limit, progress, progress_every))
+    pack.__annotations__["return"] = result.__name__
+    pack.__module__ = module
+    pack.__qualname__ = "pack"
+    pack.__doc__ = doc
+    return pack
 
-    Parameters
-    ----------
-    semi_axes : array_like, shape (n, 3)
-        The semi-axes of each ellipsoid (> 0): any mix of sizes and shapes
-        (``np.tile(shape, (n, 1))`` for n of one shape).
-    target : float
-        The packing fraction to reach, in (0, 1).
-    seed : int
-        The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and seed give
-        the same packing, bit for bit, for any ``threads``.
-    aspect : 3 floats
-        The box's sides are proportional to these (cube by default).
-    orientation : {"isotropic", "aligned"}
-        Uniform random orientations, or the largest semi-axis of every
-        ellipsoid along ``axis`` (fibres; they then turn about it only).
-    axis : 3 floats
-        The direction of ``"aligned"`` (normalised; not zero).
-    threads : int
-        OpenMP threads (≥ 1).
-    time_limit : float, optional
-        Seconds of wall clock; then the outcome is ``"limit"``.
-    step_limit : int, optional
-        Steps of the minimiser; then the outcome is ``"limit"``.
-    progress : callable, optional
-        Called every ``progress_every`` steps with a dict: ``phi`` (the
-        densest certified packing fraction so far), ``phi_trial`` (the one
-        being relaxed), ``energy`` (overlap energy per ellipsoid),
-        ``elapsed`` (seconds), ``steps``, ``pairs`` (overlapping pairs).
-        A true return value stops the run (outcome ``"cancelled"``); an
-        exception stops it and is raised again. Called from Python: about
-        a microsecond per call, negligible at 100 steps.
-    progress_every : int
-        Steps between calls of ``progress`` (≥ 1).
 
-    Returns
-    -------
-    Packing
-        ``box``, ``centres``, ``quaternions``, ``forms``, ``phi`` and
-        ``outcome`` (``"target"``, ``"limit"``, ``"jammed"`` or
-        ``"cancelled"``). Whatever the outcome, no pair overlaps (checked
-        by the all-pairs query before the library returns).
+pack = _packer(_D3, Packing, (1.0, 1.0, 1.0), (0.0, 0.0, 1.0), __name__,
+               """Pack ellipsoids in a periodic box, no pair overlapping
+(``pw85_pack``; its header describes the method and its sources).
 
-    Raises
-    ------
-    Error
-        A status of the library, with a message naming the argument: `EDOM`
-        for a value not finite, `EINVAL` for n = 0, a semi-axis not > 0, a
-        target not in (0, 1), an aspect not > 0, an unknown orientation, a
-        zero axis, threads < 1, a limit not > 0, or a box too small at the
-        target for the largest ellipsoid (decided by the library, as
-        ``pw85_pack.h`` states the rule); `ERANGE` for semi-axes spanning
-        more than 2⁴⁰.
-    TypeError, ValueError
-        An argument of the wrong type or shape (``threads``,
-        ``step_limit`` and ``progress_every`` are ints), or a count beyond
-        the C type that holds it (``threads`` above 2³¹ − 1, a limit above
-        2⁶⁴ − 1).
-    """
-    return Packing(*_pack(_D3, semi_axes, target, seed, aspect, orientation,
-                          axis, threads, time_limit, step_limit, progress,
-                          progress_every))
+Parameters
+----------
+semi_axes : array_like, shape (n, 3)
+    The semi-axes of each ellipsoid (> 0): any mix of sizes and shapes
+    (``np.tile(shape, (n, 1))`` for n of one shape).
+target : float
+    The packing fraction to reach, in (0, 1).
+seed : int
+    The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and seed give
+    the same packing, bit for bit, for any ``threads``.
+aspect : 3 floats
+    The box's sides are proportional to these (cube by default).
+orientation : {"isotropic", "aligned"}
+    Uniform random orientations, or the largest semi-axis of every
+    ellipsoid along ``axis`` (fibres; they then turn about it only).
+axis : 3 floats
+    The direction of ``"aligned"`` (normalised; not zero).
+threads : int
+    OpenMP threads (≥ 1).
+time_limit : float, optional
+    Seconds of wall clock; then the outcome is ``"limit"``.
+step_limit : int, optional
+    Steps of the minimiser; then the outcome is ``"limit"``.
+progress : callable, optional
+    Called every ``progress_every`` steps with a dict: ``phi`` (the
+    densest certified packing fraction so far), ``phi_trial`` (the one
+    being relaxed), ``energy`` (overlap energy per ellipsoid),
+    ``elapsed`` (seconds), ``steps``, ``pairs`` (overlapping pairs).
+    A true return value stops the run (outcome ``"cancelled"``); an
+    exception stops it and is raised again. Called from Python: about
+    a microsecond per call, negligible at 100 steps.
+progress_every : int
+    Steps between calls of ``progress`` (≥ 1).
+
+Returns
+-------
+Packing
+    ``box``, ``centres``, ``quaternions``, ``forms``, ``phi`` and
+    ``outcome`` (``"target"``, ``"limit"``, ``"jammed"`` or
+    ``"cancelled"``). Whatever the outcome, no pair overlaps (checked
+    by the all-pairs query before the library returns).
+
+Raises
+------
+Error
+    A status of the library, with a message naming the argument: `EDOM`
+    for a value not finite, `EINVAL` for n = 0, a semi-axis not > 0, a
+    target not in (0, 1), an aspect not > 0, an unknown orientation, a
+    zero axis, threads < 1, a limit not > 0, or a box too small at the
+    target for the largest ellipsoid (decided by the library, as
+    ``pw85_pack.h`` states the rule); `ERANGE` for semi-axes spanning
+    more than 2⁴⁰.
+TypeError, ValueError
+    An argument of the wrong type or shape (``threads``,
+    ``step_limit`` and ``progress_every`` are ints), or a count beyond
+    the C type that holds it (``threads`` above 2³¹ − 1, a limit above
+    2⁶⁴ − 1).
+    """)
 
 
 def _pack(sh, semi_axes, target, seed, aspect, orientation, axis, threads,

@@ -44,7 +44,7 @@ import typing
 import numpy as np
 
 if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
-    from typing import Callable, Optional, Sequence, Tuple, Union
+    from typing import Optional, Tuple, Union
     from numpy.typing import ArrayLike, NDArray
     _F64 = NDArray[np.float64]
 
@@ -57,7 +57,7 @@ from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 from ._symbols import LIBPW85_2D, declare as _declare
 from .index import (_Dimension, _Index, _prototypes as _index_prototypes)
-from ._pack import _Options, _Shape, _pack
+from ._pack import _Options, _Shape, _packer
 
 __all__ = [
     "DIM", "SYM", "GEOM_MU2", "GEOM_LAMBDA", "GEOM_POINT", "GEOM_NORMAL",
@@ -612,50 +612,40 @@ class Packing(typing.NamedTuple):
     outcome: str
 
 
-def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
-         aspect: Sequence[float] = (1.0, 1.0),
-         orientation: str = "isotropic",
-         axis: Sequence[float] = (1.0, 0.0), threads: int = 1,
-         time_limit: Optional[float] = None,
-         step_limit: Optional[int] = None,
-         progress: Optional[Callable[[dict], object]] = None,
-         progress_every: int = 100) -> Packing:
-    """Pack ellipses in a periodic rectangle, no pair overlapping
-    (``pw85_2d_pack``): `pypw85.pack` for ellipses, the same code.
+pack = _packer(_D2, Packing, (1.0, 1.0), (1.0, 0.0), __name__,
+               """Pack ellipses in a periodic rectangle, no pair overlapping
+(``pw85_2d_pack``): `pypw85.pack` for ellipses, the same code.
 
-    Parameters
-    ----------
-    semi_axes : array_like, shape (n, 2)
-        The semi-axes of each ellipse (> 0): any mix of sizes and shapes.
-    target : float
-        The packing fraction Σπ·a0·a1 / (L0·L1) to reach, in (0, 1).
-    seed : int
-        The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs
-        and seed give the same packing, bit for bit, for any ``threads``.
-    aspect : 2 floats
-        The rectangle's sides are proportional to these (a square by
-        default).
-    orientation : {"isotropic", "aligned"}
-        Uniform random angles, or the largest semi-axis of every ellipse
-        along ``axis`` (the ellipses then never turn).
-    axis : 2 floats
-        The direction of ``"aligned"`` in the plane (not zero).
-    threads, time_limit, step_limit, progress, progress_every
-        As `pypw85.pack` (``energy`` of the progress dict is per ellipse).
+Parameters
+----------
+semi_axes : array_like, shape (n, 2)
+    The semi-axes of each ellipse (> 0): any mix of sizes and shapes.
+target : float
+    The packing fraction Σπ·a0·a1 / (L0·L1) to reach, in (0, 1).
+seed : int
+    The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs
+    and seed give the same packing, bit for bit, for any ``threads``.
+aspect : 2 floats
+    The rectangle's sides are proportional to these (a square by
+    default).
+orientation : {"isotropic", "aligned"}
+    Uniform random angles, or the largest semi-axis of every ellipse
+    along ``axis`` (the ellipses then never turn).
+axis : 2 floats
+    The direction of ``"aligned"`` in the plane (not zero).
+threads, time_limit, step_limit, progress, progress_every
+    As `pypw85.pack` (``energy`` of the progress dict is per ellipse).
 
-    Returns
-    -------
-    Packing
-        ``box``, ``centres``, ``angles``, ``forms``, ``phi`` and
-        ``outcome``. Whatever the outcome, no pair overlaps (checked by the
-        all-pairs query of the index of ellipses before the library
-        returns).
+Returns
+-------
+Packing
+    ``box``, ``centres``, ``angles``, ``forms``, ``phi`` and
+    ``outcome``. Whatever the outcome, no pair overlaps (checked by the
+    all-pairs query of the index of ellipses before the library
+    returns).
 
-    Raises
-    ------
-    Error, TypeError, ValueError
-        As `pypw85.pack`, with the side rule of the rectangle.
-    """
-    return Packing(*_pack(_D2, semi_axes, target, seed, aspect, orientation,
-                          axis, threads, time_limit, step_limit, progress,
-                          progress_every))
+Raises
+------
+Error, TypeError, ValueError
+    As `pypw85.pack`, with the side rule of the rectangle.
+    """)
