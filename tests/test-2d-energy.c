@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "energy-util.h"
 #include "pw85_2d.h"
 #include "pw85_2d_index.h"
 #include "testutil.h"
@@ -77,33 +78,25 @@ static double total(pw85_2d_index const *index, size_t n) {
   return e;
 }
 
-/* U = ε(1 − μ)² and dU/dμ² = −ε(1 − μ)/μ for μ < 1 (pw85_index.h). */
-static void pair_energy(double mu2, double eps, double out[2]) {
-  double const mu = sqrt(mu2);
-  out[0] = mu < 1.0 ? eps * (1.0 - mu) * (1.0 - mu) : 0.0;
-  out[1] = mu < 1.0 && mu > 0.0 ? -eps * (1.0 - mu) / mu : 0.0;
-}
-
 /* Every pair i < j and image n ∈ {−2, …, 2}² (the square is wider than
  * twice the reach of a pair, 2·1.3, only for the sides used below: the
  * loop over five images per axis covers every side ≥ 1.3), summed with no
  * index. Returns Σ U, and Σ |U| and the number of pairs with μ < 1. */
-static double brute_force(Ellipses const *s, double *magnitude,
-                          size_t *pairs) {
+static double brute_force(Ellipses const *s, double *magnitude, size_t *pairs) {
   double e = 0.0, m = 0.0;
   size_t count = 0;
   for (size_t i = 0; i < s->n; i++)
     for (size_t j = i + 1; j < s->n; j++)
       for (int n0 = -2; n0 <= 2; n0++)
         for (int n1 = -2; n1 <= 2; n1++) {
-          double const r[2] = {s->c[2 * j] + n0 * s->box[0] - s->c[2 * i],
-                               s->c[2 * j + 1] + n1 * s->box[1] -
-                                   s->c[2 * i + 1]};
+          double const r[2] = {
+              s->c[2 * j] + n0 * s->box[0] - s->c[2 * i],
+              s->c[2 * j + 1] + n1 * s->box[1] - s->c[2 * i + 1]};
           double ml[2], u[2];
-          g_assert_cmpint(pw85_2d_contact_function(r, s->q + 3 * i,
-                                                   s->q + 3 * j, ml),
-                          ==, PW85_SUCCESS);
-          pair_energy(ml[0], 1.0, u);
+          g_assert_cmpint(
+              pw85_2d_contact_function(r, s->q + 3 * i, s->q + 3 * j, ml), ==,
+              PW85_SUCCESS);
+          overlap_u(ml[0], 1.0, u);
           count += ml[0] < 1.0;
           e += u[0];
           m += fabs(u[0]);
@@ -172,18 +165,25 @@ static void test_finite_differences(void) {
       cp[k] += h;
       cm[k] -= h;
       d[k] = -(moved(index, &s, i, cp, s.theta[i]) -
-               moved(index, &s, i, cm, s.theta[i])) / (2 * h);
+               moved(index, &s, i, cm, s.theta[i])) /
+             (2 * h);
     }
     d[2] = -(moved(index, &s, i, c0, s.theta[i] + h) -
-             moved(index, &s, i, c0, s.theta[i] - h)) / (2 * h);
+             moved(index, &s, i, c0, s.theta[i] - h)) /
+           (2 * h);
     double const got[3] = {f[2 * i], f[2 * i + 1], t[i]};
     for (int k = 0; k < 3; k++) {
       double const err = fabs(d[k] - got[k]) / (1.0 + fabs(d[k]));
       worst = fmax(worst, err);
       if (!(err <= tol))
-        g_test_fail_printf("ellipse %zu, %s: %.12g, central difference "
-                           "%.12g", i, k == 0 ? "F_x" : k == 1 ? "F_y" : "T",
-                           got[k], d[k]);
+        g_test_fail_printf(
+            "ellipse %zu, %s: %.12g, central difference "
+            "%.12g",
+            i,
+            k == 0   ? "F_x"
+            : k == 1 ? "F_y"
+                     : "T",
+            got[k], d[k]);
     }
   }
   g_test_message("largest error against central differences: %.3g", worst);
@@ -204,14 +204,16 @@ static void test_balance(void) {
                                        NULL, 2, s.n, &e, f, t),
                   ==, PW85_SUCCESS);
   size_t count = 0;
-  g_assert_cmpint(pw85_2d_index_pairs_within(index, 1.0, 1, 0, NULL, NULL,
-                                             NULL, &count), ==, 0);
+  g_assert_cmpint(
+      pw85_2d_index_pairs_within(index, 1.0, 1, 0, NULL, NULL, NULL, &count),
+      ==, 0);
   g_assert_cmpuint(count, >, 100);
   size_t *ids = g_new(size_t, 2 * count);
   int *shifts = g_new(int, 2 * count);
   double *ml = g_new(double, 2 * count);
-  g_assert_cmpint(pw85_2d_index_pairs_within(index, 1.0, 1, count, ids,
-                                             shifts, ml, &count), ==, 0);
+  g_assert_cmpint(
+      pw85_2d_index_pairs_within(index, 1.0, 1, count, ids, shifts, ml, &count),
+      ==, 0);
   int crossing = 0; /* pairs through a periodic image */
   double fx = 0, fy = 0, torque = 0, fscale = 0, tscale = 0;
   for (size_t k = 0; k < count; k++) {
@@ -223,9 +225,10 @@ static void test_balance(void) {
       r[a] = s.c[2 * j + a] + nl[a] - s.c[2 * i + a];
     }
     crossing += shifts[2 * k] != 0 || shifts[2 * k + 1] != 0;
-    g_assert_cmpint(pw85_2d_contact_derivatives(r, s.q + 3 * i, s.q + 3 * j,
-                                                geometry, d), ==, 0);
-    pair_energy(geometry[PW85_2D_GEOM_MU2], 2.0, u);
+    g_assert_cmpint(
+        pw85_2d_contact_derivatives(r, s.q + 3 * i, s.q + 3 * j, geometry, d),
+        ==, 0);
+    overlap_u(geometry[PW85_2D_GEOM_MU2], 2.0, u);
     double const fj[2] = {-u[1] * d[PW85_2D_DERIV_R12],
                           -u[1] * d[PW85_2D_DERIV_R12 + 1]};
     double const m = nl[0] * fj[1] - nl[1] * fj[0];
@@ -251,8 +254,10 @@ static void test_balance(void) {
     g_test_fail_printf("total force %.3g %.3g > %.3g", fx, fy, bf);
   if (!(fabs(torque) <= bt))
     g_test_fail_printf("total torque %.3g > %.3g", torque, bt);
-  g_test_message("total force %.3g %.3g (scale %.3g), torque %.3g (scale "
-                 "%.3g)", fx, fy, fscale, torque, tscale);
+  g_test_message(
+      "total force %.3g %.3g (scale %.3g), torque %.3g (scale "
+      "%.3g)",
+      fx, fy, fscale, torque, tscale);
   g_free(ids);
   g_free(shifts);
   g_free(ml);
@@ -273,14 +278,15 @@ static void test_threads(void) {
   for (int k = 0; k < 3; k++) {
     f[k] = g_new(double, 2 * n);
     t[k] = g_new(double, n);
-    g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_OVERLAP, 1.0,
-                                         NULL, NULL, threads[k], n, e + k,
-                                         f[k], t[k]),
-                    ==, PW85_SUCCESS);
+    g_assert_cmpint(
+        pw85_2d_index_energy(index, PW85_ENERGY_OVERLAP, 1.0, NULL, NULL,
+                             threads[k], n, e + k, f[k], t[k]),
+        ==, PW85_SUCCESS);
   }
   size_t count = 0;
-  g_assert_cmpint(pw85_2d_index_overlapping_pairs(index, 1, 0, NULL, NULL,
-                                                  NULL, &count), ==, 0);
+  g_assert_cmpint(
+      pw85_2d_index_overlapping_pairs(index, 1, 0, NULL, NULL, NULL, &count),
+      ==, 0);
   g_assert_cmpuint(count, >, 2048);
   for (int k = 1; k < 3; k++) {
     g_assert_true(memcmp(e, e + k, sizeof(double)) == 0);
@@ -295,19 +301,6 @@ static void test_threads(void) {
   release(&s);
 }
 
-static int as_overlap(double mu2, void *data, double out[2]) {
-  pair_energy(mu2, *(double const *)data, out);
-  return 0;
-}
-
-/* U(μ²) = (t − μ²)²/2 for μ² < t. */
-static int soft(double mu2, void *data, double out[2]) {
-  double const t = *(double const *)data;
-  out[0] = 0.5 * (t - mu2) * (t - mu2);
-  out[1] = mu2 - t;
-  return 0;
-}
-
 /* The user kind with the overlap energy's formula: the outputs of the
  * overlap kind, bit for bit; and a soft energy reaching beyond contact
  * (t = 1.5) against central differences (tolerance of
@@ -319,34 +312,43 @@ static void test_user(void) {
   double *f1 = g_new(double, 2 * s.n), *t1 = g_new(double, s.n);
   double *f2 = g_new(double, 2 * s.n), *t2 = g_new(double, s.n);
   g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_OVERLAP, eps, NULL,
-                                       NULL, 2, s.n, &e1, f1, t1), ==, 0);
-  g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_USER, 1.0,
-                                       as_overlap, &eps, 2, s.n, &e2, f2, t2),
+                                       NULL, 2, s.n, &e1, f1, t1),
                   ==, 0);
+  g_assert_cmpint(
+      pw85_2d_index_energy(index, PW85_ENERGY_USER, 1.0, overlap_callback, &eps,
+                           2, s.n, &e2, f2, t2),
+      ==, 0);
   g_assert_cmpfloat(e1, >, 0.0);
   g_assert_true(memcmp(&e1, &e2, sizeof e1) == 0);
   g_assert_true(memcmp(f1, f2, 2 * s.n * sizeof(double)) == 0);
   g_assert_true(memcmp(t1, t2, s.n * sizeof(double)) == 0);
   double t = 1.5;
-  g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_USER, t, soft, &t,
-                                       1, s.n, &e1, f1, t1), ==, 0);
+  g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_USER, t,
+                                       soft_callback, &t, 1, s.n, &e1, f1, t1),
+                  ==, 0);
   double const h = 1e-5, tol = 1e-7;
   for (size_t i = 0; i < 40; i++) {
     double const *c0 = s.c + 2 * i;
     double ep, em, q[3];
     g_assert_cmpint(pw85_2d_ellipse(s.a + 2 * i, s.theta[i] + h, q), ==, 0);
     g_assert_cmpint(pw85_2d_index_update(index, i, c0, q), ==, 0);
-    g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_USER, t, soft, &t,
-                                         1, s.n, &ep, NULL, NULL), ==, 0);
+    g_assert_cmpint(
+        pw85_2d_index_energy(index, PW85_ENERGY_USER, t, soft_callback, &t, 1,
+                             s.n, &ep, NULL, NULL),
+        ==, 0);
     g_assert_cmpint(pw85_2d_ellipse(s.a + 2 * i, s.theta[i] - h, q), ==, 0);
     g_assert_cmpint(pw85_2d_index_update(index, i, c0, q), ==, 0);
-    g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_USER, t, soft, &t,
-                                         1, s.n, &em, NULL, NULL), ==, 0);
+    g_assert_cmpint(
+        pw85_2d_index_energy(index, PW85_ENERGY_USER, t, soft_callback, &t, 1,
+                             s.n, &em, NULL, NULL),
+        ==, 0);
     g_assert_cmpint(pw85_2d_index_update(index, i, c0, s.q + 3 * i), ==, 0);
     double const d = -(ep - em) / (2 * h);
     if (!(fabs(d - t1[i]) <= tol * (1.0 + fabs(d))))
-      g_test_fail_printf("soft torque on %zu: %.12g, central difference "
-                         "%.12g", i, t1[i], d);
+      g_test_fail_printf(
+          "soft torque on %zu: %.12g, central difference "
+          "%.12g",
+          i, t1[i], d);
   }
   g_free(f1);
   g_free(t1);
@@ -354,13 +356,6 @@ static void test_user(void) {
   g_free(t2);
   pw85_2d_index_destroy(index);
   release(&s);
-}
-
-static int stop(double mu2, void *data, double out[2]) {
-  (void)mu2;
-  (void)data;
-  out[0] = out[1] = 0.0;
-  return 1;
 }
 
 static int not_finite(double mu2, void *data, double out[2]) {
@@ -404,11 +399,11 @@ static void test_errors(void) {
       {index, PW85_ENERGY_OVERLAP, NAN, NULL, 1, 40, 1, PW85_EDOM},
       {index, PW85_ENERGY_OVERLAP, -INFINITY, NULL, 1, 40, 1, PW85_EDOM},
       {index, PW85_ENERGY_USER, 1.0, NULL, 1, 40, 1, PW85_EINVAL},
-      {index, PW85_ENERGY_USER, -1.0, soft, 1, 40, 1, PW85_EINVAL},
+      {index, PW85_ENERGY_USER, -1.0, soft_callback, 1, 40, 1, PW85_EINVAL},
       {index, PW85_ENERGY_OVERLAP, 1.0, NULL, 0, 40, 1, PW85_EINVAL},
       {index, PW85_ENERGY_OVERLAP, 1.0, NULL, -3, 40, 1, PW85_EINVAL},
       {index, PW85_ENERGY_OVERLAP, 1.0, NULL, 1, 39, 1, PW85_EINVAL},
-      {index, PW85_ENERGY_USER, 1.0, stop, 1, 40, 1, PW85_ECANCELLED},
+      {index, PW85_ENERGY_USER, 1.0, stop_callback, 1, 40, 1, PW85_ECANCELLED},
       {index, PW85_ENERGY_USER, 1.0, not_finite, 1, 40, 1, PW85_EDOM},
       {index, PW85_ENERGY_USER, 1.5, huge, 1, 40, 1, PW85_ERANGE},
       /* 2·n doubles that no array can hold */
@@ -432,15 +427,16 @@ static void test_errors(void) {
   /* Without forces nor torques, n is only a bound on the ids: valid. */
   double e = 42.0;
   g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_OVERLAP, 1.0, NULL,
-                                       NULL, 1, SIZE_MAX, &e, NULL, NULL), ==,
-                  PW85_SUCCESS);
+                                       NULL, 1, SIZE_MAX, &e, NULL, NULL),
+                  ==, PW85_SUCCESS);
   g_assert_cmpfloat(e, ==, total(index, 40));
   /* An empty index: 0, and rows of zeros. */
   pw85_2d_index *empty = NULL;
   double f[6] = {1, 1, 1, 1, 1, 1}, tq[3] = {1, 1, 1};
   g_assert_cmpint(pw85_2d_index_create(NULL, &empty), ==, 0);
   g_assert_cmpint(pw85_2d_index_energy(empty, PW85_ENERGY_OVERLAP, 1.0, NULL,
-                                       NULL, 1, 3, &e, f, tq), ==, 0);
+                                       NULL, 1, 3, &e, f, tq),
+                  ==, 0);
   g_assert_cmpfloat(e, ==, 0.0);
   for (int m = 0; m < 6; m++) g_assert_cmpfloat(f[m], ==, 0.0);
   for (int m = 0; m < 3; m++) g_assert_cmpfloat(tq[m], ==, 0.0);
@@ -461,7 +457,8 @@ static void test_circles(void) {
   g_assert_cmpint(pw85_2d_index_insert(index, 1, c1, q), ==, 0);
   double e, f[4], t[2];
   g_assert_cmpint(pw85_2d_index_energy(index, PW85_ENERGY_OVERLAP, 1.0, NULL,
-                                       NULL, 1, 2, &e, f, t), ==, 0);
+                                       NULL, 1, 2, &e, f, t),
+                  ==, 0);
   g_assert_cmpfloat(e, ==, 0.25);
   g_assert_cmpfloat_with_epsilon(f[2], 0.5, 4 * U_ROUND);
   g_assert_cmpfloat(f[0], ==, -f[2]);

@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "energy-util.h"
 #include "pw85_2d.h"
 #include "pw85_2d_pack.h"
 #include "testutil.h"
@@ -27,8 +28,8 @@ static Ellipses pack(size_t n, double const *a, pw85_pack_options const *o) {
   s.c = g_new(double, 2 * n);
   s.theta = g_new(double, n);
   s.q = g_new(double, 3 * n);
-  s.status = pw85_2d_pack(n, a, o, s.box, s.c, s.theta, s.q, &s.phi,
-                          &s.outcome);
+  s.status =
+      pw85_2d_pack(n, a, o, s.box, s.c, s.theta, s.q, &s.phi, &s.outcome);
   return s;
 }
 
@@ -57,16 +58,17 @@ static double brute_force(Ellipses const *s, size_t *bad) {
     for (size_t j = i + 1; j < s->n; j++)
       for (int n0 = -1; n0 <= 1; n0++)
         for (int n1 = -1; n1 <= 1; n1++) {
-          double const r[2] = {s->c[2 * j] + n0 * s->box[0] - s->c[2 * i],
-                               s->c[2 * j + 1] + n1 * s->box[1] -
-                                   s->c[2 * i + 1]};
+          double const r[2] = {
+              s->c[2 * j] + n0 * s->box[0] - s->c[2 * i],
+              s->c[2 * j + 1] + n1 * s->box[1] - s->c[2 * i + 1]};
           double ml[2];
           int result = 2;
-          g_assert_cmpint(pw85_2d_overlap(r, s->q + 3 * i, s->q + 3 * j,
-                                          &result), ==, PW85_SUCCESS);
-          g_assert_cmpint(pw85_2d_contact_function(r, s->q + 3 * i,
-                                                   s->q + 3 * j, ml),
-                          ==, PW85_SUCCESS);
+          g_assert_cmpint(
+              pw85_2d_overlap(r, s->q + 3 * i, s->q + 3 * j, &result), ==,
+              PW85_SUCCESS);
+          g_assert_cmpint(
+              pw85_2d_contact_function(r, s->q + 3 * i, s->q + 3 * j, ml), ==,
+              PW85_SUCCESS);
           *bad += result <= 0;
           least = fmin(least, ml[0]);
         }
@@ -141,8 +143,9 @@ static void test_targets(void) {
     check(&s);
     g_assert_cmpint(s.outcome, ==, PW85_PACK_TARGET);
     g_assert_cmpfloat(fabs(s.phi - cases[k].target), <=, 1e-14);
-    g_assert_cmpfloat(fabs(s.box[1] / s.box[0] -
-                           cases[k].sides[1] / cases[k].sides[0]), <=, 1e-14);
+    g_assert_cmpfloat(
+        fabs(s.box[1] / s.box[0] - cases[k].sides[1] / cases[k].sides[0]), <=,
+        1e-14);
     release(&s);
     g_free(a);
   }
@@ -206,8 +209,8 @@ static void test_determinism(void) {
   o.threads = 1;
   double box[2], *c = g_new(double, 2 * n), *q = g_new(double, 3 * n), phi;
   int outcome;
-  g_assert_cmpint(pw85_2d_pack(n, a, &o, box, c, NULL, q, &phi, &outcome),
-                  ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_pack(n, a, &o, box, c, NULL, q, &phi, &outcome), ==,
+                  PW85_SUCCESS);
   g_assert_true(memcmp(c, s1.c, 2 * n * sizeof(double)) == 0);
   g_assert_true(memcmp(q, s1.q, 3 * n * sizeof(double)) == 0);
   o.seed = 12;
@@ -219,15 +222,6 @@ static void test_determinism(void) {
   release(&s1);
   release(&s2);
   g_free(a);
-}
-
-static int calls;
-
-static int cancel_at_third(pw85_pack_progress const *p, void *data) {
-  g_assert_true(data == &calls);
-  g_assert_cmpfloat(p->phi_trial, >, 0.0);
-  g_assert_cmpfloat(p->energy, >=, 0.0);
-  return ++calls == 3;
 }
 
 /* A step limit and a cancellation: certified, below the target. */
@@ -244,11 +238,11 @@ static void test_outcomes(void) {
   g_assert_cmpfloat(s.phi, <, 0.84);
   g_assert_cmpfloat(s.phi, >, 0.0);
   release(&s);
+  int calls = 0;
   o.step_limit = 0;
   o.progress = cancel_at_third;
   o.progress_data = &calls;
   o.progress_every = 5;
-  calls = 0;
   s = pack(n, a, &o);
   check(&s);
   g_assert_cmpint(calls, ==, 3);
@@ -313,8 +307,10 @@ static void test_scaled(void) {
       ok = s.q[i] == ldexp(ref.q[i], 2 * e);
     ok = ok && memcmp(s.theta, ref.theta, n * sizeof(double)) == 0;
     if (!ok)
-      g_test_fail_printf("semi-axes times 2^%d: not the packing scaled "
-                         "(status %d)", e, s.status);
+      g_test_fail_printf(
+          "semi-axes times 2^%d: not the packing scaled "
+          "(status %d)",
+          e, s.status);
     release(&s);
     g_free(b);
   }
@@ -330,8 +326,8 @@ static void test_errors(void) {
   int outcome = 7;
   g_assert_cmpint(pw85_2d_pack(2, NULL, NULL, box, c, th, q, &phi, &outcome),
                   ==, PW85_EFAULT);
-  g_assert_cmpint(pw85_2d_pack(2, a, NULL, NULL, c, th, q, &phi, &outcome),
-                  ==, PW85_EFAULT);
+  g_assert_cmpint(pw85_2d_pack(2, a, NULL, NULL, c, th, q, &phi, &outcome), ==,
+                  PW85_EFAULT);
   g_assert_cmpint(pw85_2d_pack(2, a, NULL, box, NULL, th, q, &phi, &outcome),
                   ==, PW85_EFAULT);
   g_assert_cmpint(pw85_2d_pack(2, a, NULL, box, c, th, NULL, &phi, &outcome),
@@ -350,21 +346,28 @@ static void test_errors(void) {
   for (int v = 0; v < 4; v++) {
     double bad[4] = {1, 0.5, 1, 0.5};
     bad[3] = values[v];
-    g_assert_cmpint(pw85_2d_pack(2, bad, &o, box, c, th, q, &phi, &outcome),
-                    ==, statuses[v]);
+    g_assert_cmpint(pw85_2d_pack(2, bad, &o, box, c, th, q, &phi, &outcome), ==,
+                    statuses[v]);
   }
   struct {
     int field;
     double value;
     int status;
   } const cases[] = {
-      {0, 0.0, PW85_EINVAL},     {0, 1.0, PW85_EINVAL},
-      {0, NAN, PW85_EDOM},       {1, 0.0, PW85_EINVAL},
-      {1, -2.0, PW85_EINVAL},    {1, INFINITY, PW85_EDOM},
-      {2, 5.0, PW85_EINVAL},     {3, 0.0, PW85_EINVAL},
-      {3, NAN, PW85_EDOM},       {4, 0.0, PW85_EINVAL},
-      {5, -1.0, PW85_EINVAL},    {6, 0.0, PW85_EINVAL},
-      {7, 0.0, PW85_EINVAL},     {8, 1e-3, PW85_EINVAL},
+      {0, 0.0, PW85_EINVAL},
+      {0, 1.0, PW85_EINVAL},
+      {0, NAN, PW85_EDOM},
+      {1, 0.0, PW85_EINVAL},
+      {1, -2.0, PW85_EINVAL},
+      {1, INFINITY, PW85_EDOM},
+      {2, 5.0, PW85_EINVAL},
+      {3, 0.0, PW85_EINVAL},
+      {3, NAN, PW85_EDOM},
+      {4, 0.0, PW85_EINVAL},
+      {5, -1.0, PW85_EINVAL},
+      {6, 0.0, PW85_EINVAL},
+      {7, 0.0, PW85_EINVAL},
+      {8, 1e-3, PW85_EINVAL},
       /* the side rule: at 0.6, two ellipses of semi-axis 1 need sides
        * 2·(1 + 2^-9) = 2.004; the square's is √(2π·0.5/0.6) = 2.288, a
        * 4 : 1 rectangle's shorter one 1.144 */
@@ -375,19 +378,37 @@ static void test_errors(void) {
     o.target = 0.1;
     double const v = cases[k].value;
     switch (cases[k].field) {
-      case 0: o.target = v; break;
-      case 1: o.aspect[1] = v; break;
-      case 2: o.orientation = (int)v; break;
+      case 0:
+        o.target = v;
+        break;
+      case 1:
+        o.aspect[1] = v;
+        break;
+      case 2:
+        o.orientation = (int)v;
+        break;
       case 3: /* the axis, read with ALIGNED: zero, or NaN */
         o.orientation = PW85_PACK_ALIGNED;
         o.axis[0] = o.axis[1] = v;
         break;
-      case 4: o.threads = (int)v; break;
-      case 5: o.time_limit = v; break;
-      case 6: o.progress_every = (size_t)v; break;
-      case 7: o.size = (size_t)v; break;
-      case 8: o.aspect[0] = v; break; /* 1e-3 : 1 */
-      case 9: o.target = 0.6, o.aspect[0] = v; break;
+      case 4:
+        o.threads = (int)v;
+        break;
+      case 5:
+        o.time_limit = v;
+        break;
+      case 6:
+        o.progress_every = (size_t)v;
+        break;
+      case 7:
+        o.size = (size_t)v;
+        break;
+      case 8:
+        o.aspect[0] = v;
+        break; /* 1e-3 : 1 */
+      case 9:
+        o.target = 0.6, o.aspect[0] = v;
+        break;
     }
     int const st = pw85_2d_pack(2, a, &o, box, c, th, q, &phi, &outcome);
     if (st != cases[k].status)
@@ -402,13 +423,14 @@ static void test_errors(void) {
   o.axis[2] = -INFINITY;
   double box2[2], c2[4], q2[6], phi2;
   int outcome2;
-  g_assert_cmpint(pw85_2d_pack(2, a, &o, box2, c2, NULL, q2, &phi2,
-                               &outcome2), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_pack(2, a, &o, box2, c2, NULL, q2, &phi2, &outcome2),
+                  ==, PW85_SUCCESS);
   /* n whose 3·n forms (or 2·n semi-axes) no array can hold. */
   size_t const counts[] = {SIZE_MAX / 3 + 1, SIZE_MAX / 2 + 1, SIZE_MAX};
   for (size_t k = 0; k < G_N_ELEMENTS(counts); k++)
-    g_assert_cmpint(pw85_2d_pack(counts[k], a, NULL, box, c, th, q, &phi,
-                                 &outcome), ==, PW85_ENOMEM);
+    g_assert_cmpint(
+        pw85_2d_pack(counts[k], a, NULL, box, c, th, q, &phi, &outcome), ==,
+        PW85_ENOMEM);
   for (int k = 0; k < 2; k++) {
     g_assert_cmpfloat(box[k], ==, 7);
     g_assert_cmpfloat(th[k], ==, 7);
