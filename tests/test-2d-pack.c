@@ -277,6 +277,21 @@ static void test_aligned(void) {
     g_assert_cmpfloat(s.theta[i], ==, expected);
   }
   release(&s);
+  /* An axis in the third quadrant: the angles of ellipses whose largest
+   * semi-axis is the second (atan2 − π/2 < −π) are kept in [−π, π] by
+   * check(), and that semi-axis still lies along the axis. */
+  o.axis[0] = -1.0, o.axis[1] = -2.0;
+  o.target = 0.01; /* 3 far apart: no FIRE step, whose turn wraps θ */
+  s = pack(3, a, &o);
+  check(&s);
+  for (size_t i = 0; i < 3; i++) {
+    double const t = s.theta[i];
+    double const d[2] = {a[2 * i] > a[2 * i + 1] ? cos(t) : -sin(t),
+                         a[2 * i] > a[2 * i + 1] ? sin(t) : cos(t)};
+    g_assert_cmpfloat(fabs(d[0] * -2.0 - d[1] * -1.0), <=, 1e-14);
+    g_assert_cmpfloat(d[0] * -1.0 + d[1] * -2.0, >, 0.0);
+  }
+  release(&s);
   g_free(a);
 }
 

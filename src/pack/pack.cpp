@@ -202,10 +202,12 @@ struct Orientation<2> {
   // along the axis (a[0] lies along θ, a[1] along θ + π/2).
   static void place(std::uint64_t seed, std::uint64_t i, bool aligned,
                     int m, double const *axis, double *p) noexcept {
-    if (aligned)
+    if (aligned) {
       p[0] = std::atan2(axis[1], axis[0]) - (m == 1 ? 0.5 * pi : 0.0);
-    else
+      if (p[0] < -pi) p[0] += 2 * pi;  // (exact: Sterbenz)
+    } else {
       p[0] = 2 * pi * uniform(seed, i, 3) - pi;
+    }
   }
   // Aligned: no turning at all.
   static void constrain(double const *, double *t) noexcept { t[0] = 0.0; }
