@@ -35,7 +35,8 @@
  * along `axis` (the first of two equal ones), and the ellipses never
  * turn. The outcomes are those of pw85_pack.h
  * (PW85_PACK_TARGET, ..._LIMIT, ..._JAMMED, ..._CANCELLED); the progress
- * callback receives the same pw85_pack_progress, "per ellipse".
+ * callback receives the same pw85_pack_progress (its energy per ellipse,
+ * its steps those of FIRE).
  *
  * Certification. Every configuration returned has no pair (i, j, n) for
  * which pw85_2d_overlap() on r = (c_j + n∘L) − c_i decides −1 or 0:

@@ -6,9 +6,10 @@
 // (pw85.h, pw85_contact_derivatives(), and pw85_2d.h,
 // pw85_2d_contact_derivatives(); docs/geometry.rst): g = ∂μ²/∂r,
 // and ∂μ²/∂ω_i, ∂μ²/∂ω_j for rotations of each ellipsoid about its
-// centre (a rotation vector in 3D, the angle θ in 2D), computed from the maximiser λ of the all-pairs query (one search
-// per pair). With U′ = dU/dμ²: force on j −U′·g, on i +U′·g; torque on i
-// −U′·∂μ²/∂ω_i, on j −U′·∂μ²/∂ω_j. Overlap energy (docs/packing.rst):
+// centre (a rotation vector in 3D, the angle θ in 2D), computed from the
+// maximiser λ of the all-pairs query (one search per pair). With
+// U′ = dU/dμ²: force on j −U′·g, on i +U′·g; torque on i −U′·∂μ²/∂ω_i,
+// on j −U′·∂μ²/∂ω_j. Overlap energy (docs/packing.rst):
 // U = ε(1 − μ)² for μ < 1, 0 beyond, so U′ = dU/dμ·dμ/dμ² = −ε(1 − μ)/μ;
 // at μ = 0 (r = 0, coincident centres) every derivative of μ² is 0 and
 // the pair adds U = ε and no force.
@@ -139,8 +140,8 @@ bool gather(spatial::Index<D> const &index, Buffer<Stored<D>> *all) noexcept {
 
 template <int D>
 Status pair_term(spatial::Index<D> const &index, Stored<D> const *all,
-                 spatial::PairHit<D> const &p, double overlap, double u, double du,
-                 PairTerm<D> *out) noexcept {
+                 spatial::PairHit<D> const &p, double overlap, double u,
+                 double du, PairTerm<D> *out) noexcept {
   double const *ci = all[p.i].c, *qi = all[p.i].q;
   double const *cj = all[p.j].c, *qj = all[p.j].q;
   Status st = Status::success;

@@ -187,6 +187,7 @@ struct Orientation<2> {
   static constexpr int size = 1;
   static constexpr int rot = 1;
   static double measure(double product) noexcept { return pi * product; }
+  // The side of a square of area v.
   static double side(double v) noexcept { return std::sqrt(v); }
   static Status form(double const *a, double const *p, double *q) noexcept {
     return ellipse_angle(a, p[0], q);
@@ -445,7 +446,8 @@ Status Packer<D>::step(bool *zero) noexcept {
       double const sm = 1.0 / std::sqrt(m_[i]),
                    si = 1.0 / std::sqrt(inertia_[i]);
       double w[R];
-      for (int k = 0; k < D; ++k) c_[D * i + k] -= 0.5 * dt_ * u_[V * i + k] * sm;
+      for (int k = 0; k < D; ++k)
+        c_[D * i + k] -= 0.5 * dt_ * u_[V * i + k] * sm;
       for (int k = 0; k < R; ++k) w[k] = -0.5 * dt_ * u_[V * i + D + k] * si;
       Orientation<D>::turn(w, p_.data() + O * i);
     }

@@ -164,8 +164,8 @@ semi_axes : array_like, shape (n, 3)
 target : float
     The packing fraction to reach, in (0, 1).
 seed : int
-    The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and seed give
-    the same packing, bit for bit, for any ``threads``.
+    The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and
+    seed give the same packing, bit for bit, for any ``threads``.
 aspect : 3 floats
     The box's sides are proportional to these (cube by default).
 orientation : {"isotropic", "aligned"}
