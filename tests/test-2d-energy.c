@@ -78,10 +78,11 @@ static double total(pw85_2d_index const *index, size_t n) {
   return e;
 }
 
-/* Every pair i < j and image n ∈ {−2, …, 2}² (the square is wider than
- * twice the reach of a pair, 2·1.3, only for the sides used below: the
- * loop over five images per axis covers every side ≥ 1.3), summed with no
- * index. Returns Σ U, and Σ |U| and the number of pairs with μ < 1. */
+/* Every pair i < j and image n ∈ {−2, …, 2}², summed with no index:
+ * more images than needed, as centres lie in [0, L) on a grid (an image
+ * with |n_k| = 2 is at least L = 7 away along axis k, beyond the reach
+ * 2·1.3 of any pair). Returns Σ U, and in *magnitude Σ |U|, in *pairs
+ * the number of pairs with μ < 1. */
 static double brute_force(Ellipses const *s, double *magnitude, size_t *pairs) {
   double e = 0.0, m = 0.0;
   size_t count = 0;
@@ -445,10 +446,11 @@ static void test_errors(void) {
   release(&s);
 }
 
-/* Two touching-through unit circles on a line in an open plane: the pair
- * at distance 1 has μ = 1/2, U = 1/4 exactly, the forces ±(1/2)/1 along
- * x by the formula (g = ∂μ²/∂r = 2r/|r|²·μ² for circles, U′ = −(1 − μ)/μ:
- * F_j = −U′·g = (1/2)/(1/2)·(2·(1/4)) = 1/2), no torque on a circle. */
+/* Two unit circles, centres 1 apart along x in an open plane, worked by
+ * hand: μ = |r|/2 = 1/2, U = (1 − μ)² = 1/4 exactly; μ² = |r|²/4, so
+ * g = ∂μ²/∂r = r/2 = (1/2, 0), U′ = −(1 − μ)/μ = −1, and the force on
+ * the second circle is −U′·g = (1/2, 0), on the first its opposite; a
+ * circle has no torque (to rounding). */
 static void test_circles(void) {
   pw85_2d_index *index = NULL;
   double const q[3] = {1, 0, 1}, c0[2] = {0, 0}, c1[2] = {1, 0};
