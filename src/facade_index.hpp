@@ -14,6 +14,7 @@
 
 #include "checks.hpp"
 #include "facade.hpp"
+#include "index/energy.hpp"
 #include "index/index.hpp"
 
 namespace pw85::facade::index {
@@ -194,6 +195,24 @@ int pairs_within(Handle const *index, double t, int threads,
   }
   *count = pairs.size();
   return PW85_SUCCESS;
+}
+
+// pw85_index_energy() and pw85_2d_index_energy(); the kinds are
+// PW85_ENERGY_OVERLAP and PW85_ENERGY_USER of pw85_index.h.
+template <class Handle>
+int sum_energy(Handle const *index, int kind, double param,
+           pw85::detail::EnergyFn fn, void *data, int threads, std::size_t n,
+           double *energy, double *forces, double *torques) noexcept {
+  namespace core = pw85::detail;
+  if (index == nullptr || energy == nullptr) return PW85_EFAULT;
+  if (kind != PW85_ENERGY_OVERLAP && kind != PW85_ENERGY_USER)
+    return PW85_EINVAL;
+  core::EnergySpec const spec{kind == PW85_ENERGY_OVERLAP
+                                  ? core::EnergyKind::overlap
+                                  : core::EnergyKind::user,
+                              param, fn, data};
+  return to_code(core::assembly_energy(index->index, spec, threads, n, energy,
+                                       forces, torques));
 }
 
 }  // namespace pw85::facade::index

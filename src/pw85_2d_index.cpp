@@ -114,4 +114,12 @@ int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
                              mu2_lambda, count);
 }
 
+int pw85_2d_index_energy(pw85_2d_index const *index, int kind, double param,
+                         pw85_pair_energy fn, void *data, int threads,
+                         size_t n, double *energy, double *forces,
+                         double *torques) noexcept {
+  return calls::sum_energy(index, kind, param, fn, data, threads, n, energy,
+                       forces, torques);
+}
+
 }  // extern "C"

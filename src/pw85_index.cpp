@@ -1,14 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The extern "C" facade of the index (include/pw85/pw85_index.h): the
-// calls of facade_index.hpp with D = 3, and the energy (3D only).
+// calls of facade_index.hpp with D = 3.
 #include "pw85_index.h"
 
 #include "facade_index.hpp"
-#include "index/energy.hpp"
 
 namespace core = pw85::detail;
 namespace calls = pw85::facade::index;
-using pw85::facade::to_code;
 
 struct pw85_index {
   static constexpr int dim = PW85_DIM;
@@ -116,15 +114,8 @@ int pw85_index_energy(pw85_index const *index, int kind, double param,
                       pw85_pair_energy fn, void *data, int threads, size_t n,
                       double *energy, double *forces,
                       double *torques) noexcept {
-  if (index == nullptr || energy == nullptr) return PW85_EFAULT;
-  if (kind != PW85_ENERGY_OVERLAP && kind != PW85_ENERGY_USER)
-    return PW85_EINVAL;
-  core::EnergySpec const spec{kind == PW85_ENERGY_OVERLAP
-                                  ? core::EnergyKind::overlap
-                                  : core::EnergyKind::user,
-                              param, fn, data};
-  return to_code(core::assembly_energy(index->index, spec, threads, n, energy,
-                                       forces, torques));
+  return calls::sum_energy(index, kind, param, fn, data, threads, n, energy,
+                       forces, torques);
 }
 
 }  // extern "C"

@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Compiled as C (several standards, -Werror -pedantic): pw85.h and
- * pw85_index.h (and pw85_image.h, pw85_2d.h, pw85_2d_index.h) stand alone, twice included, and their prototypes accept
- * const arrays. */
+ * pw85_index.h (and pw85_image.h, pw85_2d.h, pw85_2d_index.h,
+ * pw85_2d_pack.h) stand alone, twice included, and their prototypes
+ * accept const arrays. */
 #include <pw85/pw85_2d.h>
 #include <pw85/pw85_2d.h>
 #include <pw85/pw85_2d_index.h>
 #include <pw85/pw85_2d_index.h>
+#include <pw85/pw85_2d_pack.h>
+#include <pw85/pw85_2d_pack.h>
 #include <pw85/pw85_image.h>
 #include <pw85/pw85_image.h>
 #include <pw85/pw85_index.h>
@@ -92,6 +95,19 @@ int main(void) {
   ok = ok && pw85_2d_index_within(index2, r2, q2d, 1., PW85_INDEX_NO_ID, 0,
                                   NULL, NULL, NULL, &count) == PW85_SUCCESS &&
        count == 1;
+  double energy2 = -1.;
+  ok = ok && pw85_2d_index_energy(index2, PW85_ENERGY_OVERLAP, 1., NULL, NULL,
+                                  1, 1, &energy2, NULL, NULL) ==
+                 PW85_SUCCESS && energy2 == 0.;
   pw85_2d_index_destroy(index2);
+  double const one[PW85_2D_DIM] = {1., .5};
+  double side2[PW85_2D_DIM], c2[PW85_2D_DIM], f2[PW85_2D_SYM], phi2;
+  int outcome2;
+  pw85_pack_options options2;
+  pw85_pack_options_init(&options2);
+  options2.target = .1;
+  ok = ok && pw85_2d_pack(1, one, &options2, side2, c2, NULL, f2, &phi2,
+                          &outcome2) == PW85_SUCCESS &&
+       outcome2 == PW85_PACK_TARGET;
   return ok ? 0 : 1;
 }

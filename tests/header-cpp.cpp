@@ -5,6 +5,8 @@
 #include <pw85/pw85_2d.h>
 #include <pw85/pw85_2d_index.h>
 #include <pw85/pw85_2d_index.hpp>
+#include <pw85/pw85_2d_pack.h>
+#include <pw85/pw85_2d_pack.hpp>
 #include <pw85/pw85_image.hpp>
 #include <pw85/pw85_index.hpp>
 #include <pw85/pw85_index.h>
@@ -21,6 +23,9 @@ static_assert(noexcept(pw85_index_destroy(nullptr)),
               "pw85_index.h is noexcept for C++ callers");
 static_assert(noexcept(pw85_2d_index_destroy(nullptr)),
               "pw85_2d_index.h is noexcept for C++ callers");
+static_assert(noexcept(pw85_2d_pack(0, nullptr, nullptr, nullptr, nullptr,
+                                    nullptr, nullptr, nullptr, nullptr)),
+              "pw85_2d_pack.h is noexcept for C++ callers");
 
 int main() {
   double const r[pw85::dim] = {1., 0., 0.};

@@ -10,6 +10,7 @@
 
 #include "pw85.h"
 #include "pw85_index.h"
+#include "energy-util.h"
 #include "testutil.h"
 
 #define U_ROUND 1.1102230246251565e-16 /* 2^-53 */
@@ -73,13 +74,6 @@ static double energy_of(pw85_index const *index, size_t n) {
                                     NULL, 1, n, &e, NULL, NULL),
                   ==, PW85_SUCCESS);
   return e;
-}
-
-/* The overlap energy and dU/dμ² of a pair (the formula of pw85_index.h). */
-static void overlap_u(double mu2, double eps, double out[2]) {
-  double const mu = sqrt(mu2);
-  out[0] = mu < 1.0 ? eps * (1.0 - mu) * (1.0 - mu) : 0.0;
-  out[1] = mu < 1.0 && mu > 0.0 ? -eps * (1.0 - mu) / mu : 0.0;
 }
 
 /* The energy from every pair i < j and image n in {-1, 0, 1}^3 (the box
@@ -322,19 +316,6 @@ static void test_threads(void) {
   free_assembly(&s);
 }
 
-static int overlap_callback(double mu2, void *data, double out[2]) {
-  overlap_u(mu2, *(double const *)data, out);
-  return 0;
-}
-
-/* U(μ²) = (t − μ²)²/2 for μ² < t: dU/dμ² = μ² − t. */
-static int soft_callback(double mu2, void *data, double out[2]) {
-  double const t = *(double const *)data;
-  out[0] = 0.5 * (t - mu2) * (t - mu2);
-  out[1] = mu2 - t;
-  return 0;
-}
-
 /* PW85_ENERGY_USER with the overlap energy's formula gives the outputs of
  * PW85_ENERGY_OVERLAP, bit for bit (centres on a grid: the same μ²). */
 static void test_user_as_overlap(void) {
@@ -395,13 +376,6 @@ static void test_user_finite_differences(void) {
   g_free(tq);
   pw85_index_destroy(index);
   free_assembly(&s);
-}
-
-static int stop_callback(double mu2, void *data, double out[2]) {
-  (void)mu2;
-  (void)data;
-  out[0] = out[1] = 0.0;
-  return 1;
 }
 
 static int nan_callback(double mu2, void *data, double out[2]) {

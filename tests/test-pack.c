@@ -9,6 +9,7 @@
 
 #include "pw85.h"
 #include "pw85_pack.h"
+#include "energy-util.h"
 #include "testutil.h"
 
 typedef struct {
@@ -178,15 +179,6 @@ static void test_determinism(void) {
   g_free(a);
 }
 
-static int calls;
-
-static int cancel_at_third(pw85_pack_progress const *p, void *data) {
-  g_assert_true(data == &calls);
-  g_assert_cmpfloat(p->phi_trial, >, 0.0);
-  g_assert_cmpfloat(p->energy, >=, 0.0);
-  return ++calls == 3;
-}
-
 /* A step limit and a cancellation return a certified configuration below
  * the target; a target beyond jamming returns JAMMED, certified, below
  * it. */
@@ -204,11 +196,11 @@ static void test_outcomes(void) {
   g_assert_cmpfloat(s.phi, >, 0.0);
   free_packing(&s);
 
+  int calls = 0;
   o.step_limit = 0;
   o.progress = cancel_at_third;
   o.progress_data = &calls;
   o.progress_every = 5;
-  calls = 0;
   s = run(n, a, &o);
   check_packing(&s);
   g_assert_cmpint(calls, ==, 3);

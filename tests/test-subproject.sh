@@ -57,7 +57,7 @@ step "what it installs into the parent's prefix"
 "$meson" install -C "$tmp/build" --destdir "$tmp/destdir" --quiet
 (cd "$tmp/destdir" && find . ! -type d | sed 's|^\./||' | sort) >"$tmp/installed"
 sed "s|^${tmp#/}/prefix/||" "$tmp/installed" | tee "$tmp/installed-rel"
-unexpected=$(grep -v -E '^(include/pw85/pw85(\.h|\.hpp|_index\.h|_index\.hpp|_pack\.h|_pack\.hpp|_image\.h|_image\.hpp|_2d\.h|_2d_index\.h|_2d_index\.hpp|_version\.h)|lib/libpw85\.so(\.[0-9.]+)?|lib/pkgconfig/pw85\.pc|lib/cmake/pw85/pw85Config(Version)?\.cmake)$' \
+unexpected=$(grep -v -E '^(include/pw85/pw85(\.h|\.hpp|_index\.h|_index\.hpp|_pack\.h|_pack\.hpp|_image\.h|_image\.hpp|_2d\.h|_2d_index\.h|_2d_index\.hpp|_2d_pack\.h|_2d_pack\.hpp|_version\.h)|lib/libpw85\.so(\.[0-9.]+)?|lib/pkgconfig/pw85\.pc|lib/cmake/pw85/pw85Config(Version)?\.cmake)$' \
   "$tmp/installed-rel" || true)
 [ -z "$unexpected" ] || { echo "FAIL: installed: $unexpected"; exit 1; }
 

@@ -9,8 +9,9 @@
  * function is the contract here; link the same -lpw85. The class is
  * pw85::Index (pw85_index.hpp) for ellipses: the same members, written
  * once for both (index_detail::BasicIndex), with centres and image shifts
- * of 2 coordinates and forms of 3 stored entries (Q00, Q01, Q11); it has
- * no energy members (pw85_index_energy() is 3D only). Needs C++11.
+ * of 2 coordinates and forms of 3 stored entries (Q00, Q01, Q11); its
+ * energy members (overlap_energy(), energy(); pw85_2d_index_energy()) give
+ * forces of 2 coordinates and one torque (∂/∂θ) per ellipse. Needs C++11.
  *
  * Conventions, memory, threads and the rule on failed calls: those of
  * pw85_index.hpp.

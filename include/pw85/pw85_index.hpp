@@ -82,6 +82,7 @@ namespace index_detail {
     PW85_INDEX_CXX_CALL_(PREFIX, within)                                      \
     PW85_INDEX_CXX_CALL_(PREFIX, overlapping_pairs)                           \
     PW85_INDEX_CXX_CALL_(PREFIX, pairs_within)                                \
+    PW85_INDEX_CXX_CALL_(PREFIX, energy)                                      \
   }
 #define PW85_INDEX_CXX_CALL_(PREFIX, FN)                                      \
   template <typename... Args>                                                 \
@@ -441,6 +442,56 @@ class BasicIndex {
     });
   }
 
+  /**
+   * @brief The overlap energy ε·Σ(1 − μ)² over the pairs with μ < 1, the
+   *        force and torque on every ellipsoid or ellipse
+   *        (pw85_index_energy(), pw85_2d_index_energy(),
+   *        PW85_ENERGY_OVERLAP).
+   * @param[in] eps ε (> 0 and finite).
+   * @param[in] threads the number of threads (≥ 1).
+   * @param[in] n the rows of forces and torques: above every stored id.
+   * @param[out] energy the total energy.
+   * @param[out] forces resized to dim·n: the force on id k at
+   *             dim·k..dim·k + dim − 1 (dim = 3 for ellipsoids, 2 for
+   *             ellipses).
+   * @param[out] torques resized to 3·n (ellipsoids: as forces) or n
+   *             (ellipses: the torque on id k, ∂/∂θ, at k).
+   * @return the statuses of pw85_index_energy() or
+   *         pw85_2d_index_energy(); nothing is changed on error.
+   * @since 2.4.0 (pw85::Index), 2.5.0 (pw85::d2::Index)
+   */
+  int overlap_energy(double eps, int threads, std::size_t n, double &energy,
+                     std::vector<double> &forces,
+                     std::vector<double> &torques) const noexcept {
+    return energy_of(PW85_ENERGY_OVERLAP, eps, nullptr, nullptr, threads, n,
+                     energy, forces, torques);
+  }
+
+  /**
+   * @brief A caller's pair energy over the pairs with μ² < t, the force
+   *        and torque on every ellipsoid or ellipse (pw85_index_energy(),
+   *        pw85_2d_index_energy(), PW85_ENERGY_USER).
+   * @param[in] t the threshold on μ² (> 0 and finite).
+   * @param[in] u a callable `bool u(double mu2, double &U, double &dU)`
+   *            setting U(μ²) and dU/dμ² and returning true to go on (false
+   *            stops: PW85_ECANCELLED); called in the calling thread, in
+   *            the order of the pairs. An exception it throws stops the
+   *            call (PW85_ECANCELLED) and is not rethrown.
+   * @param[in] threads, n, energy, forces, torques as overlap_energy().
+   * @return the statuses of pw85_index_energy() or
+   *         pw85_2d_index_energy(); nothing is changed on error.
+   * @since 2.4.0 (pw85::Index), 2.5.0 (pw85::d2::Index)
+   */
+  template <typename U>
+  int energy(double t, U &&u, int threads, std::size_t n, double &energy,
+             std::vector<double> &forces,
+             std::vector<double> &torques) const noexcept {
+    using F = typename std::remove_reference<U>::type;
+    return energy_of(PW85_ENERGY_USER, t, &call_energy<F>,
+                     const_cast<void *>(static_cast<void const *>(&u)),
+                     threads, n, energy, forces, torques);
+  }
+
  protected:
   // Resizes v to n, PW85_ENOMEM if it cannot grow (v then unchanged).
   template <typename T>
@@ -461,6 +512,40 @@ class BasicIndex {
 
  private:
   handle_type *handle_ = nullptr;
+
+  template <typename F>
+  static int call_energy(double mu2, void *data, double out[2]) noexcept {
+    F &f = *static_cast<F *>(data);
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+    try {
+      return f(mu2, out[0], out[1]) ? 0 : 1;
+    } catch (...) {
+      return 1;
+    }
+#else
+    return f(mu2, out[0], out[1]) ? 0 : 1;
+#endif
+  }
+
+  int energy_of(int kind, double param, pw85_pair_energy fn, void *data,
+                int threads, std::size_t n, double &energy,
+                std::vector<double> &forces,
+                std::vector<double> &torques) const noexcept {
+    // (dim·n wraps around only where the C function returns
+    // PW85_ENOMEM before it writes anything.)
+    std::vector<double> f, t;
+    int status = resize(f, Api::dim * n);
+    if (status == PW85_SUCCESS) status = resize(t, (Api::dim == 3 ? 3 : 1) * n);
+    double e = 0.0;
+    if (status == PW85_SUCCESS)
+      status = Api::energy(handle(), kind, param, fn, data, threads, n, &e,
+                           f.data(), t.data());
+    if (status != PW85_SUCCESS) return status;
+    energy = e;
+    forces.swap(f);
+    torques.swap(t);
+    return PW85_SUCCESS;
+  }
 
   static int create(double const *box, Derived &out) noexcept {
     handle_type *created = nullptr;
@@ -530,86 +615,6 @@ class BasicIndex {
 class Index : public index_detail::BasicIndex<Index, index_detail::Api3> {
  public:
   using BasicIndex::BasicIndex;
-
-  /**
-   * @brief The overlap energy ε·Σ(1 − μ)² over the pairs with μ < 1, the
-   *        force and torque on every ellipsoid (pw85_index_energy(),
-   *        PW85_ENERGY_OVERLAP).
-   * @param[in] eps ε (> 0 and finite).
-   * @param[in] threads the number of threads (≥ 1).
-   * @param[in] n the rows of forces and torques: above every stored id.
-   * @param[out] energy the total energy.
-   * @param[out] forces resized to 3·n: the force on id k at 3k..3k+2.
-   * @param[out] torques resized to 3·n, as forces.
-   * @return the statuses of pw85_index_energy(); nothing is changed on
-   *         error.
-   * @since 2.4.0
-   */
-  int overlap_energy(double eps, int threads, std::size_t n, double &energy,
-                     std::vector<double> &forces,
-                     std::vector<double> &torques) const noexcept {
-    return energy_of(PW85_ENERGY_OVERLAP, eps, nullptr, nullptr, threads, n,
-                     energy, forces, torques);
-  }
-
-  /**
-   * @brief A caller's pair energy over the pairs with μ² < t, the force
-   *        and torque on every ellipsoid (pw85_index_energy(),
-   *        PW85_ENERGY_USER).
-   * @param[in] t the threshold on μ² (> 0 and finite).
-   * @param[in] u a callable `bool u(double mu2, double &U, double &dU)`
-   *            setting U(μ²) and dU/dμ² and returning true to go on (false
-   *            stops: PW85_ECANCELLED); called in the calling thread, in
-   *            the order of the pairs. An exception it throws stops the
-   *            call (PW85_ECANCELLED) and is not rethrown.
-   * @param[in] threads, n, energy, forces, torques as overlap_energy().
-   * @return the statuses of pw85_index_energy(); nothing is changed on
-   *         error.
-   * @since 2.4.0
-   */
-  template <typename U>
-  int energy(double t, U &&u, int threads, std::size_t n, double &energy,
-             std::vector<double> &forces,
-             std::vector<double> &torques) const noexcept {
-    using F = typename std::remove_reference<U>::type;
-    return energy_of(PW85_ENERGY_USER, t, &call_energy<F>,
-                     const_cast<void *>(static_cast<void const *>(&u)),
-                     threads, n, energy, forces, torques);
-  }
-
- private:
-  template <typename F>
-  static int call_energy(double mu2, void *data, double out[2]) noexcept {
-    F &f = *static_cast<F *>(data);
-#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
-    try {
-      return f(mu2, out[0], out[1]) ? 0 : 1;
-    } catch (...) {
-      return 1;
-    }
-#else
-    return f(mu2, out[0], out[1]) ? 0 : 1;
-#endif
-  }
-
-  int energy_of(int kind, double param, pw85_pair_energy fn, void *data,
-                int threads, std::size_t n, double &energy,
-                std::vector<double> &forces,
-                std::vector<double> &torques) const noexcept {
-    std::vector<double> f, t;
-    int status = resize(f, 3 * n);
-    if (status == PW85_SUCCESS) status = resize(t, 3 * n);
-    double e = 0.0;
-    if (status == PW85_SUCCESS)
-      status = pw85_index_energy(handle(), kind, param, fn, data, threads, n,
-                                 &e, f.data(), t.data());
-    if (status != PW85_SUCCESS) return status;
-    energy = e;
-    forces.swap(f);
-    torques.swap(t);
-    return PW85_SUCCESS;
-  }
-
 };
 
 }  // namespace pw85

@@ -100,7 +100,9 @@ typedef struct pw85_pack_progress {
 typedef int (*pw85_pack_callback)(pw85_pack_progress const *progress,
                                   void *data);
 
-/** The options of pw85_pack(); fill with pw85_pack_options_init() first,
+/** The options of pw85_pack(), and of pw85_2d_pack() (pw85_2d_pack.h,
+ *  which reads the first two entries of aspect, and of axis with
+ *  PW85_PACK_ALIGNED only); fill with pw85_pack_options_init() first,
  *  then set what differs. @since 2.4.0 */
 typedef struct pw85_pack_options {
   size_t size;          /**< sizeof(pw85_pack_options), set by

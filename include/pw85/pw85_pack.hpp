@@ -81,29 +81,46 @@ int call_progress(pw85_pack_progress const *p, void *data) noexcept {
 #endif
 }
 
-struct Run {
-  static int call(std::vector<double> const &semi_axes,
-                  pw85_pack_options const &options, Packing &out) noexcept {
-    if (semi_axes.size() % 3 != 0) return PW85_EINVAL;
-    std::size_t const n = semi_axes.size() / 3;
-    Packing r;
-    int status = resize(r.centres, 3 * n);
-    if (status == PW85_SUCCESS) status = resize(r.quaternions, 4 * n);
-    if (status == PW85_SUCCESS) status = resize(r.forms, 6 * n);
-    if (status != PW85_SUCCESS) return status;
-    status = pw85_pack(n, semi_axes.data(), &options, r.box.data(),
-                       r.centres.data(), r.quaternions.data(), r.forms.data(),
-                       &r.phi, &r.outcome);
-    if (status != PW85_SUCCESS) return status;
-    out.box = r.box;
-    out.centres.swap(r.centres);
-    out.quaternions.swap(r.quaternions);
-    out.forms.swap(r.forms);
-    out.phi = r.phi;
-    out.outcome = r.outcome;
-    return PW85_SUCCESS;
-  }
-};
+// pw85_pack() (D = 3, O = 4 doubles of a quaternion, S = 6) or
+// pw85_2d_pack() (2, 1 angle, 3) as `fn`, its outputs in a Result (Packing
+// or d2::Packing; `orientations` names its member of O·n doubles).
+template <std::size_t D, std::size_t O, std::size_t S, typename Result,
+          typename Fn>
+int run(Fn fn, std::vector<double> Result::*orientations,
+        std::vector<double> const &semi_axes,
+        pw85_pack_options const &options, Result &out) noexcept {
+  if (semi_axes.size() % D != 0) return PW85_EINVAL;
+  std::size_t const n = semi_axes.size() / D;
+  Result r;
+  int status = resize(r.centres, D * n);
+  if (status == PW85_SUCCESS) status = resize(r.*orientations, O * n);
+  if (status == PW85_SUCCESS) status = resize(r.forms, S * n);
+  if (status != PW85_SUCCESS) return status;
+  status = fn(n, semi_axes.data(), &options, r.box.data(), r.centres.data(),
+              (r.*orientations).data(), r.forms.data(), &r.phi, &r.outcome);
+  if (status != PW85_SUCCESS) return status;
+  out.box = r.box;
+  out.centres.swap(r.centres);
+  (out.*orientations).swap(r.*orientations);
+  out.forms.swap(r.forms);
+  out.phi = r.phi;
+  out.outcome = r.outcome;
+  return PW85_SUCCESS;
+}
+
+// run() with a progress callable as the callback of a copy of the options.
+template <std::size_t D, std::size_t O, std::size_t S, typename Result,
+          typename Fn, typename F>
+int run_with(Fn fn, std::vector<double> Result::*orientations,
+             std::vector<double> const &semi_axes,
+             pw85_pack_options const &options, F &&progress,
+             Result &out) noexcept {
+  using G = typename std::remove_reference<F>::type;
+  pw85_pack_options o = options;
+  o.progress = &call_progress<G>;
+  o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
+  return run<D, O, S>(fn, orientations, semi_axes, o, out);
+}
 
 }  // namespace detail_pack
 /// @endcond
@@ -119,7 +136,8 @@ struct Run {
  */
 inline int pack(std::vector<double> const &semi_axes,
                 PackOptions const &options, Packing &out) noexcept {
-  return detail_pack::Run::call(semi_axes, options, out);
+  return detail_pack::run<3, 4, 6>(pw85_pack, &Packing::quaternions,
+                                   semi_axes, options, out);
 }
 
 /**
@@ -132,11 +150,8 @@ inline int pack(std::vector<double> const &semi_axes,
 template <typename F>
 int pack(std::vector<double> const &semi_axes, PackOptions const &options,
          F &&progress, Packing &out) noexcept {
-  using G = typename std::remove_reference<F>::type;
-  pw85_pack_options o = options;
-  o.progress = &detail_pack::call_progress<G>;
-  o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
-  return detail_pack::Run::call(semi_axes, o, out);
+  return detail_pack::run_with<3, 4, 6>(pw85_pack, &Packing::quaternions,
+                                        semi_axes, options, progress, out);
 }
 
 }  // namespace pw85

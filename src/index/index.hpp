@@ -147,7 +147,9 @@ struct PairHit {
   int result;
   double mu2, lambda;
 };
-static_assert(sizeof(PairHit<3>) == 40, "pw85_index_energy()'s memory figure");
+static_assert(sizeof(PairHit<3>) == 40 && sizeof(PairHit<2>) == 40,
+              "pw85_index_energy()'s and pw85_2d_index_energy()'s memory "
+              "figures");
 
 // The index in D = 2 or 3 dimensions: its members are defined in
 // index.cpp, queries.cpp, pairs.cpp and bulk.cpp, and each is

@@ -1,10 +1,15 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The certified packer (pack.hpp; docs/packing.rst).
+// The certified packer (pack.hpp; docs/packing.rst), written once for
+// ellipsoids (D = 3, pw85_pack()) and ellipses (D = 2, pw85_2d_pack());
+// what differs, the orientations (a unit quaternion or an angle), their
+// turning, the forms and the volume of a shape, is the struct
+// Orientation<D>. "Ellipsoid", "volume" and "box" read "ellipse", "area"
+// and "rectangle" in 2D.
 //
 // 1. Random placement in the box of the target (counter-based random
 //    numbers per ellipsoid: splitmix64, Steele, Lea and Flood, OOPSLA
 //    2014), isotropic orientations by Shoemake's uniform quaternions
-//    (Graphics Gems III, 1992), or aligned.
+//    (Graphics Gems III, 1992), in 2D uniform angles, or aligned.
 // 2. FIRE (Bitzek et al., PRL 97, 170201, 2006; the semi-implicit Euler
 //    form and half-step correction of Guénolé et al., Comput. Mater. Sci.
 //    175, 109584, 2020) on the overlap energy Σ(1 − μ)² of the shapes
@@ -138,11 +143,112 @@ void aligned_rotation(int m, double const axis[dim], double angle,
   qnormalise(p);
 }
 
+// What differs between the dimensions: an orientation (a unit quaternion
+// (w, x, y, z) in 3D, pw85_ellipsoid_quaternion(); an angle θ in 2D,
+// pw85_2d_ellipse()), its turning by a rotation vector (3D) or an angle
+// (2D), the form of semi-axes and an orientation, the random and aligned
+// orientations, and the volume (area) of a shape.
+template <int D>
+struct Orientation;
+
+template <>
+struct Orientation<3> {
+  static constexpr int size = 4;  // doubles of an orientation
+  static constexpr int rot = 3;   // doubles of a rotation (a torque)
+  // 4π/3·a0·a1·a2
+  static double measure(double product) noexcept {
+    return 4.0 / 3.0 * pi * product;
+  }
+  // The side of a cube of volume v.
+  static double side(double v) noexcept { return std::cbrt(v); }
+  static Status form(double const *a, double const *p, double *q) noexcept {
+    return ellipsoid_quaternion(a, p, q);
+  }
+  static void turn(double const *w, double *p) noexcept { rotate(w, p); }
+  // Draws 3, 4, 5 of ellipsoid i; m: its largest semi-axis.
+  static void place(std::uint64_t seed, std::uint64_t i, bool aligned,
+                    int m, double const *axis, double *p) noexcept {
+    double const u1 = uniform(seed, i, 3), u2 = uniform(seed, i, 4),
+                 u3 = uniform(seed, i, 5);
+    if (aligned)
+      aligned_rotation(m, axis, 2 * pi * u1, p);
+    else
+      isotropic(u1, u2, u3, p);
+  }
+  // Aligned: only the turning about the axis.
+  static void constrain(double const *axis, double *t) noexcept {
+    double const along = dot(t, axis);
+    for (int k = 0; k < 3; ++k) t[k] = along * axis[k];
+  }
+};
+
+template <>
+struct Orientation<2> {
+  static constexpr int size = 1;
+  static constexpr int rot = 1;
+  static double measure(double product) noexcept { return pi * product; }
+  // The side of a square of area v.
+  static double side(double v) noexcept { return std::sqrt(v); }
+  static Status form(double const *a, double const *p, double *q) noexcept {
+    return ellipse_angle(a, p[0], q);
+  }
+  // θ + w, kept in [−π, π] (a turn per step is below 2π).
+  static void turn(double const *w, double *p) noexcept {
+    double t = p[0] + w[0];
+    if (t > pi) t -= 2 * pi;
+    if (t < -pi) t += 2 * pi;
+    p[0] = t;
+  }
+  // Draw 3 of ellipse i, uniform in [−π, π); aligned: the semi-axis m
+  // along the axis (a[0] lies along θ, a[1] along θ + π/2).
+  static void place(std::uint64_t seed, std::uint64_t i, bool aligned,
+                    int m, double const *axis, double *p) noexcept {
+    if (aligned) {
+      p[0] = std::atan2(axis[1], axis[0]) - (m == 1 ? 0.5 * pi : 0.0);
+      if (p[0] < -pi) p[0] += 2 * pi;  // (exact: Sterbenz)
+    } else {
+      p[0] = 2 * pi * uniform(seed, i, 3) - pi;
+    }
+  }
+  // Aligned: no turning at all.
+  static void constrain(double const *, double *t) noexcept { t[0] = 0.0; }
+};
+
+// x·x of a rotation (R = 1 or 3) or a vector.
+template <int N>
+double norm2(double const *x) noexcept {
+  if constexpr (N == 1)
+    return x[0] * x[0];
+  else
+    return dot<N>(x, x);
+}
+
+// Σ_k (x_k + y_k) added to s in the order of k, x of D terms, y of R: the
+// sums of FIRE over a move (D) and a turn (R), in 3D the order in which
+// they were first written (x_k + y_k formed, then added).
+template <int D, int R, typename X, typename Y>
+double paired_sum(double s, X const &x, Y const &y) noexcept {
+  constexpr int m = D > R ? D : R;
+  for (int k = 0; k < m; ++k) {
+    if (k < D && k < R)
+      s += x(k) + y(k);
+    else if (k < D)
+      s += x(k);
+    else
+      s += y(k);
+  }
+  return s;
+}
+
+template <int D>
 double volume_of(std::size_t n, double const *a) noexcept {
   double v = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
-    v += a[3 * i] * a[3 * i + 1] * a[3 * i + 2];
-  return 4.0 / 3.0 * pi * v;
+  for (std::size_t i = 0; i < n; ++i) {
+    double product = a[D * i];
+    for (int k = 1; k < D; ++k) product *= a[D * i + k];
+    v += product;
+  }
+  return Orientation<D>::measure(v);
 }
 
 // x wrapped into [0, L).
@@ -153,9 +259,18 @@ double wrap(double x, double side) noexcept {
   return y;
 }
 
-// A configuration: box, centres, quaternions, real forms.
+// L0·L1(·L2).
+template <int D>
+double box_measure(double const *box) noexcept {
+  double v = box[0];
+  for (int k = 1; k < D; ++k) v *= box[k];
+  return v;
+}
+
+// A configuration: box, centres, orientations, real forms.
+template <int D>
 struct Config {
-  double box[dim] = {};
+  double box[D] = {};
   Buffer<double> c, p, q;
   double phi = 0.0;
   bool set = false;
@@ -163,12 +278,18 @@ struct Config {
 
 using Clock = std::chrono::steady_clock;
 
+template <int D>
 class Packer {
  public:
+  // Doubles per ellipsoid: orientation, rotation (torque), form, FIRE
+  // velocity (a move and a turn).
+  static constexpr int O = Orientation<D>::size, R = Orientation<D>::rot,
+                       S = sym_size(D), V = D + R;
+
   Packer(std::size_t n, double const *a, PackParams const &params) noexcept
       : n_(n), a_(a), prm_(params), start_(Clock::now()) {}
 
-  Status run(double box[dim], double *c, double *p, double *q, double *phi,
+  Status run(double *box, double *c, double *p, double *q, double *phi,
              PackOutcome *outcome) noexcept;
 
  private:
@@ -176,8 +297,8 @@ class Packer {
   Status reindex() noexcept;
   Status forms_of(double const *p, double scale, double *q) noexcept;
   Status step(bool *zero) noexcept;
-  Status certify_current(Config *out, bool expand) noexcept;
-  Status check(Config const &cf, bool *ok) noexcept;
+  Status certify_current(Config<D> *out, bool expand) noexcept;
+  Status check(Config<D> const &cf, bool *ok) noexcept;
   void rescale(double phi) noexcept;
   double elapsed() const noexcept {
     return std::chrono::duration<double>(Clock::now() - start_).count();
@@ -198,71 +319,71 @@ class Packer {
   PackParams const &prm_;
   Clock::time_point start_;
   double volume_ = 0.0, ell_ = 0.0;
-  double box_[dim] = {};
+  double box_[D] = {};
   double phi_ = 0.0;
-  Buffer<double> c_, p_, qi_;   // centres, quaternions, inflated forms
+  Buffer<double> c_, p_, qi_;   // centres, orientations, inflated forms
   Buffer<double> ai_;           // inflated semi-axes
   Buffer<double> m_, inertia_;  // FIRE masses
-  Buffer<double> u_;            // mass-weighted velocities (6 per ellipsoid)
+  Buffer<double> u_;            // mass-weighted velocities (V per ellipsoid)
   Buffer<double> f_, t_;        // forces, torques
-  Index *index_ = nullptr;
+  spatial::Index<D> *index_ = nullptr;
   double dt_ = 0.0, alpha_ = fire_alpha0;
   int npos_ = 0;
   std::size_t steps_ = 0, pairs_ = 0;
   double energy_ = 0.0;
-  Config best_;
+  Config<D> best_;
 };
 
-Status Packer::forms_of(double const *p, double scale, double *q) noexcept {
+template <int D>
+Status Packer<D>::forms_of(double const *p, double scale, double *q) noexcept {
   for (std::size_t i = 0; i < n_; ++i) {
-    double a[dim];
-    for (int k = 0; k < dim; ++k)
-      a[k] = scale == 1.0 ? a_[3 * i + k] : ai_[3 * i + k];
-    Status const s = ellipsoid_quaternion(a, p + 4 * i, q + 6 * i);
+    double a[D];
+    for (int k = 0; k < D; ++k)
+      a[k] = scale == 1.0 ? a_[D * i + k] : ai_[D * i + k];
+    Status const s = Orientation<D>::form(a, p + O * i, q + S * i);
     if (s != Status::success) return s;
   }
   return Status::success;
 }
 
-Status Packer::init() noexcept {
-  volume_ = volume_of(n_, a_);
+template <int D>
+Status Packer<D>::init() noexcept {
+  volume_ = volume_of<D>(n_, a_);
   ell_ = HUGE_VAL;
-  for (std::size_t k = 0; k < 3 * n_; ++k) ell_ = std::min(ell_, a_[k]);
-  if (!c_.resize(3 * n_) || !p_.resize(4 * n_) || !qi_.resize(6 * n_) ||
-      !ai_.resize(3 * n_) || !m_.resize(n_) || !inertia_.resize(n_) ||
-      !u_.resize(6 * n_) || !f_.resize(3 * n_) || !t_.resize(3 * n_))
+  for (std::size_t k = 0; k < D * n_; ++k) ell_ = std::min(ell_, a_[k]);
+  if (!c_.resize(D * n_) || !p_.resize(O * n_) || !qi_.resize(S * n_) ||
+      !ai_.resize(D * n_) || !m_.resize(n_) || !inertia_.resize(n_) ||
+      !u_.resize(V * n_) || !f_.resize(D * n_) || !t_.resize(R * n_))
     return Status::no_memory;
   phi_ = prm_.target;
-  pack_box(n_, a_, prm_.aspect, phi_, box_);
+  pack_box<D>(n_, a_, prm_.aspect, phi_, box_);
   for (std::size_t i = 0; i < n_; ++i) {
-    double const *a = a_ + 3 * i;
-    double const amin = std::min(a[0], std::min(a[1], a[2]));
-    double const amax = std::max(a[0], std::max(a[1], a[2]));
+    double const *a = a_ + D * i;
+    double amin = a[0], amax = a[0];
+    int m = 0;  // the largest semi-axis (the first of equals)
+    for (int k = 1; k < D; ++k) {
+      amin = std::min(amin, a[k]);
+      amax = std::max(amax, a[k]);
+      if (a[k] > a[m]) m = k;
+    }
     m_[i] = (amin / ell_) * (amin / ell_);
     inertia_[i] = m_[i] * amax * amax;
-    for (int k = 0; k < dim; ++k) {
-      ai_[3 * i + k] = a[k] * inflation;
-      c_[3 * i + k] = uniform(prm_.seed, i, std::uint64_t(k)) * box_[k];
+    for (int k = 0; k < D; ++k) {
+      ai_[D * i + k] = a[k] * inflation;
+      c_[D * i + k] = uniform(prm_.seed, i, std::uint64_t(k)) * box_[k];
     }
-    double const u1 = uniform(prm_.seed, i, 3), u2 = uniform(prm_.seed, i, 4),
-                 u3 = uniform(prm_.seed, i, 5);
-    if (prm_.aligned) {
-      int m = 0;
-      for (int k = 1; k < dim; ++k)
-        if (a[k] > a[m]) m = k;
-      aligned_rotation(m, prm_.axis, 2 * pi * u1, p_.data() + 4 * i);
-    } else {
-      isotropic(u1, u2, u3, p_.data() + 4 * i);
-    }
+    Orientation<D>::place(prm_.seed, i, prm_.aligned, m, prm_.axis,
+                          p_.data() + O * i);
   }
   reset_fire();
   return reindex();
 }
 
 // A new index of the inflated shapes in the current box.
-Status Packer::reindex() noexcept {
+template <int D>
+Status Packer<D>::reindex() noexcept {
   delete index_;
-  index_ = new (std::nothrow) Index(box_);
+  index_ = new (std::nothrow) spatial::Index<D>(box_);
   if (index_ == nullptr) return Status::no_memory;
   Status s = forms_of(p_.data(), inflation, qi_.data());
   if (s != Status::success) return s;
@@ -273,19 +394,21 @@ Status Packer::reindex() noexcept {
 }
 
 // The box and centres scaled to packing fraction phi (affine).
-void Packer::rescale(double phi) noexcept {
-  double nb[dim];
-  pack_box(n_, a_, prm_.aspect, phi, nb);
+template <int D>
+void Packer<D>::rescale(double phi) noexcept {
+  double nb[D];
+  pack_box<D>(n_, a_, prm_.aspect, phi, nb);
   for (std::size_t i = 0; i < n_; ++i)
-    for (int k = 0; k < dim; ++k)
-      c_[3 * i + k] = wrap(c_[3 * i + k] * (nb[k] / box_[k]), nb[k]);
+    for (int k = 0; k < D; ++k)
+      c_[D * i + k] = wrap(c_[D * i + k] * (nb[k] / box_[k]), nb[k]);
   std::memcpy(box_, nb, sizeof nb);
   phi_ = phi;
 }
 
 // One FIRE step: forces at the current configuration, then the move.
 // *zero: the energy is small enough to certify (no move made).
-Status Packer::step(bool *zero) noexcept {
+template <int D>
+Status Packer<D>::step(bool *zero) noexcept {
   EnergySpec const spec{EnergyKind::overlap, 1.0, nullptr, nullptr};
   Status s = assembly_energy(*index_, spec, prm_.threads, n_, &energy_,
                              f_.data(), t_.data(), &pairs_);
@@ -299,17 +422,15 @@ Status Packer::step(bool *zero) noexcept {
   // Generalised forces G (mass-weighted), power P = Σ u·G.
   double power = 0.0, gnorm = 0.0, unorm = 0.0;
   for (std::size_t i = 0; i < n_; ++i) {
-    double *tq = t_.data() + 3 * i;
-    if (prm_.aligned) {
-      double const along = dot(tq, prm_.axis);
-      for (int k = 0; k < dim; ++k) tq[k] = along * prm_.axis[k];
-    }
+    double *fi = f_.data() + D * i, *tq = t_.data() + R * i;
+    double const *ui = u_.data() + V * i;
+    if (prm_.aligned) Orientation<D>::constrain(prm_.axis, tq);
     double const sm = 1.0 / std::sqrt(m_[i]), si = 1.0 / std::sqrt(inertia_[i]);
-    for (int k = 0; k < dim; ++k) {
-      f_[3 * i + k] *= sm;
-      tq[k] *= si;
-      power += u_[6 * i + k] * f_[3 * i + k] + u_[6 * i + 3 + k] * tq[k];
-    }
+    for (int k = 0; k < D; ++k) fi[k] *= sm;
+    for (int k = 0; k < R; ++k) tq[k] *= si;
+    power = paired_sum<D, R>(
+        power, [&](int k) { return ui[k] * fi[k]; },
+        [&](int k) { return ui[D + k] * tq[k]; });
   }
   if (power > 0.0) {
     if (++npos_ > fire_delay) {
@@ -324,58 +445,59 @@ Status Packer::step(bool *zero) noexcept {
     for (std::size_t i = 0; i < n_; ++i) {
       double const sm = 1.0 / std::sqrt(m_[i]),
                    si = 1.0 / std::sqrt(inertia_[i]);
-      double w[dim];
-      for (int k = 0; k < dim; ++k) {
-        c_[3 * i + k] -= 0.5 * dt_ * u_[6 * i + k] * sm;
-        w[k] = -0.5 * dt_ * u_[6 * i + 3 + k] * si;
-      }
-      rotate(w, p_.data() + 4 * i);
+      double w[R];
+      for (int k = 0; k < D; ++k)
+        c_[D * i + k] -= 0.5 * dt_ * u_[V * i + k] * sm;
+      for (int k = 0; k < R; ++k) w[k] = -0.5 * dt_ * u_[V * i + D + k] * si;
+      Orientation<D>::turn(w, p_.data() + O * i);
     }
     for (std::size_t k = 0; k < u_.size(); ++k) u_[k] = 0.0;
   }
   // Semi-implicit Euler, then FIRE's mixing.
-  for (std::size_t i = 0; i < n_; ++i)
-    for (int k = 0; k < dim; ++k) {
-      u_[6 * i + k] += dt_ * f_[3 * i + k];
-      u_[6 * i + 3 + k] += dt_ * t_[3 * i + k];
-    }
-  for (std::size_t i = 0; i < n_; ++i)
-    for (int k = 0; k < dim; ++k) {
-      unorm += u_[6 * i + k] * u_[6 * i + k] +
-               u_[6 * i + 3 + k] * u_[6 * i + 3 + k];
-      gnorm += f_[3 * i + k] * f_[3 * i + k] + t_[3 * i + k] * t_[3 * i + k];
-    }
+  for (std::size_t i = 0; i < n_; ++i) {
+    for (int k = 0; k < D; ++k) u_[V * i + k] += dt_ * f_[D * i + k];
+    for (int k = 0; k < R; ++k) u_[V * i + D + k] += dt_ * t_[R * i + k];
+  }
+  for (std::size_t i = 0; i < n_; ++i) {
+    double const *ui = u_.data() + V * i, *fi = f_.data() + D * i,
+                 *tq = t_.data() + R * i;
+    unorm = paired_sum<D, R>(
+        unorm, [&](int k) { return ui[k] * ui[k]; },
+        [&](int k) { return ui[D + k] * ui[D + k]; });
+    gnorm = paired_sum<D, R>(
+        gnorm, [&](int k) { return fi[k] * fi[k]; },
+        [&](int k) { return tq[k] * tq[k]; });
+  }
   double const mix = gnorm > 0.0 ? alpha_ * std::sqrt(unorm / gnorm) : 0.0;
-  for (std::size_t i = 0; i < n_; ++i)
-    for (int k = 0; k < dim; ++k) {
-      u_[6 * i + k] = (1.0 - alpha_) * u_[6 * i + k] + mix * f_[3 * i + k];
-      u_[6 * i + 3 + k] =
-          (1.0 - alpha_) * u_[6 * i + 3 + k] + mix * t_[3 * i + k];
-    }
+  for (std::size_t i = 0; i < n_; ++i) {
+    for (int k = 0; k < D; ++k)
+      u_[V * i + k] = (1.0 - alpha_) * u_[V * i + k] + mix * f_[D * i + k];
+    for (int k = 0; k < R; ++k)
+      u_[V * i + D + k] =
+          (1.0 - alpha_) * u_[V * i + D + k] + mix * t_[R * i + k];
+  }
   // The move, at most max_move·ℓ (and as much at the largest semi-axis's
   // tip for rotations) per ellipsoid.
   for (std::size_t i = 0; i < n_; ++i) {
     double const sm = 1.0 / std::sqrt(m_[i]), si = 1.0 / std::sqrt(inertia_[i]);
-    double dx[dim], w[dim];
-    for (int k = 0; k < dim; ++k) {
-      dx[k] = dt_ * u_[6 * i + k] * sm;
-      w[k] = dt_ * u_[6 * i + 3 + k] * si;
-    }
-    double const step_len = std::sqrt(dot(dx, dx));
+    double dx[D], w[R];
+    for (int k = 0; k < D; ++k) dx[k] = dt_ * u_[V * i + k] * sm;
+    for (int k = 0; k < R; ++k) w[k] = dt_ * u_[V * i + D + k] * si;
+    double const step_len = std::sqrt(norm2<D>(dx));
     double const cap = max_move * ell_;
     if (step_len > cap)
-      for (int k = 0; k < dim; ++k) dx[k] *= cap / step_len;
+      for (int k = 0; k < D; ++k) dx[k] *= cap / step_len;
     double const amax = std::sqrt(inertia_[i] / m_[i]);
-    double const turn = std::sqrt(dot(w, w)) * amax;
+    double const turn = std::sqrt(norm2<R>(w)) * amax;
     if (turn > cap)
-      for (int k = 0; k < dim; ++k) w[k] *= cap / turn;
-    for (int k = 0; k < dim; ++k)
-      c_[3 * i + k] = wrap(c_[3 * i + k] + dx[k], box_[k]);
-    rotate(w, p_.data() + 4 * i);
-    s = ellipsoid_quaternion(ai_.data() + 3 * i, p_.data() + 4 * i,
-                             qi_.data() + 6 * i);
+      for (int k = 0; k < R; ++k) w[k] *= cap / turn;
+    for (int k = 0; k < D; ++k)
+      c_[D * i + k] = wrap(c_[D * i + k] + dx[k], box_[k]);
+    Orientation<D>::turn(w, p_.data() + O * i);
+    s = Orientation<D>::form(ai_.data() + D * i, p_.data() + O * i,
+                             qi_.data() + S * i);
     if (s != Status::success) return s;
-    s = index_->update(i, c_.data() + 3 * i, qi_.data() + 6 * i);
+    s = index_->update(i, c_.data() + D * i, qi_.data() + S * i);
     if (s != Status::success) return s;
   }
   return Status::success;
@@ -383,14 +505,15 @@ Status Packer::step(bool *zero) noexcept {
 
 // Does the configuration have no overlapping pair (the all-pairs query of
 // a new index of its real shapes)?
-Status Packer::check(Config const &cf, bool *ok) noexcept {
-  Index idx(cf.box);
+template <int D>
+Status Packer<D>::check(Config<D> const &cf, bool *ok) noexcept {
+  spatial::Index<D> idx(cf.box);
   Buffer<std::size_t> ids;
   if (!ids.resize_uninitialised(n_)) return Status::no_memory;
   for (std::size_t i = 0; i < n_; ++i) ids[i] = i;
   Status s = idx.insert_many(n_, ids.data(), cf.c.data(), cf.q.data());
   if (s != Status::success) return s;
-  Buffer<PairHit> hits;
+  Buffer<spatial::PairHit<D>> hits;
   s = idx.pairs(false, 1.0, prm_.threads, &hits, nullptr);
   if (s != Status::success) return s;
   *ok = hits.empty();
@@ -400,22 +523,23 @@ Status Packer::check(Config const &cf, bool *ok) noexcept {
 // The current configuration, certified: as it is (expand false; *out
 // left unset if a pair overlaps), or with box and centres scaled by
 // (1 + 2⁻²⁰)/min μ (expand true).
-Status Packer::certify_current(Config *out, bool expand) noexcept {
-  Config cf;
-  if (!cf.c.resize(3 * n_) || !cf.p.resize(4 * n_) || !cf.q.resize(6 * n_))
+template <int D>
+Status Packer<D>::certify_current(Config<D> *out, bool expand) noexcept {
+  Config<D> cf;
+  if (!cf.c.resize(D * n_) || !cf.p.resize(O * n_) || !cf.q.resize(S * n_))
     return Status::no_memory;
-  std::memcpy(cf.p.data(), p_.data(), 4 * n_ * sizeof(double));
+  std::memcpy(cf.p.data(), p_.data(), O * n_ * sizeof(double));
   Status s = forms_of(cf.p.data(), 1.0, cf.q.data());
   if (s != Status::success) return s;
   double scale = 1.0;
   if (expand) {
-    Index idx(box_);
+    spatial::Index<D> idx(box_);
     Buffer<std::size_t> ids;
     if (!ids.resize_uninitialised(n_)) return Status::no_memory;
     for (std::size_t i = 0; i < n_; ++i) ids[i] = i;
     s = idx.insert_many(n_, ids.data(), c_.data(), cf.q.data());
     if (s != Status::success) return s;
-    Buffer<PairHit> hits;
+    Buffer<spatial::PairHit<D>> hits;
     s = idx.pairs(true, 1.0, prm_.threads, &hits, nullptr);
     if (s != Status::success) return s;
     double mu2 = 1.0;
@@ -424,17 +548,17 @@ Status Packer::certify_current(Config *out, bool expand) noexcept {
     scale = (1.0 + 0x1p-20) / std::sqrt(mu2);
   }
   for (int attempt = 0; attempt < 8; ++attempt) {
-    for (int k = 0; k < dim; ++k) cf.box[k] = box_[k] * scale;
+    for (int k = 0; k < D; ++k) cf.box[k] = box_[k] * scale;
     for (std::size_t i = 0; i < n_; ++i)
-      for (int k = 0; k < dim; ++k)
-        cf.c[3 * i + k] = wrap(c_[3 * i + k] * scale, cf.box[k]);
+      for (int k = 0; k < D; ++k)
+        cf.c[D * i + k] = wrap(c_[D * i + k] * scale, cf.box[k]);
     bool ok = false;
     s = check(cf, &ok);
     if (s != Status::success) return s;
     if (ok) {
-      cf.phi = volume_ / (cf.box[0] * cf.box[1] * cf.box[2]);
+      cf.phi = volume_ / box_measure<D>(cf.box);
       cf.set = true;
-      *out = static_cast<Config &&>(cf);
+      *out = static_cast<Config<D> &&>(cf);
       return Status::success;
     }
     if (!expand) return Status::success;
@@ -443,8 +567,9 @@ Status Packer::certify_current(Config *out, bool expand) noexcept {
   return Status::success;
 }
 
-Status Packer::run(double box[dim], double *c, double *p, double *q,
-                   double *phi, PackOutcome *outcome) noexcept {
+template <int D>
+Status Packer<D>::run(double *box, double *c, double *p, double *q,
+                      double *phi, PackOutcome *outcome) noexcept {
   Status s = init();
   PackOutcome result = PackOutcome::limit;
   double phi_lo = 0.0, phi_hi = HUGE_VAL;
@@ -480,7 +605,7 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
     }
     if (!zero && !stalled) continue;
     double next;
-    Config cf;
+    Config<D> cf;
     if (zero) {
       s = certify_current(&cf, false);
       if (s != Status::success) break;
@@ -489,7 +614,7 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
       zero = cf.set;
     }
     if (zero) {
-      if (cf.phi > best_.phi) best_ = static_cast<Config &&>(cf);
+      if (cf.phi > best_.phi) best_ = static_cast<Config<D> &&>(cf);
       phi_lo = phi_;
       if (phi_ >= prm_.target) {
         result = PackOutcome::target;
@@ -503,7 +628,7 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
       s = certify_current(&cf, true);
       if (s != Status::success) break;
       if (cf.set) phi_lo = std::max(phi_lo, cf.phi);
-      if (cf.set && cf.phi > best_.phi) best_ = static_cast<Config &&>(cf);
+      if (cf.set && cf.phi > best_.phi) best_ = static_cast<Config<D> &&>(cf);
       // (at most `backoff` at a time: the grown configuration may be far
       // below, held apart by a few deep overlaps)
       next = std::max(0.5 * (phi_lo + phi_hi), phi_hi * backoff);
@@ -520,10 +645,10 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
   }
   if (s == Status::success && result != PackOutcome::target) {
     // The current configuration, grown to contact, may beat the best.
-    Config cf;
+    Config<D> cf;
     s = certify_current(&cf, true);
     if (s == Status::success && cf.set && cf.phi > best_.phi)
-      best_ = static_cast<Config &&>(cf);
+      best_ = static_cast<Config<D> &&>(cf);
   }
   delete index_;
   index_ = nullptr;
@@ -535,9 +660,9 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
   if (s != Status::success) return s;
   if (!ok) return Status::out_of_range;  // not reached: checked when kept
   std::memcpy(box, best_.box, sizeof best_.box);
-  std::memcpy(c, best_.c.data(), 3 * n_ * sizeof(double));
-  if (p != nullptr) std::memcpy(p, best_.p.data(), 4 * n_ * sizeof(double));
-  std::memcpy(q, best_.q.data(), 6 * n_ * sizeof(double));
+  std::memcpy(c, best_.c.data(), D * n_ * sizeof(double));
+  if (p != nullptr) std::memcpy(p, best_.p.data(), O * n_ * sizeof(double));
+  std::memcpy(q, best_.q.data(), S * n_ * sizeof(double));
   *phi = best_.phi;
   *outcome = result;
   return Status::success;
@@ -545,20 +670,34 @@ Status Packer::run(double box[dim], double *c, double *p, double *q,
 
 }  // namespace
 
-bool pack_box(std::size_t n, double const *a, double const aspect[dim],
-              double phi, double box[dim]) noexcept {
-  double const v = volume_of(n, a);
-  double const s = std::cbrt(v / (phi * aspect[0] * aspect[1] * aspect[2]));
+template <int D>
+bool pack_box(std::size_t n, double const *a, double const *aspect,
+              double phi, double *box) noexcept {
+  double const v = volume_of<D>(n, a);
+  double shape = phi;
+  for (int k = 0; k < D; ++k) shape *= aspect[k];
+  double const s = Orientation<D>::side(v / shape);
   if (!std::isfinite(s) || !(s > 0.0)) return false;
-  for (int k = 0; k < dim; ++k) box[k] = aspect[k] * s;
+  for (int k = 0; k < D; ++k) box[k] = aspect[k] * s;
   return true;
 }
 
+template <int D>
 Status pack(std::size_t n, double const *a, PackParams const &params,
-            double box[dim], double *c, double *p, double *q, double *phi,
+            double *box, double *c, double *p, double *q, double *phi,
             PackOutcome *outcome) noexcept {
-  Packer packer(n, a, params);
+  Packer<D> packer(n, a, params);
   return packer.run(box, c, p, q, phi, outcome);
 }
+
+#define PW85_PACK(D)                                                         \
+  template bool pack_box<D>(std::size_t, double const *, double const *,    \
+                            double, double *) noexcept;                     \
+  template Status pack<D>(std::size_t, double const *, PackParams const &,  \
+                          double *, double *, double *, double *, double *, \
+                          PackOutcome *) noexcept;
+PW85_PACK(2)
+PW85_PACK(3)
+#undef PW85_PACK
 
 }  // namespace pw85::detail

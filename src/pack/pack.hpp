@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The certified packer (private; include/pw85/pw85_pack.h is the
-// contract, docs/packing.rst the account): a room above the index, using
-// only its contract and that of the energy (index/energy.hpp).
+// The certified packer (private; include/pw85/pw85_pack.h and
+// pw85_2d_pack.h are the contract, docs/packing.rst the account): a room
+// above the index, using only its contract and that of the energy
+// (index/energy.hpp). Written once for D = 3 (ellipsoids) and D = 2
+// (ellipses).
 #ifndef PW85_SRC_PACK_PACK_HPP
 #define PW85_SRC_PACK_PACK_HPP
 
@@ -29,7 +31,8 @@ enum class PackOutcome { target = 0, limit = 1, jammed = 2, cancelled = 3 };
 
 // The options, checked by the facade (pw85_pack.h): target in (0, 1),
 // aspect > 0, axis a unit vector, threads ≥ 1, time_limit ≥ 0 (0: none),
-// step_limit (0: none), progress_every ≥ 1.
+// step_limit (0: none), progress_every ≥ 1. In 2D only the first two
+// entries of aspect and axis are read.
 struct PackParams {
   double target;
   std::uint64_t seed;
@@ -48,16 +51,20 @@ struct PackParams {
 // applies (pw85_pack.h: 2·a_max·(1 + 2⁻⁹) < L_k at the target).
 constexpr double pack_side_margin = 1.0 + 0x1p-9;
 
-// The box at packing fraction phi for the semi-axes a (3n) and the
-// aspect; false if the volume is not finite.
-bool pack_box(std::size_t n, double const *a, double const aspect[dim],
-              double phi, double box[dim]) noexcept;
+// The box (D sides) at packing fraction phi for the semi-axes a (D·n)
+// and the aspect; false if the volume (area) is not finite.
+template <int D>
+bool pack_box(std::size_t n, double const *a, double const *aspect,
+              double phi, double *box) noexcept;
 
-// pw85_pack(), arguments checked (semi-axes finite and > 0, the box at
-// the target holds the largest ellipsoid). p may be null. Nothing is
-// written unless it returns Status::success.
+// pw85_pack() (D = 3) and pw85_2d_pack() (D = 2), arguments checked
+// (semi-axes finite and > 0, the box at the target holds the largest
+// ellipsoid). Outputs: box D, c D·n, p (orientations: 4·n quaternions in
+// 3D, n angles in 2D; may be null), q sym_size(D)·n. Nothing is written
+// unless it returns Status::success.
+template <int D>
 Status pack(std::size_t n, double const *a, PackParams const &params,
-            double box[dim], double *c, double *p, double *q, double *phi,
+            double *box, double *c, double *p, double *q, double *phi,
             PackOutcome *outcome) noexcept;
 
 }  // namespace pw85::detail

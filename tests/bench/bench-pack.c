@@ -4,10 +4,13 @@
  *   bench-pack CASE [N [THREADS [TIME_LIMIT [TARGET]]]]
  * CASE: spheres (0.60), triaxial (1 : 0.8 : 0.6, 0.65), needles
  * (1 : 0.5 : 0.2, 0.55), prolate (1 : 0.2 : 0.2 along z, 0.55), poly
- * (sizes uniform in 1–3, 1 : 0.5 : 0.2, 0.50); TARGET overrides the
+ * (sizes uniform in 1–3, 1 : 0.5 : 0.2, 0.50); ellipses (pw85_2d_pack(),
+ * aspect 1.3, 0.85) and ellipses5 (aspect 5, 0.80); TARGET overrides the
  * packing fraction of the case. Prints one line per case: φ reached,
- * outcome, wall time, steps, time per ellipsoid. Exit status 1 if a
- * packing has an overlapping pair or the call fails. */
+ * outcome, wall time, steps, time per ellipsoid; for ellipses also the
+ * time over that of the all-pairs overlap query on the result (the
+ * yardstick, in the same run). Exit status 1 if a packing has an
+ * overlapping pair or the call fails. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -17,6 +20,8 @@
 
 #include "pw85.h"
 #include "pw85_index.h"
+#include "pw85_2d_index.h"
+#include "pw85_2d_pack.h"
 #include "pw85_pack.h"
 
 static double now(void) {
@@ -41,6 +46,63 @@ static const char *outcome_name(int o) {
   return o >= 0 && o < 4 ? names[o] : "?";
 }
 
+static void options(pw85_pack_options *o, double target, int threads,
+                    double limit) {
+  pw85_pack_options_init(o);
+  o->target = target;
+  o->seed = 27;
+  o->threads = threads;
+  o->time_limit = limit;
+  o->progress = progress;
+  o->progress_every = 100;
+}
+
+/* n ellipses of the given aspect with pw85_2d_pack(), checked and timed
+ * against the all-pairs query of the index of ellipses. */
+static int ellipses(char const *which, size_t n, double aspect,
+                    double target, int threads, double limit) {
+  double *a = malloc(2 * n * sizeof *a), *c = malloc(2 * n * sizeof *c),
+         *q = malloc(3 * n * sizeof *q);
+  size_t *ids = malloc(n * sizeof *ids), count = 1;
+  for (size_t i = 0; i < n; i++) {
+    a[2 * i] = 1.0;
+    a[2 * i + 1] = 1.0 / aspect;
+    ids[i] = i;
+  }
+  pw85_pack_options o;
+  options(&o, target, threads, limit);
+  double box[2], phi = 0;
+  int outcome = -1;
+  double const t0 = now();
+  int st = pw85_2d_pack(n, a, &o, box, c, NULL, q, &phi, &outcome);
+  double const t = now() - t0;
+  if (st != PW85_SUCCESS) {
+    fprintf(stderr, "pw85_2d_pack: %s\n", pw85_strerror(st));
+    return 1;
+  }
+  pw85_2d_index *index = NULL;
+  double t1 = 0;
+  if (pw85_2d_index_create(box, &index) != 0 ||
+      pw85_2d_index_insert_many(index, n, ids, c, q) != 0 ||
+      (t1 = now(), pw85_2d_index_overlapping_pairs(index, threads, 0, NULL,
+                                                   NULL, NULL, &count)) != 0 ||
+      count != 0) {
+    fprintf(stderr, "%s: %zu overlapping pairs\n", which, count);
+    return 1;
+  }
+  double const yardstick = now() - t1;
+  printf("%-9s N=%-7zu threads=%d target=%.3f phi=%.4f outcome=%-9s "
+         "time=%.1f s steps>=%zu us/ellipse=%.0f time/all-pairs-query=%.0f\n",
+         which, n, threads, target, phi, outcome_name(outcome), t, last_steps,
+         1e6 * t / (double)n, t / yardstick);
+  pw85_2d_index_destroy(index);
+  free(ids);
+  free(a);
+  free(c);
+  free(q);
+  return 0;
+}
+
 int main(int argc, char **argv) {
   const char *which = argc > 1 ? argv[1] : "spheres";
   size_t const n = argc > 2 ? (size_t)atol(argv[2]) : 10000;
@@ -59,6 +121,12 @@ int main(int argc, char **argv) {
     orientation = PW85_PACK_ALIGNED;
   } else if (strcmp(which, "poly") == 0) {
     shape[1] = 0.5, shape[2] = 0.2, target = 0.50, poly = 1;
+  } else if (strcmp(which, "ellipses") == 0 ||
+             strcmp(which, "ellipses5") == 0) {
+    int const five = which[8] == '5';
+    return ellipses(which, n, five ? 5.0 : 1.3,
+                    argc > 5 ? atof(argv[5]) : five ? 0.80 : 0.85, threads,
+                    limit);
   } else {
     fprintf(stderr, "unknown case %s\n", which);
     return 2;
@@ -73,14 +141,8 @@ int main(int argc, char **argv) {
     for (int k = 0; k < 3; k++) a[3 * i + k] = s * shape[k];
   }
   pw85_pack_options o;
-  pw85_pack_options_init(&o);
-  o.target = target;
-  o.seed = 27;
+  options(&o, target, threads, limit);
   o.orientation = orientation;
-  o.threads = threads;
-  o.time_limit = limit;
-  o.progress = progress;
-  o.progress_every = 100;
   double box[3], phi = 0;
   int outcome = -1;
   double const t0 = now();

@@ -12,16 +12,17 @@ import pytest
 import pypw85
 
 
-def brute_overlaps(p):
-    """Overlapping or tangent (i, j, shift), by pypw85.overlap on every pair
-    i < j and image shift in {-1, 0, 1}³ (enough: centres in [0, L), box
-    wider than twice the largest semi-axis), in one batch call."""
-    n = len(p.centres)
+def brute_overlaps(p, overlap=pypw85.overlap):
+    """Overlapping or tangent (i, j, shift), by overlap (pypw85.overlap, or
+    pypw85.d2.overlap for a packing of ellipses) on every pair i < j and
+    image shift in {-1, 0, 1}^D (enough: centres in [0, L), box wider than
+    twice the largest semi-axis), in one batch call."""
+    n, dim = p.centres.shape
     i, j = np.triu_indices(n, 1)
-    shifts = np.array(list(itertools.product((-1, 0, 1), repeat=3)))
+    shifts = np.array(list(itertools.product((-1, 0, 1), repeat=dim)))
     r = (p.centres[j][:, None, :] + shifts[None, :, :] * p.box
          - p.centres[i][:, None, :])
-    res = pypw85.overlap(r, p.forms[i][:, None, :], p.forms[j][:, None, :])
+    res = overlap(r, p.forms[i][:, None, :], p.forms[j][:, None, :])
     return np.argwhere(res <= 0)
 
 

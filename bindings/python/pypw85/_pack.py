@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """`pack`: N ellipsoids in a periodic box with no overlapping pair
 (``pw85_pack.h``, whose description is the contract: the method, the
-certification, determinism)."""
+certification, determinism); `pypw85.d2.pack`, N ellipses in a periodic
+rectangle (``pw85_2d_pack.h``), through the same code (`_pack`)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import typing
 import numpy as np
 
 if typing.TYPE_CHECKING:
-    from typing import Callable, Optional, Sequence
+    from typing import Callable, Optional, Sequence, Type
     from numpy.typing import ArrayLike
 
 from ._constants import EDOM, EINVAL, ERANGE
@@ -52,6 +53,23 @@ _declare(_lib, {
                                  ctypes.POINTER(ctypes.c_double),
                                  ctypes.POINTER(ctypes.c_int)]),
 })
+
+class _Shape(typing.NamedTuple):
+    """What differs between the packer of ellipsoids and that of ellipses:
+    the sizes (of a semi-axes row, a form, an orientation row: () for one
+    angle), the C function, the volume of a shape over the product of its
+    semi-axes, the words of the messages."""
+    dim: int
+    sym: int
+    orientation: tuple
+    function: str
+    measure: float
+    noun: str
+    domain: str
+
+
+_D3 = _Shape(3, 6, (4,), "pw85_pack", 4.0 / 3.0 * math.pi, "ellipsoid",
+             "box")
 
 _ORIENTATIONS = {"isotropic": 0, "aligned": 1}
 _OUTCOMES = ("target", "limit", "jammed", "cancelled")
@@ -112,86 +130,108 @@ def _positive(name, value, allow_zero=False):
     return v
 
 
-def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
-         aspect: Sequence[float] = (1.0, 1.0, 1.0),
-         orientation: str = "isotropic",
-         axis: Sequence[float] = (0.0, 0.0, 1.0), threads: int = 1,
-         time_limit: Optional[float] = None,
-         step_limit: Optional[int] = None,
-         progress: Optional[Callable[[dict], object]] = None,
-         progress_every: int = 100) -> Packing:
-    """Pack ellipsoids in a periodic box, no pair overlapping
-    (``pw85_pack``; its header describes the method and its sources).
+def _packer(sh, result, aspect, axis, module, doc):
+    """The public function that packs the shapes of sh into a result (a
+    NamedTuple class): its signature written once for both dimensions,
+    with the defaults of aspect and axis of the dimension."""
+    def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
+             aspect: Sequence[float] = aspect,
+             orientation: str = "isotropic",
+             axis: Sequence[float] = axis, threads: int = 1,
+             time_limit: Optional[float] = None,
+             step_limit: Optional[int] = None,
+             progress: Optional[Callable[[dict], object]] = None,
+             progress_every: int = 100):
+        return result(*_pack(sh, semi_axes, target, seed, aspect,
+                             orientation, axis, threads, time_limit,
+                             step_limit, progress, progress_every))
+    pack.__annotations__["return"] = result.__name__
+    pack.__module__ = module
+    pack.__qualname__ = "pack"
+    pack.__doc__ = doc
+    return pack
 
-    Parameters
-    ----------
-    semi_axes : array_like, shape (n, 3)
-        The semi-axes of each ellipsoid (> 0): any mix of sizes and shapes
-        (``np.tile(shape, (n, 1))`` for n of one shape).
-    target : float
-        The packing fraction to reach, in (0, 1).
-    seed : int
-        The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and seed give
-        the same packing, bit for bit, for any ``threads``.
-    aspect : 3 floats
-        The box's sides are proportional to these (cube by default).
-    orientation : {"isotropic", "aligned"}
-        Uniform random orientations, or the largest semi-axis of every
-        ellipsoid along ``axis`` (fibres; they then turn about it only).
-    axis : 3 floats
-        The direction of ``"aligned"`` (normalised; not zero).
-    threads : int
-        OpenMP threads (≥ 1).
-    time_limit : float, optional
-        Seconds of wall clock; then the outcome is ``"limit"``.
-    step_limit : int, optional
-        Steps of the minimiser; then the outcome is ``"limit"``.
-    progress : callable, optional
-        Called every ``progress_every`` steps with a dict: ``phi`` (the
-        densest certified packing fraction so far), ``phi_trial`` (the one
-        being relaxed), ``energy`` (overlap energy per ellipsoid),
-        ``elapsed`` (seconds), ``steps``, ``pairs`` (overlapping pairs).
-        A true return value stops the run (outcome ``"cancelled"``); an
-        exception stops it and is raised again. Called from Python: about
-        a microsecond per call, negligible at 100 steps.
-    progress_every : int
-        Steps between calls of ``progress`` (≥ 1).
 
-    Returns
-    -------
-    Packing
-        ``box``, ``centres``, ``quaternions``, ``forms``, ``phi`` and
-        ``outcome`` (``"target"``, ``"limit"``, ``"jammed"`` or
-        ``"cancelled"``). Whatever the outcome, no pair overlaps (checked
-        by the all-pairs query before the library returns).
+pack = _packer(_D3, Packing, (1.0, 1.0, 1.0), (0.0, 0.0, 1.0), __name__,
+               """Pack ellipsoids in a periodic box, no pair overlapping
+(``pw85_pack``; its header describes the method and its sources).
 
-    Raises
-    ------
-    Error
-        A status of the library, with a message naming the argument: `EDOM`
-        for a value not finite, `EINVAL` for n = 0, a semi-axis not > 0, a
-        target not in (0, 1), an aspect not > 0, an unknown orientation, a
-        zero axis, threads < 1, a limit not > 0, or a box too small at the
-        target for the largest ellipsoid (decided by the library, as
-        ``pw85_pack.h`` states the rule); `ERANGE` for semi-axes spanning
-        more than 2⁴⁰.
-    TypeError, ValueError
-        An argument of the wrong type or shape (``threads``,
-        ``step_limit`` and ``progress_every`` are ints), or a count beyond
-        the C type that holds it (``threads`` above 2³¹ − 1, a limit above
-        2⁶⁴ − 1).
-    """
+Parameters
+----------
+semi_axes : array_like, shape (n, 3)
+    The semi-axes of each ellipsoid (> 0): any mix of sizes and shapes
+    (``np.tile(shape, (n, 1))`` for n of one shape).
+target : float
+    The packing fraction to reach, in (0, 1).
+seed : int
+    The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs and
+    seed give the same packing, bit for bit, for any ``threads``.
+aspect : 3 floats
+    The box's sides are proportional to these (cube by default).
+orientation : {"isotropic", "aligned"}
+    Uniform random orientations, or the largest semi-axis of every
+    ellipsoid along ``axis`` (fibres; they then turn about it only).
+axis : 3 floats
+    The direction of ``"aligned"`` (normalised; not zero).
+threads : int
+    OpenMP threads (≥ 1).
+time_limit : float, optional
+    Seconds of wall clock; then the outcome is ``"limit"``.
+step_limit : int, optional
+    Steps of the minimiser; then the outcome is ``"limit"``.
+progress : callable, optional
+    Called every ``progress_every`` steps with a dict: ``phi`` (the
+    densest certified packing fraction so far), ``phi_trial`` (the one
+    being relaxed), ``energy`` (overlap energy per ellipsoid),
+    ``elapsed`` (seconds), ``steps``, ``pairs`` (overlapping pairs).
+    A true return value stops the run (outcome ``"cancelled"``); an
+    exception stops it and is raised again. Called from Python: about
+    a microsecond per call, negligible at 100 steps.
+progress_every : int
+    Steps between calls of ``progress`` (≥ 1).
+
+Returns
+-------
+Packing
+    ``box``, ``centres``, ``quaternions``, ``forms``, ``phi`` and
+    ``outcome`` (``"target"``, ``"limit"``, ``"jammed"`` or
+    ``"cancelled"``). Whatever the outcome, no pair overlaps (checked
+    by the all-pairs query before the library returns).
+
+Raises
+------
+Error
+    A status of the library, with a message naming the argument: `EDOM`
+    for a value not finite, `EINVAL` for n = 0, a semi-axis not > 0, a
+    target not in (0, 1), an aspect not > 0, an unknown orientation, a
+    zero axis, threads < 1, a limit not > 0, or a box too small at the
+    target for the largest ellipsoid (decided by the library, as
+    ``pw85_pack.h`` states the rule); `ERANGE` for semi-axes spanning
+    more than 2⁴⁰.
+TypeError, ValueError
+    An argument of the wrong type or shape (``threads``,
+    ``step_limit`` and ``progress_every`` are ints), or a count beyond
+    the C type that holds it (``threads`` above 2³¹ − 1, a limit above
+    2⁶⁴ − 1).
+    """)
+
+
+def _pack(sh, semi_axes, target, seed, aspect, orientation, axis, threads,
+          time_limit, step_limit, progress, progress_every):
+    """`pack` (sh = _D3) and `pypw85.d2.pack`: the fields of the result."""
+    d = sh.dim
     a = np.asarray(semi_axes)
     if a.dtype.kind not in "iuf":
         raise TypeError("pack: semi_axes must hold real numbers, got dtype %s"
                         % a.dtype)
-    if a.ndim != 2 or a.shape[1] != 3:
-        raise ValueError("pack: semi_axes must have shape (n, 3), got %s"
-                         % (a.shape,))
+    if a.ndim != 2 or a.shape[1] != d:
+        raise ValueError("pack: semi_axes must have shape (n, %d), got %s"
+                         % (d, a.shape))
     a = np.ascontiguousarray(a, dtype=np.float64)
     n = a.shape[0]
     if n == 0:
-        raise Error(EINVAL, "pack", "semi_axes holds no ellipsoid (n = 0)")
+        raise Error(EINVAL, "pack", "semi_axes holds no %s (n = 0)"
+                    % sh.noun)
     if not np.all(np.isfinite(a)):
         k = int(np.argmin(np.isfinite(a).all(axis=1)))
         raise Error(EDOM, "pack", "semi_axes[%d] = %s is not finite"
@@ -211,13 +251,14 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
         raise Error(EINVAL, "pack", "orientation = %r is not one of %s"
                     % (orientation, ", ".join(map(repr, _ORIENTATIONS))))
     asp = [_positive("aspect[%d]" % k, x) for k, x in
-           enumerate(_three("aspect", aspect))]
-    ax = _three("axis", axis)
+           enumerate(_reals("aspect", aspect, d))]
+    ax = _reals("axis", axis, d)
     for k, x in enumerate(ax):
         if not math.isfinite(x):
             raise Error(EDOM, "pack", "axis[%d] = %r is not finite" % (k, x))
     if not any(ax):
-        raise Error(EINVAL, "pack", "axis = (0, 0, 0) has no direction")
+        raise Error(EINVAL, "pack", "axis = (%s) has no direction"
+                    % ", ".join(["0"] * d))
     threads = _count("threads", threads, 1, 2**31 - 1)
     limit = 0.0 if time_limit is None else _positive("time_limit",
                                                      time_limit)
@@ -229,9 +270,9 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
     _lib.pw85_pack_options_init(ctypes.byref(opts))
     opts.target = target
     opts.seed = _count("seed", seed, 0, 2**64 - 1)
-    opts.aspect[:] = asp
+    opts.aspect[:d] = asp
     opts.orientation = _ORIENTATIONS[orientation]
-    opts.axis[:] = ax
+    opts.axis[:d] = ax
     opts.threads = threads
     opts.time_limit = limit
     opts.step_limit = steps
@@ -253,34 +294,35 @@ def pack(semi_axes: ArrayLike, target: float = 0.5, *, seed: int = 0,
                 raised.append(exc)
                 return 1
         opts.progress = _CALLBACK(call)
-    box = np.empty(3)
-    centres = np.empty((n, 3))
-    quaternions = np.empty((n, 4))
-    forms = np.empty((n, 6))
+    box = np.empty(d)
+    centres = np.empty((n, d))
+    orientations = np.empty((n,) + sh.orientation)
+    forms = np.empty((n, sh.sym))
     phi = ctypes.c_double()
     outcome = ctypes.c_int()
-    code = _lib.pw85_pack(n, a.ctypes.data, ctypes.byref(opts),
-                          box.ctypes.data, centres.ctypes.data,
-                          quaternions.ctypes.data, forms.ctypes.data,
-                          ctypes.byref(phi), ctypes.byref(outcome))
+    code = getattr(_lib, sh.function)(
+        n, a.ctypes.data, ctypes.byref(opts), box.ctypes.data,
+        centres.ctypes.data, orientations.ctypes.data, forms.ctypes.data,
+        ctypes.byref(phi), ctypes.byref(outcome))
     if raised:
         raise raised[0]
     if code == EINVAL:
         # Every other rule of PW85_EINVAL was checked above: the side rule
         # (decided by the library alone, whose arithmetic is the rule),
         # with the numbers.
-        volume = 4.0 / 3.0 * math.pi * float(np.sum(np.prod(a, axis=1)))
-        s = (volume / (target * asp[0] * asp[1] * asp[2])) ** (1.0 / 3.0)
+        volume = sh.measure * float(np.sum(np.prod(a, axis=1)))
+        s = (volume / (target * math.prod(asp))) ** (1.0 / d)
         k = int(np.argmin(np.asarray(asp)))
-        raise Error(EINVAL, "pack", "the box at target %.6g has side "
+        raise Error(EINVAL, "pack", "the %s at target %.6g has side "
                     "L_%d = %.6g, not above 2·a_max·(1 + 2⁻⁹) = %.6g "
                     "(the largest semi-axis, %.6g, must fit: lower the "
                     "target or change the aspect)"
-                    % (target, k, asp[k] * s, 2 * amax * _SIDE_MARGIN, amax))
+                    % (sh.domain, target, k, asp[k] * s,
+                       2 * amax * _SIDE_MARGIN, amax))
     if code != 0:
         raise Error(code, "pack")
-    return Packing(box, centres, quaternions, forms, phi.value,
-                   _OUTCOMES[outcome.value])
+    return (box, centres, orientations, forms, phi.value,
+            _OUTCOMES[outcome.value])
 
 
 def _count(name, x, lo, hi):
@@ -297,13 +339,14 @@ def _count(name, x, lo, hi):
     return x
 
 
-def _three(name, x):
+def _reals(name, x, d):
+    """x as a list of d floats, or raise naming it."""
     try:
         v = [float(y) for y in x]
     except (TypeError, ValueError):
-        raise TypeError("pack: %s must be 3 real numbers, got %r"
-                        % (name, x)) from None
-    if len(v) != 3:
-        raise ValueError("pack: %s must be 3 real numbers, got %d"
-                         % (name, len(v)))
+        raise TypeError("pack: %s must be %d real numbers, got %r"
+                        % (name, d, x)) from None
+    if len(v) != d:
+        raise ValueError("pack: %s must be %d real numbers, got %d"
+                         % (name, d, len(v)))
     return v

@@ -57,13 +57,15 @@ from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 from ._symbols import LIBPW85_2D, declare as _declare
 from .index import (_Dimension, _Index, _prototypes as _index_prototypes)
+from ._pack import _Options, _Shape, _packer
 
 __all__ = [
     "DIM", "SYM", "GEOM_MU2", "GEOM_LAMBDA", "GEOM_POINT", "GEOM_NORMAL",
     "GEOM_SIZE", "DERIV_R12", "DERIV_THETA1", "DERIV_THETA2", "DERIV_Q1",
     "DERIV_Q2", "DERIV_SIZE",
     "f", "f_neg", "contact_function", "overlap", "contact_geometry",
-    "contact_derivatives", "ellipse", "principal_axes", "Index",
+    "contact_derivatives", "ellipse", "principal_axes", "Index", "pack",
+    "Packing",
 ]
 
 # The macros of pw85_2d.h (tests/python/test_d2.py parses the header and
@@ -99,6 +101,10 @@ DERIV_SIZE = 10
 try:
     _declare(_lib, LIBPW85_2D)
     _declare(_lib, _index_prototypes("pw85_2d_index_"))
+    _declare(_lib, {"pw85_2d_pack": (
+        ctypes.c_int, [ctypes.c_size_t, ctypes.c_void_p,
+                       ctypes.POINTER(_Options)] + [ctypes.c_void_p] * 4
+        + [ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_int)])})
 except AttributeError as exc:  # a libpw85 older than 2.5.0
     raise ImportError("pypw85.d2: the libpw85 loaded (%s) has no ellipse "
                       "functions (pw85_2d.h, since 2.5.0): %s"
@@ -545,7 +551,8 @@ class Index(_Index):
     Ids, containers, errors, threads and the order of the results are
     those of `pypw85.index.Index`; centres are of shape ``(n, 2)``, forms
     ``(n, 3)`` (Q00, Q01, Q11), image shifts ``(m, 2)`` (the image of
-    ellipse j is at ``c_j + shift * box``). There is no ``energy``.
+    ellipse j is at ``c_j + shift * box``); `Index.energy` returns forces
+    ``(n, 2)`` and torques ``(n,)``, ∂/∂θ (``pw85_2d_index_energy``).
 
     Parameters
     ----------
@@ -559,5 +566,86 @@ class Index(_Index):
         `EDOM` if a side is not finite, `EINVAL` if one is not > 0.
     """
 
-    _dim = _Dimension(2, 3, "pw85_2d_index_", (0, 2), _posdef, "ellipse",
-                      "rectangle", "pypw85.d2.Index")
+    _dim = _Dimension(2, 3, 1, "pw85_2d_index_", (0, 2), _posdef,
+                      "ellipse", "rectangle", "pypw85.d2.Index")
+
+
+_D2 = _Shape(2, 3, (), "pw85_2d_pack", math.pi, "ellipse", "rectangle")
+
+
+class Packing(typing.NamedTuple):
+    """The result of `pack` (a named tuple): `pypw85.Packing` for ellipses.
+
+    Parameters
+    ----------
+    box : ndarray, shape (2,)
+        The sides of the periodic rectangle.
+    centres : ndarray, shape (n, 2)
+        The centres, in [0, L_k).
+    angles : ndarray, shape (n,)
+        The angles θ (radians, in [−π, π]): semi-axis 0 along
+        (cos θ, sin θ).
+    forms : ndarray, shape (n, 3)
+        The quadratic forms (Q00, Q01, Q11): `ellipse` of the semi-axes
+        and angles, bit for bit.
+    phi : float
+        The packing fraction of the result, Σπ·a0·a1 / (L0·L1).
+    outcome : str
+        ``"target"``, ``"limit"``, ``"jammed"`` or ``"cancelled"``, as
+        `pypw85.pack`.
+
+    Returns
+    -------
+    Packing
+        (As a named tuple.) No pair of a packing overlaps.
+
+    Raises
+    ------
+    TypeError
+        With the wrong number of fields.
+    """
+    box: np.ndarray
+    centres: np.ndarray
+    angles: np.ndarray
+    forms: np.ndarray
+    phi: float
+    outcome: str
+
+
+pack = _packer(_D2, Packing, (1.0, 1.0), (1.0, 0.0), __name__,
+               """Pack ellipses in a periodic rectangle, no pair overlapping
+(``pw85_2d_pack``): `pypw85.pack` for ellipses, the same code.
+
+Parameters
+----------
+semi_axes : array_like, shape (n, 2)
+    The semi-axes of each ellipse (> 0): any mix of sizes and shapes.
+target : float
+    The packing fraction Σπ·a0·a1 / (L0·L1) to reach, in (0, 1).
+seed : int
+    The seed of the random placement, 0 to 2⁶⁴ − 1. The same inputs
+    and seed give the same packing, bit for bit, for any ``threads``.
+aspect : 2 floats
+    The rectangle's sides are proportional to these (a square by
+    default).
+orientation : {"isotropic", "aligned"}
+    Uniform random angles, or the largest semi-axis of every ellipse
+    along ``axis`` (the ellipses then never turn).
+axis : 2 floats
+    The direction of ``"aligned"`` in the plane (not zero).
+threads, time_limit, step_limit, progress, progress_every
+    As `pypw85.pack` (``energy`` of the progress dict is per ellipse).
+
+Returns
+-------
+Packing
+    ``box``, ``centres``, ``angles``, ``forms``, ``phi`` and
+    ``outcome``. Whatever the outcome, no pair overlaps (checked by the
+    all-pairs query of the index of ellipses before the library
+    returns).
+
+Raises
+------
+Error, TypeError, ValueError
+    As `pypw85.pack`, with the side rule of the rectangle.
+    """)

@@ -26,13 +26,15 @@ threads.
 
 `pypw85.d2.Index` is the same class for ellipses (``pw85_2d_index.h``),
 but for the sizes: centres ``(n, 2)``, forms ``(n, 3)`` (Q00, Q01, Q11),
-shifts ``(m, 2)``; it has no `Index.energy`.
+shifts ``(m, 2)``, forces of `Index.energy` ``(n, 2)`` and torques ``(n,)``
+(one angle per ellipse).
 """
 
 from __future__ import annotations
 
 import ctypes
 import math
+import types
 import typing
 
 import numpy as np
@@ -81,15 +83,14 @@ def _prototypes(prefix):
         "overlapping_pairs": (_INT, [_P, _INT, _SIZE, _P, _P, _P, _SIZE_P]),
         "pairs_within": (_INT, [_P, _DOUBLE, _INT, _SIZE, _P, _P, _P,
                                 _SIZE_P]),
+        # pw85_index_energy since 2.4.0, pw85_2d_index_energy since 2.5.0
+        "energy": (_INT, [_P, _INT, _DOUBLE, _P, _P, _INT, _SIZE,
+                          ctypes.POINTER(_DOUBLE), _P, _P]),
     }.items()}
 
 
 LIBPW85_INDEX = _prototypes("pw85_index_")
 LIBPW85_INDEX["pw85_index_openmp"] = (_INT, [])
-# Since 2.4.0.
-LIBPW85_INDEX["pw85_index_energy"] = (_INT, [_P, _INT, _DOUBLE, _P, _P, _INT,
-                                             _SIZE, ctypes.POINTER(_DOUBLE),
-                                             _P, _P])
 #: pw85_pair_energy: int (*)(double mu2, void *data, double out[2]).
 _PAIR_ENERGY = ctypes.CFUNCTYPE(_INT, _DOUBLE, _P, ctypes.POINTER(_DOUBLE))
 _declare(_lib, LIBPW85_INDEX)
@@ -119,10 +120,11 @@ def _posdef_3d(f):
 
 class _Dimension(typing.NamedTuple):
     """What differs between the index of ellipsoids and that of ellipses:
-    the sizes of a centre and a form, the C prefix, the positions of the
-    diagonal in a stored form, the words of the messages."""
+    the sizes of a centre, a form and a torque, the C prefix, the positions
+    of the diagonal in a stored form, the words of the messages."""
     dim: int
     sym: int
+    rot: int
     prefix: str
     diagonal: Tuple[int, ...]
     posdef: Callable
@@ -134,7 +136,7 @@ class _Dimension(typing.NamedTuple):
         return getattr(_lib, self.prefix + name)
 
 
-_D3 = _Dimension(3, 6, "pw85_index_", (0, 3, 5), _posdef_3d, "ellipsoid",
+_D3 = _Dimension(3, 6, 3, "pw85_index_", (0, 3, 5), _posdef_3d, "ellipsoid",
                  "box", "pypw85.Index")
 
 
@@ -210,9 +212,35 @@ def _fmt(x):
 
 class _Index:
     """The index of either dimension; `Index` (3D) and `pypw85.d2.Index`
-    (2D) set `_dim`, the calls and sizes of their C header."""
+    (2D) set `_dim`, the calls and sizes of their C header. The docstrings
+    of its methods are written once, with {shape}, {shapes}, {domain},
+    {D}, {S} and {torques} for the words and sizes of each dimension: each
+    subclass gets its own copy of every method, its docstring filled in
+    (`__init_subclass__`)."""
 
     _dim = _D3
+
+    def __init_subclass__(cls, **kwargs):
+        super().__init_subclass__(**kwargs)
+        d = cls._dim
+        words = {"{shape}": d.shape, "{shapes}": d.shape + "s",
+                 "{domain}": d.domain, "{D}": str(d.dim), "{S}": str(d.sym),
+                 "{torques}": "``(n, 3)``" if d.rot == 3 else "``(n,)``"}
+        for name, f in vars(_Index).items():
+            if not isinstance(f, types.FunctionType) or f.__doc__ is None \
+                    or "{" not in f.__doc__ or name in vars(cls):
+                continue
+            g = types.FunctionType(f.__code__, f.__globals__, f.__name__,
+                                   f.__defaults__, f.__closure__)
+            g.__kwdefaults__ = f.__kwdefaults__
+            g.__annotations__ = dict(f.__annotations__)
+            g.__qualname__ = cls.__qualname__ + "." + name
+            g.__module__ = cls.__module__
+            doc = f.__doc__
+            for key, word in words.items():
+                doc = doc.replace(key, word)
+            g.__doc__ = doc
+            setattr(cls, name, g)
 
     def __init__(self, box: Optional[ArrayLike] = None) -> None:
         d = self._dim
@@ -347,14 +375,14 @@ class _Index:
 
     def insert(self, ids: Union[IdLike, ArrayLike], centres: ArrayLike,
                q: ArrayLike) -> None:
-        """Insert ellipsoids, all or none.
+        """Insert {shapes}, all or none.
 
-        ``ids`` of shape ``(n,)`` (or one int), ``centres`` ``(n, 3)`` (or
-        one ``(3,)`` centre for all), ``q`` ``(n, 6)`` (or one ``(6,)``
+        ``ids`` of shape ``(n,)`` (or one int), ``centres`` ``(n, {D})`` (or
+        one ``({D},)`` centre for all), ``q`` ``(n, {S})`` (or one ``({S},)``
         form for all). Raises `TypeError` for ids that are not integers,
         `ValueError` for a negative one or a bad shape, `Error` for an
         input the library rejects (`EINVAL`: an id in use, or repeated, or
-        in a periodic box an ellipsoid not narrower than the box or a
+        in a periodic {domain} an {shape} not narrower than the {domain} or a
         centre beyond 2²⁹ sides; `ENOTPOSDEF`; `EDOM`), naming the first
         failing item, its id and the rule; the index is then unchanged.
         """
@@ -380,7 +408,7 @@ class _Index:
         self._stored.update(i.tolist())
 
     def update(self, id: IdLike, centre: ArrayLike, q: ArrayLike) -> None:
-        """Move or reshape the stored ellipsoid ``id``.
+        """Move or reshape the stored {shape} ``id``.
 
         Raises `Error` as `insert` (`EINVAL` also for an id not stored),
         naming the rule; the index is then unchanged.
@@ -392,7 +420,7 @@ class _Index:
             self._raise(code, "update", c, f, ident)
 
     def remove(self, id: IdLike) -> None:
-        """Remove the stored ellipsoid ``id`` (`Error` `EINVAL` if it is
+        """Remove the stored {shape} ``id`` (`Error` `EINVAL` if it is
         not stored)."""
         ident = _id("id", id)
         code = self._dim.fn("remove")(self._h(), ident)
@@ -407,7 +435,7 @@ class _Index:
 
     def get(self, id: IdLike) -> Tuple[NDArray[np.float64],
                                       NDArray[np.float64]]:
-        """(centre, q) of the stored ellipsoid ``id``, as inserted (`Error`
+        """(centre, q) of the stored {shape} ``id``, as inserted (`Error`
         `EINVAL` if it is not stored)."""
         ident = _id("id", id)
         c = np.empty(self._dim.dim)
@@ -433,11 +461,11 @@ class _Index:
     def overlap_any(self, centre: ArrayLike, q: ArrayLike,
                     exclude: Optional[IdLike] = None
                     ) -> Tuple[int, Optional[int]]:
-        """Does a candidate overlap a stored ellipsoid (skipping ``exclude``)?
+        """Does a candidate overlap a stored {shape} (skipping ``exclude``)?
 
         Returns ``(result, id)``: result -1 (some overlap; stops at the
         first), 0 (none overlaps, some is tangent to 4 ulps) or +1, and the
-        id of an ellipsoid with that result (None for +1). The result is
+        id of an {shape} with that result (None for +1). The result is
         an int, not a bool: test ``result < 0`` for "overlaps".
         """
         c, f = self._one(centre, q)
@@ -456,10 +484,10 @@ class _Index:
                          threads: int = 1
                          ) -> Tuple[NDArray[np.intc], NDArray[np.int64]]:
         """`overlap_any` for n candidates in one call, each decided against
-        the stored ellipsoids only (not against each other).
+        the stored {shapes} only (not against each other).
 
-        ``centres`` ``(n, 3)``, ``q`` ``(n, 6)`` (or one ``(6,)`` form for
-        all); ``exclude`` None, or ``(n,)`` ids, -1 for none. ``threads``:
+        ``centres`` ``(n, {D})``, ``q`` ``(n, {S})`` (or one ``({S},)`` form
+        for all); ``exclude`` None, or ``(n,)`` ids, -1 for none. ``threads``:
         1, 0 (OpenMP's default) or up to that many (none started below 512
         candidates); the results do not depend on it.
 
@@ -516,11 +544,11 @@ class _Index:
                exclude: Optional[IdLike] = None
                ) -> Tuple[NDArray[np.int64], NDArray[np.intc],
                           NDArray[np.float64]]:
-        """Every stored ellipsoid and image with μ² < t from a candidate.
+        """Every stored {shape} and image with μ² < t from a candidate.
 
         Returns ``(ids, shifts, mu2_lambda)`` of shapes ``(m,)``,
-        ``(m, 3)``, ``(m, 2)``, sorted by id then shift; the image of
-        ellipsoid j is at ``c_j + shift * box``.
+        ``(m, {D})``, ``(m, 2)``, sorted by id then shift; the image of
+        {shape} j is at ``c_j + shift * box``.
         """
         c, f = self._one(centre, q)
         ex = NO_ID if exclude is None else _id("exclude", exclude)
@@ -543,7 +571,7 @@ class _Index:
         """Every overlapping (or tangent) pair, each once.
 
         ``threads`` ≥ 1. Returns ``(ids, shifts, results)`` of shapes
-        ``(m, 2)``, ``(m, 3)``, ``(m,)``: pairs (i, j), i < j, the image
+        ``(m, 2)``, ``(m, {D})``, ``(m,)``: pairs (i, j), i < j, the image
         shift of j, and -1 (overlap) or 0 (tangent to 4 ulps); sorted by
         i, j, shift.
         """
@@ -561,7 +589,7 @@ class _Index:
         """Every pair (and image) with μ² < t, each once.
 
         ``threads`` ≥ 1. Returns ``(ids, shifts, mu2_lambda)`` of shapes
-        ``(m, 2)``, ``(m, 3)``, ``(m, 2)``, sorted by i, j, shift.
+        ``(m, 2)``, ``(m, {D})``, ``(m, 2)``, sorted by i, j, shift.
         """
         threads = _pair_threads("pairs_within", threads)
         t = float(t)
@@ -574,6 +602,93 @@ class _Index:
                 self._h(), t, threads, cap, ids, shifts, ml, count)
         return self._collect(call, 2, np.float64, "pairs_within",
                              8 * len(self) + 16)
+
+    def energy(self, eps: float = 1.0, *,
+               u: Optional[Callable[[float], Tuple[float, float]]] = None,
+               t: Optional[float] = None,
+               threads: int = 1, n: Optional[int] = None
+               ) -> Tuple[float, NDArray[np.float64], NDArray[np.float64]]:
+        """The energy summed over every pair (and image), the force and the
+        torque on every {shape} (``pw85_index_energy``,
+        ``pw85_2d_index_energy``).
+
+        By default the overlap energy ``eps·(1 − μ)²`` of the pairs with
+        μ < 1 (its minimisation removes overlaps). With ``u``, a function
+        ``u(mu2) -> (U, dU/dmu2)`` of the pairs with μ² < ``t``: it is
+        called from Python once per pair, in the order of the pairs (about
+        a microsecond each: slow for many pairs, where the overlap energy
+        is not); an exception it raises stops the call and is raised again.
+
+        ``n``: the rows of the outputs (default: the largest stored id
+        plus one). Returns ``(energy, forces, torques)``, forces of shape
+        ``(n, {D})`` and torques {torques}, row k for the {shape} of id k
+        (zeros for ids in no pair or not stored). Forces are −∂U/∂c,
+        torques −∂U/∂ω about each centre (in 2D ω is the angle θ, and a
+        torque one number); both sum to zero over the assembly, the
+        torques with the moments of the forces about the images' centres.
+        The same arrays, bit for bit, for any ``threads`` (≥ 1).
+        """
+        threads = _pair_threads("energy", threads)
+        if n is None:
+            n = max(self._stored) + 1 if self._stored else 0
+        if isinstance(n, (bool, np.bool_)) or \
+                not isinstance(n, (int, np.integer)) or n < 0:
+            raise TypeError("energy: n must be a non-negative int, got %r"
+                            % (n,))
+        n = int(n)
+        if self._stored and n <= max(self._stored):
+            raise Error(EINVAL, "energy", "n = %d is not above the largest "
+                        "stored id, %d" % (n, max(self._stored)))
+        d = self._dim
+        forces = np.zeros((n, d.dim), dtype=np.float64)
+        torques = np.zeros((n, d.rot) if d.rot > 1 else (n,),
+                           dtype=np.float64)
+        e = _DOUBLE()
+        raised = []
+        if u is None:
+            if t is not None:
+                raise TypeError("energy: t is the threshold of a function "
+                                "u; the overlap energy takes eps only")
+            eps = float(eps)
+            if not eps > 0 or math.isinf(eps):
+                raise Error(EDOM if not math.isfinite(eps) else EINVAL,
+                            "energy", "eps = %s is not finite and > 0"
+                            % _fmt(eps))
+            code = d.fn("energy")(self._h(), 0, eps, None, None, threads, n,
+                                  ctypes.byref(e), _ptr(forces),
+                                  _ptr(torques))
+        else:
+            if not callable(u):
+                raise TypeError("energy: u must be callable, got %s"
+                                % type(u).__name__)
+            if t is None:
+                raise TypeError("energy: u needs its threshold t on mu2")
+            t = float(t)
+            if not t > 0 or math.isinf(t):
+                raise Error(EDOM if not math.isfinite(t) else EINVAL,
+                            "energy", "t = %s is not finite and > 0"
+                            % _fmt(t))
+
+            def call(mu2, data, out):
+                try:
+                    value, slope = u(mu2)
+                    out[0] = float(value)
+                    out[1] = float(slope)
+                    return 0
+                except BaseException as exc:  # raised again below
+                    raised.append(exc)
+                    return 1
+            fn = _PAIR_ENERGY(call)
+            code = d.fn("energy")(self._h(), 1, t, fn, None, threads, n,
+                                  ctypes.byref(e), _ptr(forces),
+                                  _ptr(torques))
+        if raised:
+            raise raised[0]
+        if code == EDOM and u is not None:
+            raise Error(code, "energy", "u returned a value that is not "
+                        "finite")
+        _check(code, "energy")
+        return e.value, forces, torques
 
     def _collect(self, call, ids_per_row, value_dtype, where, guess,
                  error=None):
@@ -626,89 +741,6 @@ class Index(_Index):
         `EDOM` if a side is not finite, `EINVAL` if one is not > 0 (the
         message names the side).
     """
-
-    def energy(self, eps: float = 1.0, *,
-               u: Optional[Callable[[float], Tuple[float, float]]] = None,
-               t: Optional[float] = None,
-               threads: int = 1, n: Optional[int] = None
-               ) -> Tuple[float, NDArray[np.float64], NDArray[np.float64]]:
-        """The energy summed over every pair (and image), the force and the
-        torque on every ellipsoid (``pw85_index_energy``).
-
-        By default the overlap energy ``eps·(1 − μ)²`` of the pairs with
-        μ < 1 (its minimisation removes overlaps). With ``u``, a function
-        ``u(mu2) -> (U, dU/dmu2)`` of the pairs with μ² < ``t``: it is
-        called from Python once per pair, in the order of the pairs (about
-        a microsecond each: slow for many pairs, where the overlap energy
-        is not); an exception it raises stops the call and is raised again.
-
-        ``n``: the rows of the outputs (default: the largest stored id
-        plus one). Returns ``(energy, forces, torques)``, the last two of
-        shape ``(n, 3)``, row k for the ellipsoid of id k (zeros for ids in
-        no pair or not stored). Forces are −∂U/∂c, torques −∂U/∂ω about
-        each centre; both sum to zero over the assembly, the torques with
-        the moments of the forces about the images' centres. The same
-        arrays, bit for bit, for any ``threads`` (≥ 1).
-        """
-        threads = _pair_threads("energy", threads)
-        if n is None:
-            n = max(self._stored) + 1 if self._stored else 0
-        if isinstance(n, (bool, np.bool_)) or \
-                not isinstance(n, (int, np.integer)) or n < 0:
-            raise TypeError("energy: n must be a non-negative int, got %r"
-                            % (n,))
-        n = int(n)
-        if self._stored and n <= max(self._stored):
-            raise Error(EINVAL, "energy", "n = %d is not above the largest "
-                        "stored id, %d" % (n, max(self._stored)))
-        forces = np.zeros((n, 3), dtype=np.float64)
-        torques = np.zeros((n, 3), dtype=np.float64)
-        e = _DOUBLE()
-        raised = []
-        if u is None:
-            if t is not None:
-                raise TypeError("energy: t is the threshold of a function "
-                                "u; the overlap energy takes eps only")
-            eps = float(eps)
-            if not eps > 0 or math.isinf(eps):
-                raise Error(EDOM if not math.isfinite(eps) else EINVAL,
-                            "energy", "eps = %s is not finite and > 0"
-                            % _fmt(eps))
-            code = _lib.pw85_index_energy(self._h(), 0, eps, None, None,
-                                          threads, n, ctypes.byref(e),
-                                          _ptr(forces), _ptr(torques))
-        else:
-            if not callable(u):
-                raise TypeError("energy: u must be callable, got %s"
-                                % type(u).__name__)
-            if t is None:
-                raise TypeError("energy: u needs its threshold t on mu2")
-            t = float(t)
-            if not t > 0 or math.isinf(t):
-                raise Error(EDOM if not math.isfinite(t) else EINVAL,
-                            "energy", "t = %s is not finite and > 0"
-                            % _fmt(t))
-
-            def call(mu2, data, out):
-                try:
-                    value, slope = u(mu2)
-                    out[0] = float(value)
-                    out[1] = float(slope)
-                    return 0
-                except BaseException as exc:  # raised again below
-                    raised.append(exc)
-                    return 1
-            fn = _PAIR_ENERGY(call)
-            code = _lib.pw85_index_energy(self._h(), 1, t, fn, None, threads,
-                                          n, ctypes.byref(e), _ptr(forces),
-                                          _ptr(torques))
-        if raised:
-            raise raised[0]
-        if code == EDOM and u is not None:
-            raise Error(code, "energy", "u returned a value that is not "
-                        "finite")
-        _check(code, "energy")
-        return e.value, forces, torques
 
 
 def _pair_threads(where, threads):
