@@ -16,13 +16,10 @@ c + Lxy·(cos t, sin t), Qxy = Lxy·Lxyᵀ.
 import math
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-import pypw85  # noqa: E402
+import contact_plot
+import pypw85
 
 
 def about_z(degrees):
@@ -53,35 +50,12 @@ def main(output):
         sys.exit("contact_figure.py: the contact point or the normal is "
                  "out of the plane z = 0: %r, %r" % (x, n))
 
-    plt.rcParams.update({"svg.hashsalt": "pw85", "font.size": 11})
-    fig, ax = plt.subplots(figsize=(7.0, 3.6))
-    colours = ("#3a6ea5", "#c0504d")
-    for c, q, colour, name in ((c1, q1, colours[0], "1"),
-                               (c2, q2, colours[1], "2")):
-        xy = section(c, q)
-        ax.fill(*xy, color=colour, alpha=0.25, lw=0)
-        ax.plot(*xy, color=colour, lw=1.5, label=r"$E_%s$" % name)
-        ax.plot(*section(c, q, mu), color=colour, lw=1.2, ls="--",
-                label=r"$E_%s$ scaled by $\mu$" % name)
-        ax.plot(c[0], c[1], "+", color=colour, ms=9, mew=1.5)
-        ax.annotate(r"$c_%s$" % name, c[:2], xytext=(5, -13),
-                    textcoords="offset points", color=colour)
-    ax.plot([c1[0], c2[0]], [c1[1], c2[1]], color="0.5", lw=0.8, ls=":")
-    ax.plot(x[0], x[1], "o", color="black", ms=5, zorder=3)
-    ax.annotate(r"$x_0$", x[:2], xytext=(-4, -17), textcoords="offset points")
-    ax.annotate("", xy=x[:2] + 0.9 * n[:2], xytext=x[:2],
-                arrowprops=dict(arrowstyle="-|>", color="black", lw=1.3))
-    ax.annotate(r"$n$", x[:2] + 0.9 * n[:2], xytext=(4, 0),
-                textcoords="offset points")
-    ax.set_title(r"Plane $z = 0$:  $\mu^2 = %.4f$,  $\lambda = %.4f$"
-                 % (mu2, geometry[pypw85.GEOM_LAMBDA]))
-    ax.set_aspect("equal")
-    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9,
-              frameon=False)
-    ax.set_xlabel(r"$x$")
-    ax.set_ylabel(r"$y$")
-    fig.tight_layout()
-    fig.savefig(output, metadata={"Date": None})
+    fig, ax = contact_plot.figure(3.6)
+    contact_plot.shapes(ax, ((c1, q1), (c2, q2)), section, mu)
+    contact_plot.contact(ax, c1, c2, x[:2], n[:2], (-4, -17))
+    contact_plot.finish(
+        fig, ax, r"Plane $z = 0$:  $\mu^2 = %.4f$,  $\lambda = %.4f$"
+        % (mu2, geometry[pypw85.GEOM_LAMBDA]), output)
 
 
 if __name__ == "__main__":

@@ -13,14 +13,11 @@ through d2.principal_axes: c + R(θ)·diag(a0, a1)·(cos t, sin t).
 import math
 import sys
 
-import matplotlib
+from matplotlib.patches import Arc
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.patches import Arc  # noqa: E402
-import numpy as np  # noqa: E402
-
-from pypw85 import d2  # noqa: E402
+import contact_plot
+from pypw85 import d2
 
 
 def outline(c, q, scale=1.0, n=400):
@@ -47,45 +44,21 @@ def main(output):
     x = c1 + geometry[d2.GEOM_POINT:d2.GEOM_POINT + 2]
     n = geometry[d2.GEOM_NORMAL:d2.GEOM_NORMAL + 2]
 
-    plt.rcParams.update({"svg.hashsalt": "pw85", "font.size": 11})
-    fig, ax = plt.subplots(figsize=(7.0, 3.8))
-    colours = ("#3a6ea5", "#c0504d")
-    for c, q, colour, name in ((c1, q1, colours[0], "1"),
-                               (c2, q2, colours[1], "2")):
-        xy = outline(c, q)
-        ax.fill(*xy, color=colour, alpha=0.25, lw=0)
-        ax.plot(*xy, color=colour, lw=1.5, label=r"$E_%s$" % name)
-        ax.plot(*outline(c, q, mu), color=colour, lw=1.2, ls="--",
-                label=r"$E_%s$ scaled by $\mu$" % name)
-        ax.plot(c[0], c[1], "+", color=colour, ms=9, mew=1.5)
-        ax.annotate(r"$c_%s$" % name, c, xytext=(5, -13),
-                    textcoords="offset points", color=colour)
+    fig, ax = contact_plot.figure(3.8)
+    contact_plot.shapes(ax, ((c1, q1), (c2, q2)), outline, mu)
     # θ1: from the x axis to the semi-axis a0 of E1.
     ax.plot([c1[0], c1[0] + 1.0], [c1[1], c1[1]], color="0.4", lw=0.8)
     ax.plot([c1[0], c1[0] + 2.0 * math.cos(theta1)],
-            [c1[1], c1[1] + 2.0 * math.sin(theta1)], color=colours[0],
+            [c1[1], c1[1] + 2.0 * math.sin(theta1)], color=contact_plot.COLOURS[0],
             lw=0.8)
     ax.add_patch(Arc(c1, 1.6, 1.6, theta1=0.0, theta2=30.0, color="0.4",
                      lw=0.8))
     ax.annotate(r"$\theta_1$", c1 + 0.85 * np.array([math.cos(theta1 / 2),
                                                       math.sin(theta1 / 2)]),
                 xytext=(2, -4), textcoords="offset points", color="0.3")
-    ax.plot([c1[0], c2[0]], [c1[1], c2[1]], color="0.5", lw=0.8, ls=":")
-    ax.plot(x[0], x[1], "o", color="black", ms=5, zorder=3)
-    ax.annotate(r"$x_0$", x, xytext=(-20, 2), textcoords="offset points")
-    ax.annotate("", xy=x + 0.9 * n, xytext=x,
-                arrowprops=dict(arrowstyle="-|>", color="black", lw=1.3))
-    ax.annotate(r"$n$", x + 0.9 * n, xytext=(4, 0),
-                textcoords="offset points")
-    ax.set_title(r"$\mu^2 = %.4f$,  $\lambda = %.4f$"
-                 % (mu2, geometry[d2.GEOM_LAMBDA]))
-    ax.set_aspect("equal")
-    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=9,
-              frameon=False)
-    ax.set_xlabel(r"$x$")
-    ax.set_ylabel(r"$y$")
-    fig.tight_layout()
-    fig.savefig(output, metadata={"Date": None})
+    contact_plot.contact(ax, c1, c2, x, n, (-20, 2))
+    contact_plot.finish(fig, ax, r"$\mu^2 = %.4f$,  $\lambda = %.4f$"
+                        % (mu2, geometry[d2.GEOM_LAMBDA]), output)
 
 
 if __name__ == "__main__":
