@@ -49,8 +49,8 @@ def main(output):
     # θ1: from the x axis to the semi-axis a0 of E1.
     ax.plot([c1[0], c1[0] + 1.0], [c1[1], c1[1]], color="0.4", lw=0.8)
     ax.plot([c1[0], c1[0] + 2.0 * math.cos(theta1)],
-            [c1[1], c1[1] + 2.0 * math.sin(theta1)], color=contact_plot.COLOURS[0],
-            lw=0.8)
+            [c1[1], c1[1] + 2.0 * math.sin(theta1)],
+            color=contact_plot.COLOURS[0], lw=0.8)
     ax.add_patch(Arc(c1, 1.6, 1.6, theta1=0.0, theta2=30.0, color="0.4",
                      lw=0.8))
     ax.annotate(r"$\theta_1$", c1 + 0.85 * np.array([math.cos(theta1 / 2),
