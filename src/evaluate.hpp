@@ -148,7 +148,9 @@ struct NewtonStep {
 // ρ′/ρ = a1/P1 − a2/P2 with y scaled by a power of two, then
 // λρ′ = (λρ)·(ρ′/ρ), λρ being finite where ω is. Only called where
 // newton_step()'s formulas give no finite step: elsewhere, steps are bit
-// for bit as before.
+// for bit as before. (An entry of y below 2^−1074 of the largest is then
+// lost: this ω′ is a slope only, in a safeguarded step; λ is set by the
+// sign or the compensated value of ω.)
 template <int D>
 PW85_INLINE bool scaled_step(PlainPoint<D> const &pt, double const *z1,
                              double const *z2, double *y,
@@ -156,6 +158,7 @@ PW85_INLINE bool scaled_step(PlainPoint<D> const &pt, double const *z1,
   double const lambda = pt.lambda;
   double ymax = 0.0;
   for (int i = 0; i < D; ++i) ymax = std::fmax(ymax, std::fabs(y[i]));
+  if (!std::isfinite(ymax)) return false;  // y itself overflowed: no step
   int const k = exponent(ymax);
   for (int i = 0; i < D; ++i) y[i] = times_pow2(y[i], -k);
   double const ratio =

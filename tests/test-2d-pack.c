@@ -224,6 +224,40 @@ static void test_determinism(void) {
   g_free(a);
 }
 
+/* The most overlapping pairs a run reported to its progress callback. */
+static int most_pairs(pw85_pack_progress const *p, void *data) {
+  size_t *most = data;
+  if (p->pairs > *most) *most = p->pairs;
+  return 0;
+}
+
+/* Bit for bit on 1 and 8 threads where 8 threads really work: the energy
+ * runs on min(threads, pairs/256 + 1) threads, and test_determinism's
+ * 120 ellipses have at most 358 overlapping pairs (2 threads). Here 1000
+ * ellipses placed at φ = 0.95 start with thousands; 40 steps. */
+static void test_determinism_threads(void) {
+  size_t const n = 1000;
+  double *a = ellipses(n, 1.3, 1);
+  pw85_pack_options o;
+  pw85_pack_options_init(&o);
+  o.target = 0.95;
+  o.seed = 5;
+  o.step_limit = 40;
+  Ellipses s1 = pack(n, a, &o);
+  g_assert_cmpint(s1.status, ==, PW85_SUCCESS);
+  size_t most = 0;
+  o.threads = 8;
+  o.progress = most_pairs;
+  o.progress_data = &most;
+  o.progress_every = 1;
+  Ellipses s8 = pack(n, a, &o);
+  g_assert_cmpuint(most, >=, 7 * 256);
+  if (!same(&s1, &s8)) g_test_fail_printf("8 threads: another packing");
+  release(&s1);
+  release(&s8);
+  g_free(a);
+}
+
 /* A step limit and a cancellation: certified, below the target. */
 static void test_outcomes(void) {
   size_t const n = small(150);
@@ -462,6 +496,8 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d-pack/targets", test_targets);
   g_test_add_func("/pw85/2d-pack/jammed", test_jammed);
   g_test_add_func("/pw85/2d-pack/determinism", test_determinism);
+  g_test_add_func("/pw85/2d-pack/determinism-threads",
+                  test_determinism_threads);
   g_test_add_func("/pw85/2d-pack/outcomes", test_outcomes);
   g_test_add_func("/pw85/2d-pack/aligned", test_aligned);
   g_test_add_func("/pw85/2d-pack/scaled", test_scaled);

@@ -435,7 +435,9 @@ PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
  * with r = (c_j + n∘L) − c_i rounded to doubles (exact where the centres
  * and sides lie on a common grid, see "Images"), the derivatives of μ²
  * that pw85_2d_contact_derivatives() documents, computed from λ by the
- * envelope theorem (s = Q(λ)⁻¹·r solved in double, no second search):
+ * envelope theorem (s = Q(λ)⁻¹·r solved in double, no second search;
+ * where Q(λ) does not factorise in double or a derivative is not finite,
+ * that pair's derivatives as pw85_2d_contact_derivatives() computes them):
  * g = ∂μ²/∂r and ∂μ²/∂θ_i, ∂μ²/∂θ_j, θ the angle turning an ellipse
  * counter-clockwise about its centre. With U′ = dU/dμ²: the force on j is
  * −U′·g and on i +U′·g; the torque on i is −U′·∂μ²/∂θ_i and on j
@@ -484,8 +486,8 @@ PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
  *         pw85_2d_index_pairs_within() or pw85_2d_contact_derivatives() on
  *         a pair, or if the energy, or an entry of forces or torques (those
  *         asked for), is beyond the range of a double; PW85_ENOMEM (also
- *         when forces or torques is given and 2·n doubles would not fit a
- *         size_t). Nothing is written on error.
+ *         when forces or torques is given and the size in bytes of 2·n
+ *         doubles would not fit a size_t). Nothing is written on error.
  * @since 2.5.0
  */
 PW85_API int pw85_2d_index_energy(pw85_2d_index const *index, int kind,

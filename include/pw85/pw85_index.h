@@ -461,7 +461,9 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  * each, with r = (c_j + n∘L) − c_i rounded to doubles (exact where the
  * centres and sides lie on a common grid, see "Images"), the derivatives
  * of μ² that pw85_contact_derivatives() documents, computed from λ by the
- * envelope theorem (s = Q(λ)⁻¹·r solved in double, no second search):
+ * envelope theorem (s = Q(λ)⁻¹·r solved in double, no second search;
+ * where Q(λ) does not factorise in double or a derivative is not finite,
+ * that pair's derivatives as pw85_contact_derivatives() computes them):
  * g = ∂μ²/∂r and ∂μ²/∂ω_i, ∂μ²/∂ω_j. With U′ = dU/dμ²: the force on j is
  * −U′·g and on i +U′·g; the torque on i is −U′·∂μ²/∂ω_i and on j
  * −U′·∂μ²/∂ω_j (about each ellipsoid's own centre; docs/packing.rst).
@@ -507,8 +509,8 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  *         pw85_index_pairs_within() or pw85_contact_derivatives() on a
  *         pair, or if the energy, or an entry of forces or torques (those
  *         asked for), is beyond the range of a double; PW85_ENOMEM (also
- *         when forces or torques is given and 3·n doubles would not fit a
- *         size_t). Nothing is written on error.
+ *         when forces or torques is given and the size in bytes of 3·n
+ *         doubles would not fit a size_t). Nothing is written on error.
  * @since 2.4.0
  */
 PW85_API int pw85_index_energy(pw85_index const *index, int kind,

@@ -46,9 +46,18 @@ def test_pack_target(aspect, target, orientation, poly):
 
 
 def test_pack_deterministic_and_progress():
-    a = ellipses(120, 2.0, poly=True)
+    a = ellipses(600, 2.0, poly=True)
     p1 = d2.pack(a, 0.8, seed=11)
-    p2 = d2.pack(a, 0.8, seed=11, threads=2)
+    pairs = []
+
+    def count(info):
+        pairs.append(info["pairs"])
+        return 0
+    p2 = d2.pack(a, 0.8, seed=11, threads=2, progress=count,
+                 progress_every=1)
+    # The energy runs on min(threads, pairs/256 + 1) threads: both
+    # threads worked on some steps, else this would test one thread.
+    assert max(pairs) >= 512
     p3 = d2.pack(a, 0.8, seed=12)
     for x, y in zip(p1[:4], p2[:4]):
         assert np.array_equal(x, y)
@@ -71,7 +80,9 @@ def test_pack_deterministic_and_progress():
     ({"target": 1.0}, pypw85.Error, "target"),
     ({"aspect": (1, 0)}, pypw85.Error, "aspect[1]"),
     ({"aspect": (1, 1, 1)}, ValueError, "aspect must be 2"),
-    ({"axis": (0, 0)}, pypw85.Error, "axis"),
+    ({"axis": (0, 0), "orientation": "aligned"}, pypw85.Error, "axis"),
+    ({"axis": (math.nan, 1), "orientation": "aligned"}, pypw85.Error,
+     "axis[0]"),
     ({"orientation": "random"}, pypw85.Error, "orientation"),
     ({"threads": 0}, pypw85.Error, "threads"),
     ({"target": 0.9, "aspect": (1, 40)}, pypw85.Error, "rectangle"),
@@ -82,6 +93,16 @@ def test_pack_errors(kwargs, kind, words):
     with pytest.raises(kind) as info:
         d2.pack(args.pop("semi_axes"), **args)
     assert words in str(info.value)
+
+
+def test_pack_isotropic_reads_no_axis():
+    # As pw85_2d_pack: the axis is read with "aligned" only.
+    a = ellipses(10)
+    p = d2.pack(a, 0.1, seed=3)
+    for axis in ((0.0, 0.0), (math.nan, 0.0)):
+        q = d2.pack(a, 0.1, seed=3, axis=axis)
+        for x, y in zip(p[:4], q[:4]):
+            assert np.array_equal(x, y)
 
 
 def overlapping_index(n=60, side=6.0, seed=2):

@@ -253,12 +253,15 @@ def _pack(sh, semi_axes, target, seed, aspect, orientation, axis, threads,
     asp = [_positive("aspect[%d]" % k, x) for k, x in
            enumerate(_reals("aspect", aspect, d))]
     ax = _reals("axis", axis, d)
-    for k, x in enumerate(ax):
-        if not math.isfinite(x):
-            raise Error(EDOM, "pack", "axis[%d] = %r is not finite" % (k, x))
-    if not any(ax):
-        raise Error(EINVAL, "pack", "axis = (%s) has no direction"
-                    % ", ".join(["0"] * d))
+    # Ellipses read the axis with "aligned" only (pw85_2d_pack.h).
+    if d == 3 or orientation == "aligned":
+        for k, x in enumerate(ax):
+            if not math.isfinite(x):
+                raise Error(EDOM, "pack", "axis[%d] = %r is not finite"
+                            % (k, x))
+        if not any(ax):
+            raise Error(EINVAL, "pack", "axis = (%s) has no direction"
+                        % ", ".join(["0"] * d))
     threads = _count("threads", threads, 1, 2**31 - 1)
     limit = 0.0 if time_limit is None else _positive("time_limit",
                                                      time_limit)

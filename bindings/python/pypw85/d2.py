@@ -632,7 +632,8 @@ orientation : {"isotropic", "aligned"}
     Uniform random angles, or the largest semi-axis of every ellipse
     along ``axis`` (the ellipses then never turn).
 axis : 2 floats
-    The direction of ``"aligned"`` in the plane (not zero).
+    The direction of ``"aligned"`` in the plane (finite, not zero);
+    not read with ``"isotropic"``, as pw85_2d_pack.
 threads, time_limit, step_limit, progress, progress_every
     As `pypw85.pack` (``energy`` of the progress dict is per ellipse).
 
