@@ -67,39 +67,10 @@ struct PlainPoint {
   double omega;         // ω(λ)
 };
 
-// Returns false when Q(λ) does not factorise, P1 or P2 is not > 0, or f or
-// ω is not finite.
-template <bool Fast, int D>
-PW85_INLINE bool evaluate_plain(double lambda, Problem<D> const &p,
-                                PlainPoint<D> *pt) noexcept {
-  double q[sym_size(D)];
-  combine<D>(lambda, p.q1, p.q2, q);
-  pt->lambda = lambda;
-  pt->trace_q = trace<D>(q);
-  Ldl<D> &fac = pt->sol.fac;
-  if (!ldl_decomp_q(q, &fac, Fast)) return false;
-  double const quad = ldl_solve_quad(fac, p.r, pt->sol.s);
-  sym_mul<D>(p.q1, pt->sol.s, pt->q1s);
-  sym_mul<D>(p.q2, pt->sol.s, pt->q2s);
-  pt->p1 = dot<D>(pt->sol.s, pt->q1s);
-  pt->p2 = dot<D>(pt->sol.s, pt->q2s);
-  if (!(pt->p1 > 0.0 && pt->p2 > 0.0)) return false;
-  double const mu = 1.0 - lambda;
-  pt->root_p1 = std::sqrt(pt->p1);
-  pt->root_p2 = std::sqrt(pt->p2);
-  pt->rho = pt->root_p2 / pt->root_p1;
-  pt->f = lambda * mu * quad;  // the expression of f_plain()
-  pt->omega = lambda * pt->rho - mu;
-  return std::isfinite(pt->omega) && std::isfinite(pt->f);
-}
-
-// evaluate_plain() in two parts, the same operations, for a caller that
-// may stop before ω: the overlap test, whose filters read all but √Pᵢ, ρ
-// and ω. evaluate_terms() returns false when Q(λ) does not factorise, P1
-// or P2 is not > 0, or f is not finite; evaluate_omega() when ω is not
-// finite. (evaluate_plain() is not written as these two: gcc 12 then
-// compiled the contact function's Newton loop otherwise, to as many
-// instructions but 3% slower, measured.)
+// The terms of a plain point up to Pᵢ (Q(λ) and its factors, s, Qᵢ·s,
+// Pᵢ = sᵀ·Qᵢ·s) and *quad = rᵀ·Q(λ)⁻¹·r: false when Q(λ) does not
+// factorise, or P1 or P2 is not > 0. The first part of evaluate_plain()
+// and of evaluate_terms().
 template <bool Fast, int D>
 PW85_INLINE bool plain_terms(double lambda, Problem<D> const &p,
                              PlainPoint<D> *pt, double *quad) noexcept {
@@ -117,6 +88,29 @@ PW85_INLINE bool plain_terms(double lambda, Problem<D> const &p,
   return pt->p1 > 0.0 && pt->p2 > 0.0;
 }
 
+// Returns false when Q(λ) does not factorise, P1 or P2 is not > 0, or f or
+// ω is not finite.
+template <bool Fast, int D>
+PW85_INLINE bool evaluate_plain(double lambda, Problem<D> const &p,
+                                PlainPoint<D> *pt) noexcept {
+  double quad;
+  if (!plain_terms<Fast>(lambda, p, pt, &quad)) return false;
+  double const mu = 1.0 - lambda;
+  pt->root_p1 = std::sqrt(pt->p1);
+  pt->root_p2 = std::sqrt(pt->p2);
+  pt->rho = pt->root_p2 / pt->root_p1;
+  pt->f = lambda * mu * quad;  // the expression of f_plain()
+  pt->omega = lambda * pt->rho - mu;
+  return std::isfinite(pt->omega) && std::isfinite(pt->f);
+}
+
+// evaluate_plain() in two parts, the same operations, for a caller that
+// may stop before ω: the overlap test, whose filters read all but √Pᵢ, ρ
+// and ω. evaluate_terms() returns false when Q(λ) does not factorise, P1
+// or P2 is not > 0, or f is not finite; evaluate_omega() when ω is not
+// finite. (evaluate_plain() is not written as these two: gcc 12 then
+// compiled the contact function's Newton loop otherwise, to as many
+// instructions but 3% slower, measured.)
 template <bool Fast, int D>
 PW85_INLINE bool evaluate_terms(double lambda, Problem<D> const &p,
                                 PlainPoint<D> *pt) noexcept {
