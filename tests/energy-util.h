@@ -49,4 +49,24 @@ static inline int cancel_at_third(pw85_pack_progress const *p, void *data) {
   return ++*calls == 3;
 }
 
+/* A progress callback: the most overlapping pairs a run reported, in the
+ * size_t at data (to check that a run's energy had work for its threads:
+ * it runs on min(threads, pairs/256 + 1) of them). */
+static inline int most_pairs(pw85_pack_progress const *p, void *data) {
+  size_t *most = (size_t *)data;
+  if (p->pairs > *most) *most = p->pairs;
+  return 0;
+}
+
+/* o on `threads` threads, its progress callback recording in *most the
+ * most overlapping pairs of the run (most_pairs()), called every step. */
+static inline void watch_pairs(pw85_pack_options *o, int threads,
+                               size_t *most) {
+  *most = 0;
+  o->threads = threads;
+  o->progress = most_pairs;
+  o->progress_data = most;
+  o->progress_every = 1;
+}
+
 #endif /* PW85_ENERGY_UTIL_H */

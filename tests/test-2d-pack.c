@@ -224,13 +224,6 @@ static void test_determinism(void) {
   g_free(a);
 }
 
-/* The most overlapping pairs a run reported to its progress callback. */
-static int most_pairs(pw85_pack_progress const *p, void *data) {
-  size_t *most = data;
-  if (p->pairs > *most) *most = p->pairs;
-  return 0;
-}
-
 /* Bit for bit on 1 and 8 threads where 8 threads really work: the energy
  * runs on min(threads, pairs/256 + 1) threads, and test_determinism's
  * 120 ellipses have at most 358 overlapping pairs (2 threads). Here 1000
@@ -245,11 +238,8 @@ static void test_determinism_threads(void) {
   o.step_limit = 40;
   Ellipses s1 = pack(n, a, &o);
   g_assert_cmpint(s1.status, ==, PW85_SUCCESS);
-  size_t most = 0;
-  o.threads = 8;
-  o.progress = most_pairs;
-  o.progress_data = &most;
-  o.progress_every = 1;
+  size_t most;
+  watch_pairs(&o, 8, &most);
   Ellipses s8 = pack(n, a, &o);
   g_assert_cmpuint(most, >=, 7 * 256);
   if (!same(&s1, &s8)) g_test_fail_printf("8 threads: another packing");

@@ -344,6 +344,30 @@ static void assert_same_packing(Packing const *s1, Packing const *s2,
     g_test_fail_printf("%s: another packing", what);
 }
 
+/* Bit for bit on 1 and 8 threads where 8 threads really work: the energy
+ * runs on min(threads, pairs/256 + 1) threads (test_determinism compares
+ * 1 and 2 threads only). 1000 ellipsoids placed at φ = 0.6 start with
+ * thousands of overlapping pairs; 40 steps. */
+static void test_determinism_threads(void) {
+  size_t const n = 1000;
+  double *a = triaxial(n, 0.5, 0.2, 1);
+  pw85_pack_options o;
+  pw85_pack_options_init(&o);
+  o.target = 0.6;
+  o.seed = 5;
+  o.step_limit = 40;
+  Packing s1 = run(n, a, &o);
+  g_assert_cmpint(s1.status, ==, PW85_SUCCESS);
+  size_t most;
+  watch_pairs(&o, 8, &most);
+  Packing s8 = run(n, a, &o);
+  g_assert_cmpuint(most, >=, 7 * 256);
+  assert_same_packing(&s1, &s8, "8 threads");
+  free_packing(&s1);
+  free_packing(&s8);
+  g_free(a);
+}
+
 /* The aspect gives only the proportions of the box, and the axis only a
  * direction (pw85_pack.h): scaled by a power of two, the packing is the
  * same, bit for bit. (The product of the aspects overflowed or underflowed:
@@ -456,6 +480,7 @@ int main(int argc, char **argv) {
   install_failing_gsl_handler();
   g_test_add_func("/pw85/pack/targets", test_targets);
   g_test_add_func("/pw85/pack/determinism", test_determinism);
+  g_test_add_func("/pw85/pack/determinism-threads", test_determinism_threads);
   g_test_add_func("/pw85/pack/outcomes", test_outcomes);
   g_test_add_func("/pw85/pack/aligned", test_aligned);
   g_test_add_func("/pw85/pack/errors", test_errors);
