@@ -167,10 +167,45 @@ Decision accurate_filter(PlainPoint<3> const &pt,
   return accurate_bounds(pt, s);
 }
 
+// Where μ² rounds onto an edge of the tangency band, 1 ± 4ε (both
+// doubles), the exact μ² may lie beyond it: up to ε/2 above 1 + 4ε, ε/4
+// below 1 − 4ε (a held-out near-tangent pair: μ² − 1 = 4.49ε, rounded to
+// 4ε). Decided by f at the search's λ in double-double: f(λ) ≤ μ², within
+// about 2⁻¹⁰⁰ relative of it there (the finish's accuracy). Returns
+// whether the exact μ² lies strictly beyond the edge, upper or lower
+// (false where Q(λ) does not factorise, or the edge in the problem's scale
+// is not exact: then the band, as before).
+template <int D>
+PW85_INLINE bool beyond_band(Problem<D> const &p, double lambda, bool upper,
+                             double const *r_lo) noexcept {
+  double const edge_1 = upper ? 1.0 + tangency : 1.0 - tangency;
+  double const edge = times_pow2(edge_1, -p.shift);  // μ² of the problem
+  if (!(times_pow2(edge, p.shift) == edge_1)) return false;
+  Compensated a;
+  if (!evaluate_compensated<false, D>(lambda, p.r, p.q1, p.q2, p.moderate,
+                                      nullptr, &a, r_lo))
+    return false;
+  double const above = (a.f - edge) + a.f_lo;  // f − edge, a.f − edge exact
+  return upper ? above > 0.0 : above < 0.0;
+}
+
+PW85_FMA_CLONES
+bool beyond_band_at(Problem<2> const &p, double lambda, bool upper,
+                    double const *r_lo) noexcept {
+  return beyond_band(p, lambda, upper, r_lo);
+}
+
+PW85_FMA_CLONES
+bool beyond_band_at(Problem<3> const &p, double lambda, bool upper,
+                    double const *r_lo) noexcept {
+  return beyond_band(p, lambda, upper, r_lo);
+}
+
 // The last stage: the exact contact function (steps 5 to 9 after Newton's
 // result: μ² floored and scaled back as pw85_contact_function() returns
 // it), for nearly tangent pairs or pairs too ill-conditioned for the
-// bounds.
+// bounds. 0 (tangent) exactly where the exact μ² lies within 4 ulps of 1,
+// as pw85.h states.
 template <bool Fast, int D>
 Status exact_decision(Problem<D> const &p, NewtonResult<D> const &newton,
                       double const *r_lo, Decision *d) noexcept {
@@ -179,9 +214,13 @@ Status exact_decision(Problem<D> const &p, NewtonResult<D> const &newton,
   if (status != Status::success) return status;
   if (std::isnan(res[0])) return Status::out_of_range;  // as contact.cpp
   double const mu2 = floored_mu2(p, res[0]);
-  *d = std::fabs(mu2 - 1.0) <= tangency
-           ? Decision::tangent
-           : (mu2 < 1.0 ? Decision::overlap : Decision::disjoint);
+  double const off = std::fabs(mu2 - 1.0);  // exact near 1
+  Decision const side = mu2 < 1.0 ? Decision::overlap : Decision::disjoint;
+  *d = off < tangency ? Decision::tangent : side;
+  // On an edge of the band (and not floored: μ² is then the search's).
+  if (PW85_UNLIKELY(off == tangency) && mu2 == times_pow2(res[0], p.shift) &&
+      !beyond_band_at(p, res[1], mu2 > 1.0, r_lo))
+    *d = Decision::tangent;
   return Status::success;
 }
 

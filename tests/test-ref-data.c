@@ -266,7 +266,11 @@ static void test_overlap(void) {
           double const mu2 = data.MU2[n];
           int const expected =
               fabs(mu2 - 1.) <= 4. * DBL_EPSILON ? 0 : (mu2 < 1. ? -1 : 1);
-          if (result != expected)
+          /* MU2 is rounded: on an edge of the band, 1 ± 4·DBL_EPSILON, the
+           * exact μ² may lie beyond it (the sign is then right too). */
+          gboolean const edge = fabs(mu2 - 1.) == 4. * DBL_EPSILON;
+          if (result != expected &&
+              !(edge && result == (mu2 < 1. ? -1 : 1)))
             test_mismatch("record %zu: pw85_overlap gives %d, expected "
                           "%d (MU2 = %.17g)",
                           n, result, expected, mu2);

@@ -351,7 +351,10 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  * @param[in] q2 the quadratic form of the second ellipsoid.
  * @param[out] result −1 if the ellipsoids overlap (μ² < 1), +1 if they are
  *             disjoint (μ² > 1), 0 if they are tangent to the resolution of
- *             double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON (4 ulps of 1).
+ *             double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON (4 ulps of 1),
+ *             μ² the exact value (where the correctly rounded μ² is
+ *             1 ± 4·DBL_EPSILON itself, the exact one may lie beyond:
+ *             decided in double-double; since 2.5.0).
  *             Coincident centres overlap. Inside the domain of
  *             pw85_contact_function() (cond(Q1), cond(Q2) < 1e16), the
  *             answer agrees with the correctly rounded μ² on every pair

@@ -148,7 +148,8 @@ PW85_API int pw85_2d_contact_function(double const r12[PW85_2D_DIM],
  * @param[in] q2 the quadratic form of the second ellipse.
  * @param[out] result −1 if the ellipses overlap (μ² < 1), +1 if they are
  *             disjoint (μ² > 1), 0 if they are tangent to the resolution
- *             of double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON. Coincident
+ *             of double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON, μ² the
+ *             exact value (as pw85_overlap()). Coincident
  *             centres overlap. Swapping the ellipses gives the same
  *             answer.
  * @return the statuses of pw85_2d_contact_function(), with the same
