@@ -10,39 +10,23 @@ time limit and --resume as in 3D; bad inputs (a wrong number of axes, a
 file of the other dimension): one line, exit status 2, nothing written.
 
 Usage: test_pack_2d.py PW85-PACK VERSION  (run by meson, /usr/bin/python3)
-Exit status 77 (a skip) when h5py or ASE is missing.
+Exit status 77 (a skip) when h5py, ASE or mpmath is missing.
 """
 
-import math
-import os
-import shutil
-import signal
-import subprocess
-import sys
-import tempfile
-import time
-import unittest
-import xml.etree.ElementTree as ET
-from fractions import Fraction
+# The modules of test_pack.py (which exits 77, a skip, without h5py, NumPy
+# or ASE), and what the tests of ellipsoids and ellipses share.
+import test_pack as common
+from test_pack import (ET, Fraction, ToolCase, ase, h5py, math, np, os, run, shutil, sys,
+                       unittest)
 
 try:
-    import h5py
-    import numpy as np
-    import ase.io
     import mpmath
 except ImportError as e:  # pragma: no cover
     print("SKIP:", e)
     sys.exit(77)
 
-TOOL = None
-VERSION = None
 AXES = (1.0, 0.5)
 AREA = math.pi * AXES[0] * AXES[1]
-
-
-def run(args, cwd, **kw):
-    return subprocess.run([TOOL] + args, cwd=cwd, capture_output=True,
-                          text=True, timeout=300, **kw)
 
 
 def read(path):
@@ -189,13 +173,7 @@ def perimeter_bound(a0, a1):
     return 4 * (a0 + a1)
 
 
-class Pack2D(unittest.TestCase):
-    def setUp(self):
-        self.dir = tempfile.mkdtemp(prefix="pw85-pack-2d-test-")
-
-    def tearDown(self):
-        shutil.rmtree(self.dir, ignore_errors=True)
-
+class Pack2D(ToolCase):
     def path(self, name):
         return os.path.join(self.dir, name)
 
@@ -230,7 +208,7 @@ class Pack2D(unittest.TestCase):
         self.assertEqual(attrs["dimension"].dtype, np.int32)
         self.assertEqual(attrs["seed"], 7)
         self.assertEqual(attrs["method"], method_name)
-        self.assertEqual(attrs["pw85_version"], VERSION)
+        self.assertEqual(attrs["pw85_version"], common.VERSION)
         self.assertEqual(attrs["target_count"], n)
         box, c, q, a, theta = (data[k] for k in ("box", "centres", "forms", "axes", "angles"))
         side = math.sqrt(n * AREA / phi)
@@ -310,34 +288,19 @@ class Pack2D(unittest.TestCase):
         self.assertLessEqual(worst, 2.0**-53)
 
     def test_threads_fire(self):
-        self.check_threads(["--n", "300", "--fraction", "0.65"])
+        self.check_threads(["--2d", "--n", "300", "--fraction", "0.65", "--axes", "1,0.5"],
+                           ["box", "centres", "forms", "axes", "angles"])
 
     def test_threads_rsa(self):
-        self.check_threads(["--n", "20000", "--fraction", "0.4", "--method", "rsa"])
-
-    def check_threads(self, args):
-        outs = []
-        for t in ("1", "2"):
-            r = run(["--2d"] + args + ["--axes", "1,0.5", "--threads", t,
-                                       "--out", "t%s.h5" % t], self.dir)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            outs.append(read(self.path("t%s.h5" % t)))
-        for name in ("box", "centres", "forms", "axes", "angles"):
-            np.testing.assert_array_equal(outs[0][0][name], outs[1][0][name], name)
-        self.assertEqual(outs[0][1], outs[1][1])
+        self.check_threads(["--2d", "--n", "20000", "--fraction", "0.4", "--method", "rsa",
+                            "--axes", "1,0.5"], ["box", "centres", "forms", "axes", "angles"])
 
     def test_interrupt_and_resume_rsa(self):
         args = ["--2d", "--n", "100000", "--axes", "1,0.5", "--fraction", "0.45",
                 "--seed", "3", "--method", "rsa"]
         full = run(args + ["--out", "full.h5"], self.dir)
         self.assertEqual(full.returncode, 0, full.stderr)
-        proc = subprocess.Popen([TOOL] + args + ["--out", "cut.h5"],
-                                cwd=self.dir, stderr=subprocess.PIPE, text=True)
-        time.sleep(0.3)
-        proc.send_signal(signal.SIGINT)
-        err = proc.communicate(timeout=120)[1]
-        self.assertEqual(proc.returncode, 130, err)
-        self.assertIn("interrupted", err)
+        self.interrupt(args + ["--out", "cut.h5"], 0.3)
         data, attrs, shapes = read(self.path("cut.h5"))
         count = shapes["centres"][0][0]
         self.assertLess(count, 100000)
@@ -361,14 +324,8 @@ class Pack2D(unittest.TestCase):
     def test_interrupt_fire(self):
         # 2000 ellipses at 0.95, beyond jamming (0.82 certified after 3 s,
         # measured): cut at 1 s
-        proc = subprocess.Popen([TOOL, "--2d", "--n", "2000", "--axes", "1,0.5",
-                                 "--fraction", "0.95", "--out", "short.h5"],
-                                cwd=self.dir, stderr=subprocess.PIPE, text=True)
-        time.sleep(1)
-        proc.send_signal(signal.SIGINT)
-        err = proc.communicate(timeout=120)[1]
-        self.assertEqual(proc.returncode, 130, err)
-        self.assertIn("interrupted", err)
+        self.interrupt(["--2d", "--n", "2000", "--axes", "1,0.5", "--fraction", "0.95",
+                        "--out", "short.h5"], 1)
         self.check_short_of_target(2000, 0.95)
         self.assertEqual(os.listdir(self.dir), ["short.h5"])
 
@@ -412,29 +369,8 @@ class Pack2D(unittest.TestCase):
                       r.stdout)
 
     def test_progress_bar_in_tmux(self):
-        tmux = shutil.which("tmux")
-        if tmux is None:
-            self.skipTest("tmux not installed")
-        session = "pw85-pack-2d-%d" % os.getpid()
-        env = dict(os.environ, TMUX="")
-        command = ("%s --2d --n 2000 --fraction 0.95 --axes 1,0.5 --out bar.h5; sleep 30"
-                   % TOOL)
-        subprocess.run([tmux, "-L", session, "new-session", "-d", "-s", session,
-                        "-x", "160", "-y", "8", "-c", self.dir, command],
-                       check=True, env=env)
-        try:
-            screen = ""
-            for _ in range(200):
-                time.sleep(0.05)
-                screen = subprocess.run(
-                    [tmux, "-L", session, "capture-pane", "-p", "-t", session],
-                    capture_output=True, text=True, env=env).stdout
-                if "left" in screen and "fraction" in screen:
-                    break
-            self.assertRegex(screen, r"\[[#.]{30}\] +[0-9.]+% fraction [0-9.]+ "
-                             r"of 0\.9500, [0-9]+ steps/s, ")
-        finally:
-            subprocess.run([tmux, "-L", session, "kill-server"], env=env)
+        self.check_progress_bar("--2d --n 2000 --fraction 0.95 --axes 1,0.5",
+                                r"of 0\.9500, [0-9]+ steps/s, ")
 
     def test_bad_arguments(self):
         base = ["--2d", "--n", "100", "--fraction", "0.3", "--axes", "1,0.5",
@@ -510,5 +446,5 @@ class Pack2D(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    TOOL, VERSION = os.path.abspath(sys.argv[1]), sys.argv[2]
+    common.TOOL, common.VERSION = os.path.abspath(sys.argv[1]), sys.argv[2]
     unittest.main(argv=sys.argv[:1], verbosity=2)
