@@ -287,6 +287,44 @@ class Pack2D(ToolCase):
                         abs(mpmath.mpf(float(p[k, 3])) - mpmath.cos(half)))
         self.assertLessEqual(worst, 2.0**-53)
 
+    def test_image_on_boundaries(self):
+        """Pixel centres exactly on ellipses (and on a periodic image of
+        one): inside, as the exact decision says. Two ellipses of axes
+        (1, 0.5) at angle 0 (their forms (1, 0, 0.25) exact) placed by hand
+        in a file that --resume completes at once (its target is its count)
+        and images at 16² in a square of side 8: the pixel centres
+        ((i + ½)/2, (j + ½)/2) at (±1, 0) and (0, ±0.5) from a centre are
+        on its boundary."""
+        centres = np.array([[4.25, 4.25], [0.25, 1.75]])
+        with h5py.File(self.path("hand.h5"), "w") as f:
+            f["box"] = np.array([8.0, 8.0])
+            f["centres"] = centres
+            f["forms"] = np.tile([1.0, 0.0, 0.25], (2, 1))
+            f["axes"] = np.tile([1.0, 0.5], (2, 1))
+            f["angles"] = np.zeros(2)
+            f.attrs["packing_fraction"] = 2 * AREA / 64
+            f.attrs["seed"] = np.uint64(1)
+            f.attrs["pw85_version"] = common.VERSION
+            f.attrs["method"] = "rsa"
+            f.attrs["attempts"] = np.uint64(2)
+            f.attrs["target_count"] = np.uint64(2)
+            f.attrs["dimension"] = np.int32(2)
+        r = run(["--2d", "--resume", "hand.h5", "--out", "img.h5", "--voxels", "16"],
+                self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        data, attrs, shapes = read(self.path("img.h5"))
+        img = data["image"]
+        on = {(10, 8): 0, (6, 8): 0, (8, 9): 0, (8, 7): 0,  # e0 at (4.25, 4.25)
+              (2, 3): 1, (14, 3): 1, (0, 4): 1, (0, 2): 1}  # e1, (14, 3) via x − 8
+        for pixel, e in on.items():
+            self.assertEqual(img[pixel], e, pixel)
+        want, exact_count = image_of(self, data["centres"], data["forms"], data["box"], 16)
+        self.assertGreaterEqual(exact_count, 8)  # the rationals decided these
+        np.testing.assert_array_equal(img, want)
+        # just outside: the next pixel along each axis
+        for pixel in ((11, 8), (5, 8), (8, 10), (8, 6), (3, 3), (13, 3)):
+            self.assertEqual(img[pixel], -1, pixel)
+
     def test_threads_fire(self):
         self.check_threads(["--2d", "--n", "300", "--fraction", "0.65", "--axes", "1,0.5"],
                            ["box", "centres", "forms", "axes", "angles"])
