@@ -441,10 +441,11 @@ class Pack2D(ToolCase):
         self.assertEqual(os.listdir(self.dir), [])
 
     def test_resume_other_dimension(self):
-        for args, name in ((["--2d", "--axes", "1,0.5"], "flat.h5"),
+        # --2d anywhere on the line (here after --axes A,B)
+        for args, name in ((["--axes", "1,0.5", "--2d"], "flat.h5"),
                            (["--axes", "1,0.5,0.2"], "solid.h5")):
-            r = run(args + ["--n", "200", "--fraction", "0.2", "--method", "rsa",
-                            "--out", name], self.dir)
+            r = run(["--n", "200", "--fraction", "0.2", "--method", "rsa",
+                     "--out", name] + args, self.dir)
             self.assertEqual(r.returncode, 0, r.stderr)
         for args, message in (
                 (["--resume", "flat.h5"],
