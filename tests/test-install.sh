@@ -105,18 +105,29 @@ if [ "$pack" = yes ]; then
   (cd "$tmp/pack" && env -u LD_LIBRARY_PATH "$prefix/bin/pw85-pack" --n 300 \
      --axes 1,0.5,0.2 --fraction 0.2 --seed 9 --out pack.h5 --xyz pack.xyz \
      --voxels 16)
+  # and ellipses (--2d): the 2D layout
+  (cd "$tmp/pack" && env -u LD_LIBRARY_PATH "$prefix/bin/pw85-pack" --2d --n 300 \
+     --axes 1,0.5 --fraction 0.5 --seed 9 --out flat.h5 --voxels 16)
   /usr/bin/python3 - "$tmp/pack" <<'PY'
 import math, os, sys
 import h5py
 d = sys.argv[1]
-assert sorted(os.listdir(d)) == ["pack.h5", "pack.xdmf", "pack.xyz"], os.listdir(d)
+assert sorted(os.listdir(d)) == ["flat.h5", "flat.xdmf", "pack.h5", "pack.xdmf",
+                                 "pack.xyz"], os.listdir(d)
 with h5py.File(os.path.join(d, "pack.h5"), "r") as f:
     assert f["centres"].shape == (300, 3) and f["forms"].shape == (300, 6)
     assert f["image"].shape == (16, 16, 16)
     assert f.attrs["seed"] == 9 and f.attrs["method"] == "fire"  # the default
+    assert "dimension" not in f.attrs
     v = 4 / 3 * math.pi * 0.1 * 300 / f["box"][()].prod()
     assert abs(f.attrs["packing_fraction"] - v) < 1e-15, f.attrs["packing_fraction"]
-print("ok: pw85-pack from the prefix, files read back by h5py")
+with h5py.File(os.path.join(d, "flat.h5"), "r") as f:
+    assert f["centres"].shape == (300, 2) and f["forms"].shape == (300, 3)
+    assert f["angles"].shape == (300,) and f["image"].shape == (16, 16)
+    assert f.attrs["dimension"] == 2 and f.attrs["method"] == "fire"
+    a = math.pi * 0.5 * 300 / f["box"][()].prod()
+    assert abs(f.attrs["packing_fraction"] - a) < 1e-15, f.attrs["packing_fraction"]
+print("ok: pw85-pack from the prefix (ellipsoids and --2d), files read back by h5py")
 PY
 fi
 

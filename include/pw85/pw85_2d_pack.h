@@ -50,7 +50,7 @@
  * (see pw85_index_openmp()). Thread safety: reentrant; the callback is
  * called from the calling thread.
  *
- * Not (yet) for ellipses: the command-line tool pw85-pack and the
+ * The command-line tool packs ellipses with it (pw85-pack --2d); the
  * Fortran and Node.js wrappers pack ellipsoids only.
  *
  * @since 2.5.0

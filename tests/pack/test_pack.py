@@ -70,12 +70,70 @@ def exact_inside(point, c, q):
     return lhs <= det
 
 
-class Pack(unittest.TestCase):
+class ToolCase(unittest.TestCase):
+    """What the tests of ellipsoids and of ellipses (test_pack_2d.py) share:
+    a directory of their own, and the checks written once for both."""
+
     def setUp(self):
         self.dir = tempfile.mkdtemp(prefix="pw85-pack-test-")
 
     def tearDown(self):
         shutil.rmtree(self.dir, ignore_errors=True)
+
+    def interrupt(self, argv, after):
+        """pw85-pack ARGV sent SIGINT after `after` seconds: exit status 130,
+        "interrupted"; returns its stderr."""
+        proc = subprocess.Popen([TOOL] + argv, cwd=self.dir, stderr=subprocess.PIPE,
+                                text=True)
+        time.sleep(after)
+        proc.send_signal(signal.SIGINT)
+        err = proc.communicate(timeout=120)[1]
+        self.assertEqual(proc.returncode, 130, err)
+        self.assertIn("interrupted", err)
+        return err
+
+    def check_threads(self, args, names):
+        """The datasets `names` and the attribute attempts the same, bit for
+        bit, for 1 and 2 threads."""
+        outs = []
+        for t in ("1", "2"):
+            r = run(args + ["--threads", t, "--out", "t%s.h5" % t], self.dir)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with h5py.File(os.path.join(self.dir, "t%s.h5" % t), "r") as f:
+                outs.append(([f[k][()] for k in names], f.attrs["attempts"]))
+        for k, name in enumerate(names):
+            np.testing.assert_array_equal(outs[0][0][k], outs[1][0][k], name)
+        self.assertEqual(outs[0][1], outs[1][1])
+
+    def check_progress_bar(self, args, tail):
+        """The bar of pw85-pack ARGS seen in a tmux capture, ending in tail."""
+        tmux = shutil.which("tmux")
+        if tmux is None:
+            self.skipTest("tmux not installed")
+        # A socket of its own per test: a server being killed by the
+        # previous test on the same socket made new-session fail ("server
+        # exited unexpectedly", once in a CI run).
+        session = "pw85-pack-%d-%s" % (os.getpid(), self.id().rsplit(".", 1)[-1])
+        env = dict(os.environ, TMUX="")
+        command = "%s %s --out bar.h5; sleep 30" % (TOOL, args)
+        subprocess.run([tmux, "-L", session, "new-session", "-d", "-s", session,
+                        "-x", "160", "-y", "8", "-c", self.dir, command],
+                       check=True, env=env)
+        try:
+            screen = ""
+            for _ in range(200):
+                time.sleep(0.05)
+                screen = subprocess.run(
+                    [tmux, "-L", session, "capture-pane", "-p", "-t", session],
+                    capture_output=True, text=True, env=env).stdout
+                if "left" in screen and "fraction" in screen:
+                    break
+            self.assertRegex(screen, r"\[[#.]{30}\] +[0-9.]+% fraction [0-9.]+ " + tail)
+        finally:
+            subprocess.run([tmux, "-L", session, "kill-server"], env=env)
+
+
+class Pack(ToolCase):
 
     def test_files_fire(self):
         self.check_files([], "fire", 200, 0.5)
@@ -175,23 +233,12 @@ class Pack(unittest.TestCase):
                                       p[:, [1, 2, 3, 0]])
 
     def test_threads_fire(self):
-        self.check_threads(["--n", "200", "--fraction", "0.5"])
+        self.check_threads(["--n", "200", "--fraction", "0.5", "--axes", "1,0.5,0.2"],
+                           ["centres", "forms"])
 
     def test_threads_rsa(self):
-        self.check_threads(["--n", "3000", "--fraction", "0.2", "--method", "rsa"])
-
-    def check_threads(self, args):
-        outs = []
-        for t in ("1", "2"):
-            r = run(args + ["--axes", "1,0.5,0.2",
-                            "--threads", t, "--out", "t%s.h5" % t], self.dir)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            with h5py.File(os.path.join(self.dir, "t%s.h5" % t), "r") as f:
-                outs.append((f["centres"][()], f["forms"][()],
-                             f.attrs["attempts"]))
-        np.testing.assert_array_equal(outs[0][0], outs[1][0])
-        np.testing.assert_array_equal(outs[0][1], outs[1][1])
-        self.assertEqual(outs[0][2], outs[1][2])
+        self.check_threads(["--n", "3000", "--fraction", "0.2", "--method", "rsa",
+                            "--axes", "1,0.5,0.2"], ["centres", "forms"])
 
     def check_short_of_target(self, n, phi):
         """A fire file short of its target: the box of the configuration
@@ -214,14 +261,8 @@ class Pack(unittest.TestCase):
 
     def test_interrupt_fire(self):
         # 200 at 0.8 is beyond jamming (16 s to find it, measured): cut at 1 s
-        proc = subprocess.Popen([TOOL, "--n", "200", "--axes", "1,0.5,0.2",
-                                 "--fraction", "0.8", "--out", "short.h5"],
-                                cwd=self.dir, stderr=subprocess.PIPE, text=True)
-        time.sleep(1)
-        proc.send_signal(signal.SIGINT)
-        err = proc.communicate(timeout=120)[1]
-        self.assertEqual(proc.returncode, 130, err)
-        self.assertIn("interrupted", err)
+        self.interrupt(["--n", "200", "--axes", "1,0.5,0.2", "--fraction", "0.8",
+                        "--out", "short.h5"], 1)
         self.assertGreater(self.check_short_of_target(200, 0.8), 0.3)
         self.assertEqual(os.listdir(self.dir), ["short.h5"])
         # the packer cannot start from a configuration
@@ -237,13 +278,7 @@ class Pack(unittest.TestCase):
                 "--seed", "3", "--method", "rsa"]
         full = run(args + ["--out", "full.h5"], self.dir)
         self.assertEqual(full.returncode, 0, full.stderr)
-        proc = subprocess.Popen([TOOL] + args + ["--out", "cut.h5"],
-                                cwd=self.dir, stderr=subprocess.PIPE, text=True)
-        time.sleep(0.3)
-        proc.send_signal(signal.SIGINT)
-        err = proc.communicate(timeout=120)[1]
-        self.assertEqual(proc.returncode, 130, err)
-        self.assertIn("interrupted", err)
+        self.interrupt(args + ["--out", "cut.h5"], 0.3)
         with h5py.File(os.path.join(self.dir, "cut.h5"), "r") as f:
             count = f["centres"].shape[0]
             self.assertEqual(f["forms"].shape, (count, 6))
@@ -293,37 +328,12 @@ class Pack(unittest.TestCase):
 
     def test_progress_bar_in_tmux_fire(self):
         # beyond jamming (0.8): it runs long enough to be seen
-        self.check_progress_bar("--n 200 --fraction 0.8", r"of 0\.8000, [0-9]+ steps/s, ")
+        self.check_progress_bar("--n 200 --fraction 0.8 --axes 1,0.5,0.2",
+                                r"of 0\.8000, [0-9]+ steps/s, ")
 
     def test_progress_bar_in_tmux_rsa(self):
-        self.check_progress_bar("--n 30000 --fraction 0.28 --method rsa",
+        self.check_progress_bar("--n 30000 --fraction 0.28 --method rsa --axes 1,0.5,0.2",
                                 r"of 0\.2800, [0-9]+/s, ")
-
-    def check_progress_bar(self, args, tail):
-        tmux = shutil.which("tmux")
-        if tmux is None:
-            self.skipTest("tmux not installed")
-        # A socket of its own per test: a server being killed by the
-        # previous test on the same socket made new-session fail ("server
-        # exited unexpectedly", once in a CI run).
-        session = "pw85-pack-%d-%s" % (os.getpid(), self.id().rsplit(".", 1)[-1])
-        env = dict(os.environ, TMUX="")
-        command = "%s %s --axes 1,0.5,0.2 --out bar.h5; sleep 30" % (TOOL, args)
-        subprocess.run([tmux, "-L", session, "new-session", "-d", "-s", session,
-                        "-x", "160", "-y", "8", "-c", self.dir, command],
-                       check=True, env=env)
-        try:
-            screen = ""
-            for _ in range(200):
-                time.sleep(0.05)
-                screen = subprocess.run(
-                    [tmux, "-L", session, "capture-pane", "-p", "-t", session],
-                    capture_output=True, text=True, env=env).stdout
-                if "left" in screen and "fraction" in screen:
-                    break
-            self.assertRegex(screen, r"\[[#.]{30}\] +[0-9.]+% fraction [0-9.]+ " + tail)
-        finally:
-            subprocess.run([tmux, "-L", session, "kill-server"], env=env)
 
     def test_bad_arguments(self):
         base = {"--n": "100", "--fraction": "0.2", "--out": "x.h5"}

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* pw85-pack's files (io.h): the HDF5 layout, its XDMF companion and the
- * extended XYZ of docs/microstructures.rst, each written to a temporary
+ * extended XYZ of docs/microstructures.rst (3D, or 2D: dim.h), each written to a temporary
  * file of the same directory, flushed, then renamed over the target: whole
  * or not at all. */
 #define _POSIX_C_SOURCE 200809L
@@ -74,6 +74,11 @@ int io_check_writable(char const *path, char *err, size_t size) {
 
 /* ---- HDF5 ---- */
 
+/* The dataset of the orientations. */
+static char const *orientation_name(struct dim_ops const *d) {
+  return d->orient > 1 ? "quaternions" : "angles";
+}
+
 static herr_t write_dataset(hid_t file, char const *name, hid_t type, int rank,
                             hsize_t const *dims, void const *data) {
   hid_t const space = H5Screate_simple(rank, dims, NULL);
@@ -114,22 +119,25 @@ int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t siz
   }
   hid_t const file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   herr_t st = file < 0 ? -1 : 0;
-  hsize_t const d3[1] = {3};
+  struct dim_ops const *d = m->dims;
+  hsize_t const dim[1] = {(hsize_t)d->dim};
   hsize_t const n = m->count;
   hsize_t dims[3];
-  if (st == 0) st = write_dataset(file, "box", H5T_NATIVE_DOUBLE, 1, d3, m->box);
-  dims[0] = n, dims[1] = 3;
+  if (st == 0) st = write_dataset(file, "box", H5T_NATIVE_DOUBLE, 1, dim, m->box);
+  dims[0] = n, dims[1] = (hsize_t)d->dim;
   if (st == 0) st = write_dataset(file, "centres", H5T_NATIVE_DOUBLE, 2, dims, m->centres);
-  dims[1] = 6;
+  dims[1] = (hsize_t)d->sym;
   if (st == 0) st = write_dataset(file, "forms", H5T_NATIVE_DOUBLE, 2, dims, m->forms);
-  dims[1] = 3;
+  dims[1] = (hsize_t)d->dim;
   if (st == 0) st = write_dataset(file, "axes", H5T_NATIVE_DOUBLE, 2, dims, m->axes);
-  dims[1] = 4;
+  /* /quaternions float64[n][4], or /angles float64[n] */
+  dims[1] = (hsize_t)d->orient;
   if (st == 0)
-    st = write_dataset(file, "quaternions", H5T_NATIVE_DOUBLE, 2, dims, m->quaternions);
+    st = write_dataset(file, orientation_name(d), H5T_NATIVE_DOUBLE, d->orient > 1 ? 2 : 1,
+                       dims, m->orientations);
   if (st == 0 && m->image != NULL) {
-    for (int k = 0; k < 3; k++) dims[k] = m->dims[k];
-    st = write_dataset(file, "image", H5T_NATIVE_INT32, 3, dims, m->image);
+    for (int k = 0; k < d->dim; k++) dims[k] = m->side;
+    st = write_dataset(file, "image", H5T_NATIVE_INT32, d->dim, dims, m->image);
   }
   if (st == 0) st = write_attr(file, "packing_fraction", H5T_NATIVE_DOUBLE, &m->packing_fraction);
   if (st == 0) st = write_attr(file, "seed", H5T_NATIVE_UINT64, &m->seed);
@@ -140,6 +148,10 @@ int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t siz
   if (st == 0) st = write_attr(file, "target_count", H5T_NATIVE_UINT64, &target);
   if (st == 0 && m->image != NULL)
     st = write_attr(file, "image_fraction", H5T_NATIVE_DOUBLE, &m->image_fraction);
+  /* 2D only: the files of 3D packings are those of before --2d */
+  int32_t const dimension = d->dim;
+  if (st == 0 && dimension != 3)
+    st = write_attr(file, "dimension", H5T_NATIVE_INT32, &dimension);
   if (file >= 0 && H5Fclose(file) < 0) st = -1;
   if (st < 0) {
     close(fd);
@@ -274,30 +286,44 @@ int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size) {
     set_error(err, size, "cannot read", path, "not an HDF5 file (or a corrupted one)");
     return -1;
   }
-  hsize_t d[3] = {3, 0, 0};
+  /* The attribute dimension: 2, or absent (3D; 3 is read as such). */
+  int32_t dimension = 3;
+  int st = 0;
+  if (H5Aexists(file, "dimension") > 0) {
+    st = read_attr(file, "dimension", H5T_NATIVE_INT32, &dimension, why, sizeof why);
+    if (st == 0 && dimension != 2 && dimension != 3) {
+      snprintf(why, sizeof why, "attribute dimension is %d, not 2 or 3", (int)dimension);
+      st = -1;
+    }
+  }
+  struct dim_ops const *dm = dimension == 2 ? &dim_2d : &dim_3d;
+  m->dims = dm;
+  hsize_t const dim = (hsize_t)dm->dim;
+  hsize_t d[3] = {dim, 0, 0};
   double *box = NULL;
-  int st = read_dataset(file, "box", 1, d, H5T_NATIVE_DOUBLE, (void **)&box, why, sizeof why);
+  if (st == 0)
+    st = read_dataset(file, "box", 1, d, H5T_NATIVE_DOUBLE, (void **)&box, why, sizeof why);
   if (st == 0) {
-    memcpy(m->box, box, sizeof m->box);
+    memcpy(m->box, box, dim * sizeof *box);
     free(box);
-    d[0] = 0, d[1] = 3;
+    d[0] = 0, d[1] = dim;
     st = read_dataset(file, "centres", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->centres, why,
                       sizeof why);
     m->count = (size_t)d[0];
   }
   hsize_t const n = m->count;
   if (st == 0) {
-    d[0] = n, d[1] = 6;
+    d[0] = n, d[1] = (hsize_t)dm->sym;
     st = read_dataset(file, "forms", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->forms, why, sizeof why);
   }
   if (st == 0) {
-    d[0] = n, d[1] = 3;
+    d[0] = n, d[1] = dim;
     st = read_dataset(file, "axes", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->axes, why, sizeof why);
   }
   if (st == 0) {
-    d[0] = n, d[1] = 4;
-    st = read_dataset(file, "quaternions", 2, d, H5T_NATIVE_DOUBLE, (void **)&m->quaternions,
-                      why, sizeof why);
+    d[0] = n, d[1] = (hsize_t)dm->orient;
+    st = read_dataset(file, orientation_name(dm), dm->orient > 1 ? 2 : 1, d, H5T_NATIVE_DOUBLE,
+                      (void **)&m->orientations, why, sizeof why);
   }
   if (st == 0)
     st = read_attr(file, "packing_fraction", H5T_NATIVE_DOUBLE, &m->packing_fraction, why,
@@ -322,8 +348,8 @@ int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size) {
 }
 
 void io_free(struct micro *m) {
-  free(m->centres), free(m->forms), free(m->axes), free(m->quaternions);
-  m->centres = m->forms = m->axes = m->quaternions = NULL;
+  free(m->centres), free(m->forms), free(m->axes), free(m->orientations);
+  m->centres = m->forms = m->axes = m->orientations = NULL;
 }
 
 /* ---- text files ---- */
@@ -364,15 +390,42 @@ static int finish_beside(FILE *f, char *tmp, int fd, char const *path, char *err
   return commit(tmp, fd, path, err, size);
 }
 
+/* Appends to buf (of size size) count numbers, ' '-separated: values[k]
+ * printed with fmt, or, values NULL, the integer of ints[k]. */
+static void join(char *buf, size_t size, int count, char const *fmt, double const *values,
+                 size_t const *ints) {
+  size_t used = 0;
+  buf[0] = '\0';
+  for (int k = 0; k < count && used < size; k++) {
+    int const w = values ? snprintf(buf + used, size - used, fmt, k ? " " : "", values[k])
+                         : snprintf(buf + used, size - used, "%s%zu", k ? " " : "", ints[k]);
+    used += w > 0 ? (size_t)w : 0;
+  }
+}
+
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
                   char *err, size_t size) {
   int fd;
   char *tmp;
   FILE *f = open_beside(path, &tmp, &fd, err, size);
   if (f == NULL) return -1;
-  size_t const *n = m->dims;
-  /* XDMF lists dimensions slowest first (z y x): the image's first index,
-   * along x, is ParaView's Z (docs/microstructures.rst, "ParaView"). */
+  int const dim = m->dims->dim;
+  size_t points[3], cells[3];
+  double spacing[3];
+  double const origin[3] = {0, 0, 0};
+  for (int k = 0; k < dim; k++) {
+    cells[k] = m->side, points[k] = m->side + 1;
+    spacing[k] = m->box[k] / (double)m->side;
+  }
+  char point_text[96], cell_text[96], spacing_text[96], origin_text[16];
+  join(point_text, sizeof point_text, dim, NULL, NULL, points);
+  join(cell_text, sizeof cell_text, dim, NULL, NULL, cells);
+  join(spacing_text, sizeof spacing_text, dim, "%s%.17g", spacing, NULL);
+  join(origin_text, sizeof origin_text, dim, "%s%g", origin, NULL);
+  /* XDMF lists dimensions slowest first (z y x; 2D: y x): the image's first
+   * index, along x, is ParaView's Z (3D) or Y (2D) (docs/microstructures.rst,
+   * "ParaView"). 2D: a 2DCoRectMesh with ORIGIN_DXDY (XDMF 3, Topology and
+   * Geometry). */
   fprintf(f,
           "<?xml version=\"1.0\" ?>\n"
           "<!-- pw85-pack %s: the voxel image of %s (docs: \"Microstructures for FFT "
@@ -380,23 +433,23 @@ int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
           "<Xdmf Version=\"3.0\">\n"
           "  <Domain>\n"
           "    <Grid Name=\"image\" GridType=\"Uniform\">\n"
-          "      <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%zu %zu %zu\"/>\n"
-          "      <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-          "        <DataItem Name=\"Origin\" Dimensions=\"3\" NumberType=\"Float\" "
-          "Precision=\"8\" Format=\"XML\">0 0 0</DataItem>\n"
-          "        <DataItem Name=\"Spacing\" Dimensions=\"3\" NumberType=\"Float\" "
-          "Precision=\"8\" Format=\"XML\">%.17g %.17g %.17g</DataItem>\n"
+          "      <Topology TopologyType=\"%dDCoRectMesh\" Dimensions=\"%s\"/>\n"
+          "      <Geometry GeometryType=\"%s\">\n"
+          "        <DataItem Name=\"Origin\" Dimensions=\"%d\" NumberType=\"Float\" "
+          "Precision=\"8\" Format=\"XML\">%s</DataItem>\n"
+          "        <DataItem Name=\"Spacing\" Dimensions=\"%d\" NumberType=\"Float\" "
+          "Precision=\"8\" Format=\"XML\">%s</DataItem>\n"
           "      </Geometry>\n"
           "      <Attribute Name=\"phase\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-          "        <DataItem Dimensions=\"%zu %zu %zu\" NumberType=\"Int\" Precision=\"4\" "
+          "        <DataItem Dimensions=\"%s\" NumberType=\"Int\" Precision=\"4\" "
           "Format=\"HDF\">%s:/image</DataItem>\n"
           "      </Attribute>\n"
           "    </Grid>\n"
           "  </Domain>\n"
           "</Xdmf>\n",
-          m->pw85_version, base_name(h5_path), n[0] + 1, n[1] + 1, n[2] + 1,
-          m->box[0] / (double)n[0], m->box[1] / (double)n[1], m->box[2] / (double)n[2],
-          n[0], n[1], n[2], base_name(h5_path));
+          m->pw85_version, base_name(h5_path), dim, point_text,
+          dim == 3 ? "ORIGIN_DXDYDZ" : "ORIGIN_DXDY", dim, origin_text, dim, spacing_text,
+          cell_text, base_name(h5_path));
   return finish_beside(f, tmp, fd, path, err, size);
 }
 
@@ -405,18 +458,39 @@ int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size
   char *tmp;
   FILE *f = open_beside(path, &tmp, &fd, err, size);
   if (f == NULL) return -1;
+  int const dim = m->dims->dim;
+  /* 2D: the plane z = 0 of a cell whose third vector (0, 0, H), H twice
+   * the largest semi-axis, is not periodic; an ellipse drawn as the
+   * ellipsoid of semi-axes (a0, a1, min(a0, a1)), turned by θ about z (the
+   * quaternion (cos θ/2, 0, 0, sin θ/2)), whose section by z = 0 is the
+   * ellipse; θ itself in the column angle (docs/microstructures.rst). */
+  double height = m->box[2];
+  if (dim == 2) {
+    height = 0;
+    for (size_t i = 0; i < 2 * m->count; i++) height = fmax(height, 2 * m->axes[i]);
+  }
   fprintf(f, "%zu\n", m->count);
   fprintf(f,
-          "Lattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" pbc=\"T T T\" "
-          "Properties=species:S:1:pos:R:3:aspherical_shape:R:3:orientation:R:4 "
-          "packing_fraction=%.17g seed=%llu method=%s pw85_version=%s\n",
-          m->box[0], m->box[1], m->box[2], m->packing_fraction,
-          (unsigned long long)m->seed, m->method, m->pw85_version);
+          "Lattice=\"%.17g 0 0 0 %.17g 0 0 0 %.17g\" pbc=\"T T %s\" "
+          "Properties=species:S:1:pos:R:3:aspherical_shape:R:3:orientation:R:4%s "
+          "%spacking_fraction=%.17g seed=%llu method=%s pw85_version=%s\n",
+          m->box[0], m->box[1], height, dim == 3 ? "T" : "F", dim == 3 ? "" : ":angle:R:1",
+          dim == 3 ? "" : "dimension=2 ", m->packing_fraction, (unsigned long long)m->seed,
+          m->method, m->pw85_version);
   for (size_t i = 0; i < m->count; i++) {
-    double const *c = m->centres + 3 * i, *a = m->axes + 3 * i, *p = m->quaternions + 4 * i;
+    double const *c = m->centres + dim * i, *a = m->axes + dim * i,
+                 *p = m->orientations + m->dims->orient * i;
+    double c3[3] = {c[0], c[1], 0}, a3[3] = {a[0], a[1], fmin(a[0], a[1])}, p4[4];
+    if (dim == 3) {
+      memcpy(c3, c, sizeof c3), memcpy(a3, a, sizeof a3), memcpy(p4, p, sizeof p4);
+    } else {
+      p4[0] = cos(0.5 * p[0]), p4[1] = 0, p4[2] = 0, p4[3] = sin(0.5 * p[0]);
+    }
     /* OVITO's orientation: x, y, z, w */
-    fprintf(f, "X %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", c[0],
-            c[1], c[2], a[0], a[1], a[2], p[1], p[2], p[3], p[0]);
+    fprintf(f, "X %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g", c3[0], c3[1],
+            c3[2], a3[0], a3[1], a3[2], p4[1], p4[2], p4[3], p4[0]);
+    if (dim == 2) fprintf(f, " %.17g", p[0]);
+    fputc('\n', f);
   }
   return finish_beside(f, tmp, fd, path, err, size);
 }

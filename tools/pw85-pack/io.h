@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* pw85-pack's files (io.c): the HDF5 layout of docs/microstructures.rst,
- * its XDMF companion and the extended XYZ. Every writer writes a temporary
+ * its XDMF companion and the extended XYZ, in 3D or 2D (dim.h). Every writer writes a temporary
  * file beside the target and renames it: the target is whole or untouched.
  * Errors: −1 and one line in err (no trailing newline). */
 #ifndef PW85_PACK_IO_H
@@ -9,30 +9,37 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "dim.h"
+
 /* The most ellipsoids a file may hold (--n's range): io_read_hdf5()
  * rejects larger datasets. */
 #define IO_MAX_COUNT 100000000u
 
-/* A configuration as written: count ellipsoids in a periodic box. */
+/* A configuration as written: count ellipsoids (or ellipses) in a periodic
+ * box (its first dims->dim sides). */
 struct micro {
+  struct dim_ops const *dims;
   double box[3];
   size_t count;
-  double *centres, *forms, *axes, *quaternions; /* 3, 6, 3, 4 per ellipsoid */
+  /* per ellipsoid: 3, 6, 3, 4 doubles (the orientation a quaternion); per
+   * ellipse: 2, 3, 2, 1 (the angle) */
+  double *centres, *forms, *axes, *orientations;
   double packing_fraction;
   uint64_t seed, attempts;
   size_t target;
   char method[32];
   char pw85_version[32];
-  /* the image, or NULL: dims[0]·dims[1]·dims[2] int32, and its phase fraction */
+  /* the image, or NULL: side^dim int32, and its phase fraction */
   int32_t const *image;
-  size_t dims[3];
+  size_t side;
   double image_fraction;
 };
 
 int io_check_writable(char const *path, char *err, size_t size);
 int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t size);
-/* Reads the layout (without /image); validates types and shapes, and
- * sizes (at most IO_MAX_COUNT ellipsoids). */
+/* Reads the layout (without /image), 3D or 2D by its attribute dimension
+ * (none: 3D); validates types and shapes, and sizes (at most IO_MAX_COUNT
+ * ellipsoids). */
 int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size);
 void io_free(struct micro *m);
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,

@@ -4,18 +4,24 @@
  * current state towards the target count, calling `progress` now and then,
  * and returns how it stopped. The command (pw85_pack.c) picks it by name
  * (pack_methods[]), and writes whatever state it returns: every ellipsoid
- * in it must be certified free of overlaps at every return. */
+ * (or ellipse) in it must be certified free of overlaps at every return.
+ * Both run in 3D (ellipsoids) or 2D (ellipses, --2d): what differs is in
+ * dim.h. */
 #ifndef PW85_PACK_TOOL_H
 #define PW85_PACK_TOOL_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-/* What is asked: a cubic (or orthorhombic) periodic box, identical
- * ellipsoids of semi-axes `axes`, a target count, a seed, threads, a time
- * limit in seconds (0: none; the command also stops a method through
- * progress() when it is reached). */
+#include "dim.h"
+
+/* What is asked: the dimension (dims->dim, 2 or 3), a periodic box (a
+ * square or cube; only its first dims->dim sides are read), identical
+ * shapes of semi-axes `axes` (first dims->dim read), a target count, a
+ * seed, threads, a time limit in seconds (0: none; the command also stops
+ * a method through progress() when it is reached). */
 struct pack_config {
+  struct dim_ops const *dims;
   size_t target;
   double axes[3];
   double box[3];
@@ -25,8 +31,11 @@ struct pack_config {
 };
 
 /* The configuration, grown in place: count ellipsoids, each with its
- * centre (3), form (6, the q of pw85.h), semi-axes (3) and unit quaternion
- * (4: w, x, y, z); capacity ≥ target; box: the periodic box they are in
+ * centre (3), form (6, the q of pw85.h), semi-axes (3) and orientation, a
+ * unit quaternion (4: w, x, y, z); or, in 2D, count ellipses with centre
+ * (2), form (3, the q of pw85_2d.h), semi-axes (2) and orientation, the
+ * angle θ of pw85_2d_ellipse() (1); capacity ≥ target; box: the periodic
+ * box they are in
  * (the config's, or a larger one where a method certifies a lower packing
  * fraction than asked: the file holds this one). attempts: the candidates
  * drawn so far (the counter of the method's random stream, so that a
@@ -36,7 +45,7 @@ struct pack_config {
  * the progress bar; 0 otherwise (the command computes phi from count). */
 struct pack_state {
   size_t count, capacity;
-  double *centres, *forms, *axes, *quaternions;
+  double *centres, *forms, *axes, *orientations;
   double box[3];
   uint64_t attempts;
   double phi;
@@ -58,12 +67,13 @@ typedef int (*pack_method)(struct pack_config const *config,
                            struct pack_state *state, pack_progress progress,
                            void *context);
 
-/* The certified packer of pw85_pack.h (pack_fire.c): starts from an empty
+/* The certified packer of pw85_pack.h, or of pw85_2d_pack.h (pack_fire.c): starts from an empty
  * state, fills it with config->target ellipsoids at once. */
 int pack_fire(struct pack_config const *config, struct pack_state *state,
               pack_progress progress, void *context);
 
-/* Random sequential addition on the index of pw85_index.h (pack_rsa.c). */
+/* Random sequential addition on the index of pw85_index.h, or of
+ * pw85_2d_index.h (pack_rsa.c). */
 int pack_rsa(struct pack_config const *config, struct pack_state *state,
              pack_progress progress, void *context);
 

@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* The certified packer of pw85_pack.h as a method of pw85-pack (pack.h):
- * config->target identical ellipsoids of config->axes, at the packing
+/* The certified packer of pw85_pack.h (or of pw85_2d_pack.h in 2D) as a
+ * method of pw85-pack (pack.h): config->target identical ellipsoids (or
+ * ellipses) of config->axes, at the packing
  * fraction of config->box (its sides as the aspect), with the seed, the
  * threads, the time limit; progress() returning non-zero (Ctrl-C) cancels
- * pw85_pack(). pw85_pack() starts from nothing: a state that already
+ * the packer. The packer starts from nothing: a state that already
  * holds ellipsoids (a resumed file) is refused by the command, not here.
- * The state receives the configuration pw85_pack() returns, always
+ * The state receives the configuration the packer returns, always
  * certified; its box is config->box where the target was reached, a larger
  * one (the certified packing fraction) otherwise. */
 #include <pw85/pw85_pack.h>
@@ -31,19 +32,21 @@ static int relay_progress(pw85_pack_progress const *p, void *data) {
 
 int pack_fire(struct pack_config const *cf, struct pack_state *st,
               pack_progress progress, void *context) {
-  size_t const n = cf->target;
-  double const pi = 3.14159265358979323846;
-  double const v = 4.0 / 3.0 * pi * cf->axes[0] * cf->axes[1] * cf->axes[2];
-  double *semi_axes = malloc(n * 3 * sizeof *semi_axes);
+  struct dim_ops const *d = cf->dims;
+  size_t const n = cf->target, dim = (size_t)d->dim;
+  double const v = d->measure(cf->axes);
+  double *semi_axes = malloc(n * dim * sizeof *semi_axes);
   if (semi_axes == NULL) return -PW85_ENOMEM;
   for (size_t i = 0; i < n; i++)
-    memcpy(semi_axes + 3 * i, cf->axes, sizeof cf->axes);
+    memcpy(semi_axes + dim * i, cf->axes, dim * sizeof *semi_axes);
   struct relay relay = {progress, context, st};
   pw85_pack_options o;
   pw85_pack_options_init(&o);
-  o.target = (double)n * v / (cf->box[0] * cf->box[1] * cf->box[2]);
+  double box_measure = 1;
+  for (size_t k = 0; k < dim; k++) box_measure *= cf->box[k];
+  o.target = (double)n * v / box_measure;
   o.seed = cf->seed;
-  memcpy(o.aspect, cf->box, sizeof o.aspect);
+  memcpy(o.aspect, cf->box, sizeof o.aspect); /* 2D: aspect[2] not read */
   o.threads = cf->threads;
   o.time_limit = cf->time_limit;
   o.progress_every = 10; /* a prompt Ctrl-C at large n */
@@ -53,13 +56,13 @@ int pack_fire(struct pack_config const *cf, struct pack_state *st,
   st->phi = 0;
   double phi = 0;
   int outcome = PW85_PACK_TARGET;
-  int const status = pw85_pack(n, semi_axes, &o, st->box, st->centres,
-                               st->quaternions, st->forms, &phi, &outcome);
+  int const status = d->pack(n, semi_axes, &o, st->box, st->centres, st->orientations,
+                             st->forms, &phi, &outcome);
   if (status != PW85_SUCCESS) {
     free(semi_axes);
     return -status;
   }
-  memcpy(st->axes, semi_axes, n * 3 * sizeof *semi_axes);
+  memcpy(st->axes, semi_axes, n * dim * sizeof *semi_axes);
   free(semi_axes);
   st->count = n;
   st->phi = phi;

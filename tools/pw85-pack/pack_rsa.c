@@ -1,15 +1,16 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* Random sequential addition (pack.h): candidate k (k = 0, 1, 2, … over the
  * whole packing, resumed ones included) is a uniform centre in the box and
- * a uniform rotation, drawn from a counter-based stream of (seed, k) alone;
- * it is kept if pw85_index_overlap_any() finds it overlapping (or touching)
- * no ellipsoid kept before it. Candidates are decided in batches on
- * threads (pw85_index_overlap_any_batch()), then accepted in their order,
- * one that follows an acceptance in the same batch decided again: the
- * result of the serial loop, for any thread count (pw85_index.h). The
- * packing saturates after 10⁶ rejections in a row. */
+ * a uniform rotation (3D) or angle (2D), drawn from a counter-based stream
+ * of (seed, k) alone; it is kept if the index's overlap_any() finds it
+ * overlapping (or touching) no ellipsoid (ellipse) kept before it.
+ * Candidates are decided in batches on threads (overlap_any_batch()), then
+ * accepted in their order, one that follows an acceptance in the same
+ * batch decided again: the result of the serial loop, for any thread count
+ * (pw85_index.h, pw85_2d_index.h). The packing saturates after 10⁶
+ * rejections in a row. */
 #include <math.h>
-#include <pw85/pw85_index.h>
+#include <pw85/pw85_index.h> /* PW85_INDEX_NO_ID, both dimensions */
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,40 +34,51 @@ static double next_unit(struct stream *s) {
   return (double)(z >> 11) * 0x1p-53;
 }
 
-/* Candidate k: centre, unit quaternion (w, x, y, z; Marsaglia, Ann. Math.
- * Stat. 43(2), 645–646, 1972), form. */
-static int candidate(struct pack_config const *cf, uint64_t k, double c[3],
-                     double p[4], double q[6]) {
-  struct stream s = {mix(cf->seed ^ mix(k + 0x2028u)), 0};
-  for (int d = 0; d < 3; d++) c[d] = cf->box[d] * next_unit(&s);
+/* A uniform rotation: a unit quaternion (w, x, y, z; Marsaglia, Ann. Math.
+ * Stat. 43(2), 645–646, 1972). */
+static void uniform_quaternion(struct stream *s, double p[4]) {
   double w, x, y, z, s1, s2;
   do {
-    w = 2 * next_unit(&s) - 1, x = 2 * next_unit(&s) - 1;
+    w = 2 * next_unit(s) - 1, x = 2 * next_unit(s) - 1;
     s1 = w * w + x * x;
   } while (s1 >= 1);
   do {
-    y = 2 * next_unit(&s) - 1, z = 2 * next_unit(&s) - 1;
+    y = 2 * next_unit(s) - 1, z = 2 * next_unit(s) - 1;
     s2 = y * y + z * z;
   } while (s2 >= 1 || s2 == 0);
   double const f = sqrt((1 - s1) / s2);
   p[0] = w, p[1] = x, p[2] = y * f, p[3] = z * f;
-  return pw85_ellipsoid_quaternion(cf->axes, p, q);
+}
+
+/* Candidate k: centre, orientation (a quaternion, or an angle uniform in
+ * [−π, π)), form. */
+static int candidate(struct pack_config const *cf, uint64_t k, double *c, double *p,
+                     double *q) {
+  struct stream s = {mix(cf->seed ^ mix(k + 0x2028u)), 0};
+  for (int d = 0; d < cf->dims->dim; d++) c[d] = cf->box[d] * next_unit(&s);
+  if (cf->dims->orient == 4)
+    uniform_quaternion(&s, p);
+  else
+    p[0] = 3.14159265358979323846 * (2 * next_unit(&s) - 1);
+  return cf->dims->form(cf->axes, p, q);
 }
 
 int pack_rsa(struct pack_config const *cf, struct pack_state *st,
              pack_progress progress, void *context) {
+  struct dim_ops const *d = cf->dims;
+  size_t const dim = (size_t)d->dim, sym = (size_t)d->sym, orient = (size_t)d->orient;
   memcpy(st->box, cf->box, sizeof st->box);
-  pw85_index *index = NULL;
-  int status = pw85_index_create(cf->box, &index);
+  void *index = NULL;
+  int status = d->index_create(cf->box, &index);
   if (status != PW85_SUCCESS) return -status;
   for (size_t i = 0; i < st->count && status == PW85_SUCCESS; i++)
-    status = pw85_index_insert(index, i, st->centres + 3 * i, st->forms + 6 * i);
+    status = d->index_insert(index, i, st->centres + dim * i, st->forms + sym * i);
   if (status != PW85_SUCCESS) {
-    pw85_index_destroy(index);
+    d->index_destroy(index);
     return -status;
   }
-  double *c = malloc(batch * 3 * sizeof *c), *q = malloc(batch * 6 * sizeof *q),
-         *p = malloc(batch * 4 * sizeof *p);
+  double *c = malloc(batch * dim * sizeof *c), *q = malloc(batch * sym * sizeof *q),
+         *p = malloc(batch * orient * sizeof *p);
   int *results = malloc(batch * sizeof *results);
   size_t *ids = malloc(batch * sizeof *ids);
   int outcome = PACK_DONE;
@@ -78,10 +90,11 @@ int pack_rsa(struct pack_config const *cf, struct pack_state *st,
       break;
     }
     for (int b = 0; b < batch && status == PW85_SUCCESS; b++)
-      status = candidate(cf, st->attempts + (uint64_t)b, c + 3 * b, p + 4 * b, q + 6 * b);
+      status = candidate(cf, st->attempts + (uint64_t)b, c + dim * b, p + orient * b,
+                         q + sym * b);
     if (status == PW85_SUCCESS)
-      status = pw85_index_overlap_any_batch(index, batch, c, 3, q, 6, NULL,
-                                            results, ids, NULL, cf->threads);
+      status = d->index_overlap_any_batch(index, batch, c, dim, q, sym, NULL, results, ids,
+                                          NULL, cf->threads);
     if (status != PW85_SUCCESS) {
       outcome = -status;
       break;
@@ -92,21 +105,21 @@ int pack_rsa(struct pack_config const *cf, struct pack_state *st,
       int result = results[b];
       if (result > 0 && accepted_in_batch) {
         size_t id;
-        status = pw85_index_overlap_any(index, c + 3 * b, q + 6 * b,
-                                        PW85_INDEX_NO_ID, &result, &id);
+        status = d->index_overlap_any(index, c + dim * b, q + sym * b, PW85_INDEX_NO_ID,
+                                      &result, &id);
         if (status != PW85_SUCCESS) break;
       }
       if (result <= 0) {
         if (++failures >= max_failures) break;
         continue;
       }
-      status = pw85_index_insert(index, st->count, c + 3 * b, q + 6 * b);
+      status = d->index_insert(index, st->count, c + dim * b, q + sym * b);
       if (status != PW85_SUCCESS) break;
       size_t const i = st->count++;
-      memcpy(st->centres + 3 * i, c + 3 * b, 3 * sizeof(double));
-      memcpy(st->forms + 6 * i, q + 6 * b, 6 * sizeof(double));
-      memcpy(st->axes + 3 * i, cf->axes, 3 * sizeof(double));
-      memcpy(st->quaternions + 4 * i, p + 4 * b, 4 * sizeof(double));
+      memcpy(st->centres + dim * i, c + dim * b, dim * sizeof(double));
+      memcpy(st->forms + sym * i, q + sym * b, sym * sizeof(double));
+      memcpy(st->axes + dim * i, cf->axes, dim * sizeof(double));
+      memcpy(st->orientations + orient * i, p + orient * b, orient * sizeof(double));
       failures = 0;
       accepted_in_batch = 1;
     }
@@ -114,6 +127,6 @@ int pack_rsa(struct pack_config const *cf, struct pack_state *st,
     else if (failures >= max_failures) outcome = PACK_SATURATED;
   }
   free(c), free(q), free(p), free(results), free(ids);
-  pw85_index_destroy(index);
+  d->index_destroy(index);
   return outcome;
 }

@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* pw85-pack: pack identical ellipsoids in a periodic cube and write the
- * microstructure (HDF5, its XDMF companion, extended XYZ, a voxel image).
+/* pw85-pack: pack identical ellipsoids in a periodic cube (or, with --2d,
+ * ellipses in a periodic square) and write the microstructure (HDF5, its
+ * XDMF companion, extended XYZ, a voxel image). What depends on the
+ * dimension is in dim.h; the rest is written once.
  * `pw85-pack --help` says how; docs/microstructures.rst is the contract of
  * the files. Exit status: 0 the target reached and the files written; 3
  * stopped early (time limit, jammed or saturated), files written; 130
@@ -35,27 +37,32 @@ static struct {
 enum { method_count = sizeof methods / sizeof methods[0] };
 
 static char const usage[] =
-    "Usage: pw85-pack --n N --fraction F --out FILE.h5 [options]\n"
+    "Usage: pw85-pack --n N --fraction F --out FILE.h5 [--2d] [options]\n"
     "Pack N identical ellipsoids in a periodic cube of the volume that they fill to\n"
-    "the packing fraction F, every pair certified free of overlap by pw85, and write\n"
-    "the configuration (HDF5; layout: docs, \"Microstructures for FFT solvers and\n"
-    "viewers\"). Where fire stops short of F (time limit, jammed, Ctrl-C), the file\n"
-    "holds the larger box of its densest certified configuration and its true\n"
-    "packing fraction.\n"
+    "the packing fraction F (with --2d: N identical ellipses in a periodic square of\n"
+    "the area that they fill to the area fraction F), every pair certified free of\n"
+    "overlap by pw85, and write the configuration (HDF5; layout: docs,\n"
+    "\"Microstructures for FFT solvers and viewers\"). Where fire stops short of F\n"
+    "(time limit, jammed, Ctrl-C), the file holds the larger box of its densest\n"
+    "certified configuration and its true packing fraction.\n"
     "\n"
     "  --n N             number of ellipsoids (1 to 100000000)\n"
-    "  --axes A,B,C      semi-axes (> 0, default 1,1,1)\n"
+    "  --axes A,B,C      semi-axes (> 0, default 1,1,1; with --2d: A,B, default 1,1)\n"
     "  --fraction F      target packing fraction, 0 < F < 1 (sets the box)\n"
+    "  --2d              ellipses instead (pw85_2d_pack(), the index of ellipses):\n"
+    "                    the files in their 2D layout (docs), the XYZ in the plane\n"
+    "                    z = 0\n"
     "  --seed S          seed of the random stream (0 to 2^64-1, default 1)\n"
     "  --threads T       threads (1 to 1024, default 1); same result for any T\n"
     "  --out FILE        the HDF5 file to write\n"
     "  --xyz FILE        also an extended XYZ file (OVITO, ASE)\n"
     "  --voxels M        also an M^3 voxel image in FILE (/image) and FILE's\n"
-    "                    XDMF companion (ParaView), M from 1 to 4096\n"
+    "                    XDMF companion (ParaView), M from 1 to 4096; with --2d,\n"
+    "                    an M^2 image, M from 1 to 65536\n"
     "  --time-limit S    stop packing after S seconds (> 0) and write what is there\n"
     "  --resume FILE     continue the packing in FILE (written by pw85-pack\n"
     "                    --method rsa): its box, axes, seed and method; --n may\n"
-    "                    raise the count\n"
+    "                    raise the count; --2d for a file of ellipses, only then\n"
     "  --method NAME     packing method: fire (default; pw85_pack(): overlaps\n"
     "                    relaxed by FIRE, dense, jamming) or rsa (random sequential\n"
     "                    addition: fast, saturates at lower fractions, resumable)\n"
@@ -107,15 +114,15 @@ static int rounds_up_to_one(char const *s) {
   return down < 1.0;
 }
 
-/* Exactly three fields separated by commas, none empty, each a number
+/* Exactly `count` fields separated by commas, none empty, each a number
  * > 0 and <= 1e100 (strtok would skip empty fields: 1,,1,1 as 1,1,1). */
-static int parse_axes(char const *s, double axes[3]) {
+static int parse_axes(char const *s, double *axes, int count) {
   char buf[256];
   char const *p = s;
-  for (int k = 0; k < 3; k++) {
+  for (int k = 0; k < count; k++) {
     char const *comma = strchr(p, ',');
     size_t const len = comma != NULL ? (size_t)(comma - p) : strlen(p);
-    if ((comma != NULL) != (k < 2) || len == 0 || len >= sizeof buf) return 0;
+    if ((comma != NULL) != (k < count - 1) || len == 0 || len >= sizeof buf) return 0;
     memcpy(buf, p, len);
     buf[len] = '\0';
     if (!parse_double(buf, &axes[k]) || !(axes[k] > 0) || axes[k] > 1e100) return 0;
@@ -140,11 +147,13 @@ struct options {
   uint64_t seed;
   int threads, quiet;
   size_t voxels;
-  char const *out, *xyz, *resume, *method, *fraction_text;
+  char const *out, *xyz, *resume, *method, *fraction_text, *axes_text, *voxels_text;
+  struct dim_ops const *dims; /* &dim_3d, or &dim_2d (--2d) */
 };
 
 static int parse(int argc, char **argv, struct options *o) {
-  *o = (struct options){.axes = {1, 1, 1}, .seed = 1, .threads = 1, .method = NULL};
+  *o = (struct options){.axes = {1, 1, 1}, .seed = 1, .threads = 1, .method = NULL,
+                        .dims = &dim_3d};
   for (int i = 1; i < argc; i++) {
     char const *a = argv[i];
     if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -157,6 +166,10 @@ static int parse(int argc, char **argv, struct options *o) {
     }
     if (strcmp(a, "--quiet") == 0) {
       o->quiet = 1;
+      continue;
+    }
+    if (strcmp(a, "--2d") == 0) {
+      o->dims = &dim_2d;
       continue;
     }
     static char const *const with_value[] = {
@@ -185,10 +198,7 @@ static int parse(int argc, char **argv, struct options *o) {
         return bad_argument("--n: expected an integer from 1 to 100000000, got '%s'", v);
       o->n = (size_t)u, o->have_n = 1;
     } else if (strcmp(name, "--axes") == 0) {
-      if (!parse_axes(v, o->axes))
-        return bad_argument("--axes: expected three numbers > 0 separated by commas, got '%s'",
-                            v);
-      o->have_axes = 1;
+      o->axes_text = v, o->have_axes = 1; /* read below, once --2d is known */
     } else if (strcmp(name, "--fraction") == 0) {
       if (parse_double(v, &x) && x == 1 && rounds_up_to_one(v))
         return bad_argument("--fraction: '%s' is 1 in double precision: expected a number "
@@ -207,9 +217,7 @@ static int parse(int argc, char **argv, struct options *o) {
         return bad_argument("--threads: expected an integer from 1 to 1024, got '%s'", v);
       o->threads = (int)u;
     } else if (strcmp(name, "--voxels") == 0) {
-      if (!parse_u64(v, &u) || u < 1 || u > 4096)
-        return bad_argument("--voxels: expected an integer from 1 to 4096, got '%s'", v);
-      o->voxels = (size_t)u;
+      o->voxels_text = v; /* read below, once --2d is known */
     } else if (strcmp(name, "--time-limit") == 0) {
       if (!parse_double(v, &x) || !(x > 0))
         return bad_argument("--time-limit: expected a number of seconds > 0, got '%s'", v);
@@ -229,13 +237,27 @@ static int parse(int argc, char **argv, struct options *o) {
       o->method = v;
     }
   }
+  int const dim = o->dims->dim;
+  if (o->axes_text && !parse_axes(o->axes_text, o->axes, dim))
+    return bad_argument("--axes: expected %s numbers > 0 separated by commas%s, got '%s'",
+                        dim == 3 ? "three" : "two", dim == 3 ? "" : " (--2d)", o->axes_text);
+  if (o->voxels_text) {
+    /* 4096³ and 65536² int32: 256 GiB and 16 GiB */
+    uint64_t const most = dim == 3 ? 4096 : 65536;
+    uint64_t u;
+    if (!parse_u64(o->voxels_text, &u) || u < 1 || u > most)
+      return bad_argument("--voxels: expected an integer from 1 to %llu%s, got '%s'",
+                          (unsigned long long)most, dim == 3 ? "" : " (--2d)",
+                          o->voxels_text);
+    o->voxels = (size_t)u;
+  }
   if (o->out == NULL) return bad_argument("--out: the HDF5 file to write is needed");
   if (o->resume && o->method && strcmp(o->method, "rsa") != 0)
     return bad_argument("--resume: only for --method rsa: %s cannot start from a "
                         "configuration",
                         o->method);
   if (o->resume == NULL) {
-    if (!o->have_n) return bad_argument("--n: the number of ellipsoids is needed");
+    if (!o->have_n) return bad_argument("--n: the number of %s is needed", o->dims->shapes);
     if (!o->have_fraction) return bad_argument("--fraction: the target packing fraction is needed");
   }
   return 0;
@@ -253,7 +275,8 @@ static double now(void) {
 }
 
 struct progress_state {
-  double t0, last_draw, time_limit, unit_volume, box_volume;
+  double t0, last_draw, time_limit;
+  double unit_volume, box_volume; /* areas in 2D */
   size_t start_count, target;
   int by_steps; /* the method reports phi and steps, not a growing count */
   int bar; /* stderr is a terminal and not --quiet */
@@ -300,13 +323,13 @@ static int on_progress(void *context, struct pack_state const *st) {
 
 /* ---- main ---- */
 
-static int alloc_state(struct pack_state *st, size_t capacity) {
+static int alloc_state(struct pack_state *st, struct dim_ops const *d, size_t capacity) {
   st->capacity = capacity;
-  st->centres = malloc(capacity * 3 * sizeof(double));
-  st->forms = malloc(capacity * 6 * sizeof(double));
-  st->axes = malloc(capacity * 3 * sizeof(double));
-  st->quaternions = malloc(capacity * 4 * sizeof(double));
-  return st->centres && st->forms && st->axes && st->quaternions;
+  st->centres = malloc(capacity * (size_t)d->dim * sizeof(double));
+  st->forms = malloc(capacity * (size_t)d->sym * sizeof(double));
+  st->axes = malloc(capacity * (size_t)d->dim * sizeof(double));
+  st->orientations = malloc(capacity * (size_t)d->orient * sizeof(double));
+  return st->centres && st->forms && st->axes && st->orientations;
 }
 
 static double available_memory(void) {
@@ -314,16 +337,144 @@ static double available_memory(void) {
   return pages > 0 && size > 0 ? (double)pages * (double)size : INFINITY;
 }
 
+/* The product of the first dim sides of a box: a volume or an area. */
+static double box_measure(struct dim_ops const *d, double const *box) {
+  double v = box[0] * box[1];
+  return d->dim == 3 ? v * box[2] : v;
+}
+
 /* What main() allocates, freed by main() on every path. */
 static struct pack_state st;
 static char *xdmf;
 static int32_t *image;
+
+/* --resume: the configuration of the file into st and cf, checked; 0, or
+ * the exit status of the error (reported). */
+static int resume(struct options const *o, struct pack_config *cf, char *method,
+                  size_t method_size) {
+  struct dim_ops const *d = o->dims;
+  size_t const dim = (size_t)d->dim, sym = (size_t)d->sym, orient = (size_t)d->orient;
+  char err[1024];
+  struct micro r;
+  if (io_read_hdf5(o->resume, &r, err, sizeof err) != 0) return error("--resume: %s", err);
+  if (r.dims != d) {
+    io_free(&r);
+    return r.dims == &dim_2d
+               ? bad_argument("--resume: %s holds ellipses (a 2D packing): add --2d", o->resume)
+               : bad_argument("--resume: %s holds ellipsoids (a 3D packing): --2d is for "
+                              "ellipses",
+                              o->resume);
+  }
+  /* One set of axes, the one of the file (identical ellipsoids). */
+  double const *a = r.axes;
+  int same = 1;
+  for (size_t i = 1; i < r.count; i++) same &= memcmp(r.axes + dim * i, a, dim * sizeof *a) == 0;
+  /* The target count of a file: from its count to --n's range. */
+  if (r.target < r.count || r.target > IO_MAX_COUNT) {
+    io_free(&r);
+    return error("--resume: %s: target_count %llu is not from the count of its "
+                 "%s (%zu) to %u: a corrupted file",
+                 o->resume, (unsigned long long)r.target, d->shapes, r.count, IO_MAX_COUNT);
+  }
+  if (r.count == 0 || !same) {
+    io_free(&r);
+    return error("--resume: %s: not a packing of identical %s by pw85-pack", o->resume,
+                 d->shapes);
+  }
+  /* /forms, which are certified, must be the shapes of /axes and
+   * /quaternions (/angles), from which the new ones are made: within
+   * 16·ε·max aₘ² of pw85_ellipsoid_quaternion()'s (pw85_2d_ellipse()'s)
+   * entries (pw85-pack and pypw85 write those, to the bit; another
+   * writer's rounding may differ by an ulp or two of the largest, an
+   * edited /axes by far more). */
+  char const *orientations = d->orient > 1 ? "quaternions" : "angles";
+  for (size_t i = 0; i < r.count; i++) {
+    double q[6];
+    double const *ai = r.axes + dim * i, *fi = r.forms + sym * i;
+    int const status = d->form(ai, r.orientations + orient * i, q);
+    double big = 0;
+    for (size_t k = 0; k < dim; k++) big = fmax(big, ai[k] * ai[k]);
+    int match = status == PW85_SUCCESS;
+    for (size_t k = 0; k < sym && match; k++) match = fabs(q[k] - fi[k]) <= 16 * DBL_EPSILON * big;
+    if (!match) {
+      io_free(&r);
+      if (status != PW85_SUCCESS)
+        return error("--resume: %s: /axes[%zu] and /%s[%zu]: %s", o->resume, i, orientations,
+                     i, pw85_strerror(status));
+      return error("--resume: %s: /forms[%zu] is not the form of /axes[%zu] and "
+                   "/%s[%zu]: a corrupted file",
+                   o->resume, i, i, orientations, i);
+    }
+  }
+  if (o->have_axes && memcmp(o->axes, a, dim * sizeof *a) != 0) {
+    io_free(&r);
+    return bad_argument("--axes: differs from the axes of %s", o->resume);
+  }
+  if (o->have_seed && o->seed != r.seed) {
+    io_free(&r);
+    return bad_argument("--seed: differs from the seed of %s (%llu)", o->resume,
+                        (unsigned long long)r.seed);
+  }
+  if (o->method && strcmp(o->method, r.method) != 0) {
+    io_free(&r);
+    return bad_argument("--method: differs from the method of %s (%s)", o->resume, r.method);
+  }
+  int known = 0;
+  for (int k = 0; k < method_count; k++) known |= strcmp(r.method, methods[k].name) == 0;
+  if (!known) {
+    io_free(&r);
+    return error("--resume: %s: packed by method '%s', unknown here", o->resume, r.method);
+  }
+  if (strcmp(r.method, "rsa") != 0) {
+    io_free(&r);
+    return bad_argument("--resume: only for --method rsa: %s was packed by %s, which "
+                        "cannot start from a configuration",
+                        o->resume, r.method);
+  }
+  snprintf(method, method_size, "%s", r.method);
+  memcpy(cf->axes, a, dim * sizeof *a);
+  memcpy(cf->box, r.box, dim * sizeof *a);
+  cf->seed = r.seed;
+  cf->target = o->have_n ? o->n : r.target;
+  if (cf->target < r.count) {
+    io_free(&r);
+    return bad_argument("--n: %zu is fewer than the %zu %s of %s", o->n, r.count, d->shapes,
+                        o->resume);
+  }
+  if (!alloc_state(&st, d, cf->target)) {
+    io_free(&r);
+    return error("out of memory");
+  }
+  memcpy(st.centres, r.centres, r.count * dim * sizeof(double));
+  memcpy(st.forms, r.forms, r.count * sym * sizeof(double));
+  memcpy(st.axes, r.axes, r.count * dim * sizeof(double));
+  memcpy(st.orientations, r.orientations, r.count * orient * sizeof(double));
+  st.count = r.count;
+  st.attempts = r.attempts;
+  io_free(&r);
+  /* Certified again: the file may have been edited. */
+  void *index = NULL;
+  int status = d->index_create(cf->box, &index);
+  if (status == PW85_SUCCESS) {
+    size_t pairs = 0;
+    for (size_t i = 0; i < st.count && status == PW85_SUCCESS; i++)
+      status = d->index_insert(index, i, st.centres + dim * i, st.forms + sym * i);
+    if (status == PW85_SUCCESS)
+      status = d->index_overlapping_pairs(index, o->threads, 0, NULL, NULL, NULL, &pairs);
+    d->index_destroy(index);
+    if (status == PW85_SUCCESS && pairs > 0)
+      return error("--resume: %s: %zu pairs of %s overlap", o->resume, pairs, d->shapes);
+  }
+  if (status != PW85_SUCCESS) return error("--resume: %s: %s", o->resume, pw85_strerror(status));
+  return 0;
+}
 
 static int pack_main(int argc, char **argv) {
   struct options o;
   int const bad = parse(argc, argv, &o);
   if (bad) return bad;
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors are reported by us */
+  struct dim_ops const *d = o.dims;
 
   /* The output directories can be written (before any work). */
   char err[1024];
@@ -338,7 +489,7 @@ static int pack_main(int argc, char **argv) {
     if (dot != NULL && (slash == NULL || dot > slash)) *dot = '\0';
     strcat(xdmf, ".xdmf");
     if (io_check_writable(xdmf, err, sizeof err) != 0) return error("--voxels: %s", err);
-    double const need = 4.0 * (double)o.voxels * (double)o.voxels * (double)o.voxels;
+    double const need = 4.0 * dim_voxels(d, o.voxels);
     double const have = available_memory();
     if (need > have)
       return bad_argument("--voxels %zu: the image needs %.1f GiB, more than the %.1f GiB of "
@@ -346,136 +497,39 @@ static int pack_main(int argc, char **argv) {
                           o.voxels, need / 1073741824.0, have / 1073741824.0);
   }
 
-  struct pack_config cf = {.threads = o.threads, .seed = o.seed, .time_limit = o.time_limit};
+  struct pack_config cf = {.dims = d, .threads = o.threads, .seed = o.seed,
+                           .time_limit = o.time_limit};
   char method[32];
   snprintf(method, sizeof method, "%s", o.method ? o.method : methods[0].name);
   if (o.resume) {
-    struct micro r;
-    if (io_read_hdf5(o.resume, &r, err, sizeof err) != 0) return error("--resume: %s", err);
-    /* One set of axes, the one of the file (identical ellipsoids). */
-    double const *a = r.axes;
-    int same = 1;
-    for (size_t i = 1; i < r.count; i++)
-      same &= memcmp(r.axes + 3 * i, a, 3 * sizeof *a) == 0;
-    /* The target count of a file: from its count to --n's range. */
-    if (r.target < r.count || r.target > IO_MAX_COUNT) {
-      io_free(&r);
-      return error("--resume: %s: target_count %llu is not from the count of its "
-                   "ellipsoids (%zu) to %u: a corrupted file",
-                   o.resume, (unsigned long long)r.target, r.count, IO_MAX_COUNT);
-    }
-    if (r.count == 0 || !same) {
-      io_free(&r);
-      return error("--resume: %s: not a packing of identical ellipsoids by pw85-pack",
-                   o.resume);
-    }
-    /* /forms, which are certified, must be the ellipsoids of /axes and
-     * /quaternions, from which the new ones are made: within 16·ε·max aₘ²
-     * of pw85_ellipsoid_quaternion()'s entries (pw85-pack and pypw85 write
-     * those, to the bit; another writer's rounding may differ by an ulp or
-     * two of the largest, an edited /axes by far more). */
-    for (size_t i = 0; i < r.count; i++) {
-      double q[6];
-      double const *ai = r.axes + 3 * i, *fi = r.forms + 6 * i;
-      int const status = pw85_ellipsoid_quaternion(ai, r.quaternions + 4 * i, q);
-      double const big = fmax(ai[0] * ai[0], fmax(ai[1] * ai[1], ai[2] * ai[2]));
-      int match = status == PW85_SUCCESS;
-      for (int k = 0; k < 6 && match; k++)
-        match = fabs(q[k] - fi[k]) <= 16 * DBL_EPSILON * big;
-      if (!match) {
-        io_free(&r);
-        if (status != PW85_SUCCESS)
-          return error("--resume: %s: /axes[%zu] and /quaternions[%zu]: %s", o.resume, i, i,
-                       pw85_strerror(status));
-        return error("--resume: %s: /forms[%zu] is not the form of /axes[%zu] and "
-                     "/quaternions[%zu]: a corrupted file",
-                     o.resume, i, i, i);
-      }
-    }
-    if (o.have_axes && memcmp(o.axes, a, sizeof o.axes) != 0) {
-      io_free(&r);
-      return bad_argument("--axes: differs from the axes of %s", o.resume);
-    }
-    if (o.have_seed && o.seed != r.seed) {
-      io_free(&r);
-      return bad_argument("--seed: differs from the seed of %s (%llu)", o.resume,
-                          (unsigned long long)r.seed);
-    }
-    if (o.method && strcmp(o.method, r.method) != 0) {
-      io_free(&r);
-      return bad_argument("--method: differs from the method of %s (%s)", o.resume, r.method);
-    }
-    int known = 0;
-    for (int k = 0; k < method_count; k++) known |= strcmp(r.method, methods[k].name) == 0;
-    if (!known) {
-      io_free(&r);
-      return error("--resume: %s: packed by method '%s', unknown here", o.resume, r.method);
-    }
-    if (strcmp(r.method, "rsa") != 0) {
-      io_free(&r);
-      return bad_argument("--resume: only for --method rsa: %s was packed by %s, which "
-                          "cannot start from a configuration",
-                          o.resume, r.method);
-    }
-    snprintf(method, sizeof method, "%s", r.method);
-    memcpy(cf.axes, a, sizeof cf.axes);
-    memcpy(cf.box, r.box, sizeof cf.box);
-    cf.seed = r.seed;
-    cf.target = o.have_n ? o.n : r.target;
-    if (cf.target < r.count) {
-      io_free(&r);
-      return bad_argument("--n: %zu is fewer than the %zu ellipsoids of %s", o.n, r.count,
-                          o.resume);
-    }
-    if (!alloc_state(&st, cf.target)) {
-      io_free(&r);
-      return error("out of memory");
-    }
-    memcpy(st.centres, r.centres, r.count * 3 * sizeof(double));
-    memcpy(st.forms, r.forms, r.count * 6 * sizeof(double));
-    memcpy(st.axes, r.axes, r.count * 3 * sizeof(double));
-    memcpy(st.quaternions, r.quaternions, r.count * 4 * sizeof(double));
-    st.count = r.count;
-    st.attempts = r.attempts;
-    io_free(&r);
-    /* Certified again: the file may have been edited. */
-    pw85_index *index = NULL;
-    int status = pw85_index_create(cf.box, &index);
-    if (status == PW85_SUCCESS) {
-      size_t pairs = 0;
-      for (size_t i = 0; i < st.count && status == PW85_SUCCESS; i++)
-        status = pw85_index_insert(index, i, st.centres + 3 * i, st.forms + 6 * i);
-      if (status == PW85_SUCCESS)
-        status = pw85_index_overlapping_pairs(index, o.threads, 0, NULL, NULL, NULL, &pairs);
-      pw85_index_destroy(index);
-      if (status == PW85_SUCCESS && pairs > 0)
-        return error("--resume: %s: %zu pairs of ellipsoids overlap", o.resume, pairs);
-    }
-    if (status != PW85_SUCCESS)
-      return error("--resume: %s: %s", o.resume, pw85_strerror(status));
+    int const status = resume(&o, &cf, method, sizeof method);
+    if (status != 0) return status;
   } else {
-    double const pi = 3.14159265358979323846;
-    double const v = 4.0 / 3.0 * pi * o.axes[0] * o.axes[1] * o.axes[2];
-    double const side = cbrt((double)o.n * v / o.fraction);
+    double const v = d->measure(o.axes);
+    double const side = d->dim == 3 ? cbrt((double)o.n * v / o.fraction)
+                                    : sqrt((double)o.n * v / o.fraction);
+    double const box[3] = {side, side, side};
     /* The packing fraction of the box as the methods compute it (pack.h:
      * from the sides): rounding can take it to 1 or beyond near 1, where
      * pw85_pack() refuses it with a generic PW85_EINVAL. */
-    double const filled = (double)o.n * v / (side * side * side);
+    double const filled = (double)o.n * v / box_measure(d, box);
     if (!(filled < 1.0))
-      return bad_argument("--fraction: %s with %zu ellipsoids gives a box that they would "
+      return bad_argument("--fraction: %s with %zu %s gives a box that they would "
                           "fill to %.17g once its side is rounded: ask for less",
-                          o.fraction_text, o.n, filled);
-    double const widest = fmax(o.axes[0], fmax(o.axes[1], o.axes[2]));
+                          o.fraction_text, o.n, d->shapes, filled);
+    double widest = 0;
+    for (int k = 0; k < d->dim; k++) widest = fmax(widest, o.axes[k]);
     /* the side rule of pw85_index.h; fire's (pw85_pack.h) is 2⁻⁹ */
     double const margin = strcmp(method, "fire") == 0 ? 0x1p-9 : 0x1p-19;
     if (!(2.0 * widest * (1.0 + margin) < side))
-      return bad_argument("--n: %zu ellipsoids give a box of side %.6g, not wider than an "
-                          "ellipsoid (%.6g): ask for more",
-                          o.n, side, 2 * widest);
+      return bad_argument("--n: %zu %s give a box of side %.6g, not wider than an "
+                          "%s (%.6g): ask for more",
+                          o.n, d->shapes, side, d->dim == 3 ? "ellipsoid" : "ellipse",
+                          2 * widest);
     memcpy(cf.axes, o.axes, sizeof cf.axes);
-    cf.box[0] = cf.box[1] = cf.box[2] = side;
+    memcpy(cf.box, box, sizeof cf.box);
     cf.target = o.n;
-    if (!alloc_state(&st, cf.target)) return error("out of memory");
+    if (!alloc_state(&st, d, cf.target)) return error("out of memory");
   }
   pack_method run = methods[0].run;
   for (int k = 0; k < method_count; k++)
@@ -488,9 +542,8 @@ static int pack_main(int argc, char **argv) {
   sigaction(SIGINT, &sa, NULL);
   sigaction(SIGTERM, &sa, NULL);
 
-  double const unit_volume = 4.0 / 3.0 * 3.14159265358979323846 * cf.axes[0] * cf.axes[1] *
-                             cf.axes[2];
-  double const box_volume = cf.box[0] * cf.box[1] * cf.box[2];
+  double const unit_volume = d->measure(cf.axes);
+  double const box_volume = box_measure(d, cf.box);
   struct progress_state ps = {.t0 = now(), .time_limit = o.time_limit,
                               .unit_volume = unit_volume, .box_volume = box_volume,
                               .start_count = st.count, .target = cf.target,
@@ -504,27 +557,25 @@ static int pack_main(int argc, char **argv) {
   if (outcome < 0) return error("packing: %s", pw85_strerror(-outcome));
 
   /* Ctrl-C from here on: the files are being written; finish them. */
-  struct micro m = {.count = st.count, .centres = st.centres, .forms = st.forms,
-                    .axes = st.axes, .quaternions = st.quaternions, .seed = cf.seed,
+  struct micro m = {.dims = d, .count = st.count, .centres = st.centres, .forms = st.forms,
+                    .axes = st.axes, .orientations = st.orientations, .seed = cf.seed,
                     .attempts = st.attempts, .target = cf.target};
   /* the box of the configuration (fire short of the target: larger) */
   memcpy(m.box, st.box, sizeof m.box);
-  m.packing_fraction = (double)st.count * unit_volume / (st.box[0] * st.box[1] * st.box[2]);
+  m.packing_fraction = (double)st.count * unit_volume / box_measure(d, st.box);
   snprintf(m.method, sizeof m.method, "%s", method);
   snprintf(m.pw85_version, sizeof m.pw85_version, "%s", pw85_version());
   if (o.voxels) {
-    size_t const n = o.voxels, dims[3] = {n, n, n};
-    image = malloc(n * n * n * sizeof *image);
+    size_t const n = o.voxels;
+    image = malloc((size_t)dim_voxels(d, n) * sizeof *image);
     if (image == NULL)
       return error("--voxels %zu: cannot allocate the image (%.1f GiB)", n,
-                   4.0 * (double)n * (double)n * (double)n / 1073741824.0);
-    int status = pw85_image_voxels(st.count, st.centres, st.forms, NULL, st.box, 1, dims,
-                                   image, o.threads);
-    if (status == PW85_SUCCESS)
-      status = pw85_image_fraction(dims, image, NULL, &m.image_fraction);
+                   4.0 * dim_voxels(d, n) / 1073741824.0);
+    int const status = d->image(st.count, st.centres, st.forms, st.box, n, image, o.threads,
+                                &m.image_fraction);
     if (status != PW85_SUCCESS) return error("--voxels: %s", pw85_strerror(status));
     m.image = image;
-    memcpy(m.dims, dims, sizeof dims);
+    m.side = n;
   }
   if (io_write_hdf5(o.out, &m, err, sizeof err) != 0) return error("--out: %s", err);
   if (xdmf && io_write_xdmf(xdmf, o.out, &m, err, sizeof err) != 0)
@@ -538,8 +589,8 @@ static int pack_main(int argc, char **argv) {
                                ? "jammed (the target is beyond jamming for fire)"
                                : "saturated (10^6 candidates in a row rejected)")
                         : "time limit reached";
-  fprintf(stderr, "%s: %s: %zu of %zu ellipsoids, packing fraction %.6f, written to %s\n",
-          prog, how, st.count, cf.target, m.packing_fraction, o.out);
+  fprintf(stderr, "%s: %s: %zu of %zu %s, packing fraction %.6f, written to %s\n", prog, how,
+          st.count, cf.target, d->shapes, m.packing_fraction, o.out);
   if (interrupted) return 130;
   return outcome == PACK_DONE ? 0 : 3;
 }
@@ -547,6 +598,6 @@ static int pack_main(int argc, char **argv) {
 int main(int argc, char **argv) {
   int const status = pack_main(argc, argv);
   free(image), free(xdmf);
-  free(st.centres), free(st.forms), free(st.axes), free(st.quaternions);
+  free(st.centres), free(st.forms), free(st.axes), free(st.orientations);
   return status;
 }
