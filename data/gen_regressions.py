@@ -428,6 +428,15 @@ PAIRS = {
         ["-0x1.b2e0100003800p-112", "0x1.cc07921effe7fp-991", "0x1.7bf00a2fc2058p-1019"],
         ["0x1.7474747474747p+118", "0x1.7474747474747p+117", "-0x1.a704747474747p-45", "0x1.74700007fff9cp+117", "0x1.0810284130710p-879", "0x1.7474747474747p+117"],
         ["0x1.90909094747e0p-879", "0x1.9090909090909p-879", "0x1.9090909090909p-879", "0x1.9090909090909p-879", "0x1.9090909090909p-879", "0x1.9093f09000009p-879"]),
+    # A held-out set of the hard set's lambda_end_ill class (issue 13's
+    # recipe, another seed): λ* = 3.7e-10, cond(Q1) = 1.1e15,
+    # cond(Q2) = 8.6e15 = cond(Q(λ*)). The double-double finish's residual
+    # used Q(λ) as hi + lo, 2.4e-18 relative off in f here: μ² lies 0.517
+    # of an ulp above a double, and was rounded down.
+    "residual-q-exact": (
+        ["-0x1.667ef88a64d63p-11", "0x1.8741bc61a662fp-13", "0x1.3b84c0dfa7f7ap-7"],
+        ["0x1.74c0ce4c8e922p-82", "-0x1.2f856cf297ea4p-80", "0x1.27ae84574b024p-82", "0x1.ee4baa875c1c3p-79", "-0x1.e1875736b1001p-81", "0x1.d5176e5a03c93p-83"],
+        ["0x1.b14b3f22fba36p+34", "0x1.82ff451855788p+33", "-0x1.614fcc3344732p+33", "0x1.bad6efd25c6ffp+32", "-0x1.8d51b1820baf4p+32", "0x1.64de5030fef29p+32"]),
 }
 
 

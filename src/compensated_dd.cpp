@@ -106,36 +106,44 @@ PW85_INLINE dd sum3(double t[], int n) noexcept {
 }
 
 // rᵀQ⁻¹r refined from s = s_hi + s_lo (the double-double solution): with
-// ρ = r − Q·s formed as in three times the working precision (Q(λ) =
-// hi + lo, r + r_lo, every product split exactly by two_prod),
+// ρ = r − Q(λ)·s formed as in three times the working precision,
 // rᵀs + sᵀρ = rᵀQ⁻¹r − eᵀQe (e = Q⁻¹r − s): the double-double solution's
 // error κ(Q)·2⁻¹⁰⁴, an ulp of f at κ near 4e15, enters squared. (Found by
 // fuzz-contact-raw: μ² 0.4996 ulp above a double, cond(Q1) = 3.9e15,
-// rounded the wrong way.)
+// rounded the wrong way.) Q(λ) enters ρ exactly, as the six doubles of
+// μ_hi·Q1, μ_lo·Q1 and λ·Q2 split by two_prod (1 − λ = μ_hi + μ_lo
+// exactly), with r + r_lo and every product split: combine_dd()'s hi + lo
+// is off by up to 2⁻¹⁰⁶ relative per entry, which moves f by up to that
+// times κ(Q(λ)) (a held-out pair of the hard set's lambda_end_ill class,
+// κ = 8.6e15: f 2.4e-18 relative low, μ² 0.017 ulp across a midpoint,
+// rounded the wrong way).
 template <int D>
-PW85_INLINE dd refined_quad(double const *hi, double const *lo,
+PW85_INLINE dd refined_quad(double lambda, double const *q1, double const *q2,
                             double const *r, double const *r_lo,
                             double const *s, double const *s_lo) noexcept {
+  dd const mu = two_sum(1.0, -lambda);
   double rho[D];
   PW85_UNROLL
   for (int i = 0; i < D; ++i) {
-    double t[2 + 7 * D];
+    double t[2 + 24 * D];
     int n = 0;
     t[n++] = r[i];
     if (r_lo != nullptr) t[n++] = r_lo[i];
     PW85_UNROLL
     for (int j = 0; j < D; ++j) {
       int const k = sym_index<D>(i, j);
-      dd const a = two_prod(hi[k], s[j]);
-      dd const b = two_prod(hi[k], s_lo[j]);
-      dd const c = two_prod(lo[k], s[j]);
-      t[n++] = -a.hi;
-      t[n++] = -a.lo;
-      t[n++] = -b.hi;
-      t[n++] = -b.lo;
-      t[n++] = -c.hi;
-      t[n++] = -c.lo;
-      t[n++] = -(lo[k] * s_lo[j]);
+      dd const parts[3] = {two_prod(mu.hi, q1[k]), two_prod(mu.lo, q1[k]),
+                           two_prod(lambda, q2[k])};
+      double const sj[2] = {s[j], s_lo[j]};
+      for (dd const &part : parts)
+        for (double const y : sj) {
+          dd const a = two_prod(part.hi, y);
+          dd const b = two_prod(part.lo, y);
+          t[n++] = -a.hi;
+          t[n++] = -a.lo;
+          t[n++] = -b.hi;
+          t[n++] = -b.lo;
+        }
     }
     rho[i] = sum3(t, n).hi;
   }
@@ -167,7 +175,7 @@ PW85_INLINE bool compensated_dd_steps(double lambda, double const *r,
   if (!factorise_dd(hi, lo, &fdd)) return false;
   double s[D], s_lo[D];
   ldl_solve_quad_dd(fdd, r, r_lo, s, s_lo);
-  dd const quad = refined_quad<D>(hi, lo, r, r_lo, s, s_lo);
+  dd const quad = refined_quad<D>(lambda, q1, q2, r, r_lo, s, s_lo);
   dd const value = dd_mul(dd_mul(two_sum(1.0, -lambda), lambda), quad);
   out->f = value.hi;
   out->f_lo = value.lo;

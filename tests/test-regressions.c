@@ -328,6 +328,16 @@ static void test_newton_overflow(void) {
   g_assert_cmpfloat(rel3(d + PW85_DERIV_ROT2, p->ref + 14), <=, bound);
 }
 
+/* cond(Q(λ*)) = 8.6e15 at λ* = 3.7e-10 (a held-out pair of the hard
+ * set's lambda_end_ill class): the double-double finish formed its
+ * residual from Q(λ) rounded to hi + lo, which put f 2.4e-18 relative low
+ * and μ², 0.517 of an ulp above a double, an ulp low. Now Q(λ) enters
+ * exactly: μ² correctly rounded, from the contact function and from the
+ * geometry, λ within pw85.h's 6e-10·min(λ*, 1 − λ*). */
+static void test_residual_q_exact(void) {
+  check_mu2_lambda(pair("residual-q-exact"), 6e-10, 6e-10);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   load();
@@ -336,6 +346,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/regressions/needle-far-larger",
                   test_needle_far_larger);
   g_test_add_func("/pw85/regressions/lambda-near-zero", test_lambda_near_zero);
+  g_test_add_func("/pw85/regressions/residual-q-exact", test_residual_q_exact);
   g_test_add_func("/pw85/regressions/flat-maximum", test_flat_maximum);
   g_test_add_data_func("/pw85/regressions/flat-lambda", "flat-lambda",
                        test_flat_lambda);
