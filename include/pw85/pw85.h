@@ -354,7 +354,8 @@ PW85_API int pw85_contact_function(double const r12[PW85_DIM],
  *             double arithmetic: |μ² − 1| ≤ 4·DBL_EPSILON (4 ulps of 1),
  *             μ² the exact value (where the correctly rounded μ² is
  *             1 ± 4·DBL_EPSILON itself, the exact one may lie beyond:
- *             decided in double-double; since 2.5.0).
+ *             decided in double-double, 0 within 2⁻⁹⁶ relative beyond
+ *             the edge; since 2.5.0).
  *             Coincident centres overlap. Inside the domain of
  *             pw85_contact_function() (cond(Q1), cond(Q2) < 1e16), the
  *             answer agrees with the correctly rounded μ² on every pair

@@ -62,16 +62,18 @@ static int image_3d(size_t n, double const *centres, double const *q, double con
 }
 
 /* The image of ellipses through pw85_image_voxels(): ellipse (c, Q) is
- * drawn as the ellipsoid of centre (L0/2, c0, c1) and form
- * [[max(Q00, Q11), 0], [0, Q]] in the periodic box (L0, L0, L1) cut into
- * 1 × m × m voxels: voxel (0, i, j) is pixel (i, j), at the same place in
- * memory (first index along x). The one layer of voxel centres is the plane
- * u0 = L0/2 exactly (pw85_image.h: (0 + ½)·L0/1), where (m − c)ᵀQ₃⁻¹(m − c)
- * is the (m − c)ᵀQ⁻¹(m − c) of the ellipse, the difference along u0 being
- * exactly 0: the image decides the ellipse itself, exactly. The extent
- * along u0, √max(Q00, Q11) ≤ a_max < L0/2, keeps the images along u0 away
- * from the plane. (The extra axis comes first: pw85_image_voxels() decides
- * rows along the last index by their ends, so rows of m pixels, not of 1.) */
+ * drawn as the ellipsoid of centre (c0, L0/2, c1) and form
+ * [[Q00, 0, Q01], [0, max(Q00, Q11), 0], [Q01, 0, Q11]] in the periodic
+ * box (L0, L0, L1) cut into m × 1 × m voxels: voxel (i, 0, j) is pixel
+ * (i, j), at the same place in memory (first index along x). The one layer
+ * of voxel centres is the plane u1 = L0/2 exactly (pw85_image.h:
+ * (0 + ½)·L0/1), where (m − c)ᵀQ₃⁻¹(m − c) is the (m − c)ᵀQ⁻¹(m − c) of
+ * the ellipse, the difference along u1 being exactly 0: the image decides
+ * the ellipse itself, exactly. The extent along u1, √max(Q00, Q11) ≤
+ * a_max < L0/2, keeps the images along u1 away from the plane. (The extra
+ * axis in the middle: pw85_image_voxels() decides rows along the last
+ * index by their ends, so rows of m pixels, not of 1; and shares the m
+ * planes along the first among threads, at most dims[0] of them.) */
 static int image_2d(size_t n, double const *centres, double const *q, double const *box,
                     size_t m, int32_t *image, int threads, double *fraction) {
   double *c3 = malloc((n ? n : 1) * 3 * sizeof *c3), *q3 = malloc((n ? n : 1) * 6 * sizeof *q3);
@@ -79,11 +81,11 @@ static int image_2d(size_t n, double const *centres, double const *q, double con
   double const sides[3] = {box[0], box[0], box[1]};
   for (size_t i = 0; i < n && status == PW85_SUCCESS; i++) {
     double const *qi = q + 3 * i;
-    c3[3 * i] = 0.5 * box[0], c3[3 * i + 1] = centres[2 * i], c3[3 * i + 2] = centres[2 * i + 1];
-    q3[6 * i] = fmax(qi[0], qi[2]), q3[6 * i + 1] = 0, q3[6 * i + 2] = 0;
-    q3[6 * i + 3] = qi[0], q3[6 * i + 4] = qi[1], q3[6 * i + 5] = qi[2];
+    c3[3 * i] = centres[2 * i], c3[3 * i + 1] = 0.5 * box[0], c3[3 * i + 2] = centres[2 * i + 1];
+    q3[6 * i] = qi[0], q3[6 * i + 1] = 0, q3[6 * i + 2] = qi[1];
+    q3[6 * i + 3] = fmax(qi[0], qi[2]), q3[6 * i + 4] = 0, q3[6 * i + 5] = qi[2];
   }
-  size_t const dims[3] = {1, m, m};
+  size_t const dims[3] = {m, 1, m};
   if (status == PW85_SUCCESS)
     status = pw85_image_voxels(n, c3, q3, NULL, sides, 1, dims, image, threads);
   if (status == PW85_SUCCESS) status = pw85_image_fraction(dims, image, NULL, fraction);
