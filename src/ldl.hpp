@@ -57,8 +57,9 @@ PW85_INLINE bool ldl_decomp(double const *a, Ldl<D> *f) noexcept {
 // The same factorisation with a shorter chain of dependent operations, for
 // Q(λ) in the search, where latency counts: each pivot waits only for the
 // reciprocal of the one before, dᵢ being formed from products of entries
-// computed meanwhile (d1 = a11 − a01²/d0, not a11 − L10·a01). The roundings
-// differ, not their number. Those products leave the range of doubles
+// computed meanwhile (d1 = a11 − a01²/d0, not a11 − L10·a01; in 2D
+// 1/d1 = d0/det(a), below, so that the two divisions run side by side).
+// The roundings differ, not their number. Those products leave the range of doubles
 // sooner than the terms of ldl_decomp(): the diagonal of a must lie in
 // [2^−400, 2^400] (Scaled::moderate), where no product overflows, and one
 // that underflows is below ε times the diagonal entry it is subtracted

@@ -267,7 +267,8 @@ static void test_overlap(void) {
           int const expected =
               fabs(mu2 - 1.) <= 4. * DBL_EPSILON ? 0 : (mu2 < 1. ? -1 : 1);
           /* MU2 is rounded: on an edge of the band, 1 ± 4·DBL_EPSILON, the
-           * exact μ² may lie beyond it (the sign is then right too). */
+           * exact μ² may lie beyond it (the sign is then right too). A
+           * guard: no record of the file lies on an edge. */
           gboolean const edge = fabs(mu2 - 1.) == 4. * DBL_EPSILON;
           if (result != expected &&
               !(edge && result == (mu2 < 1. ? -1 : 1)))

@@ -383,6 +383,21 @@ class Pack2D(ToolCase):
         side = math.sqrt(1000000 * AREA / 0.4)
         self.assertAlmostEqual(attrs["packing_fraction"], count * AREA / side**2, delta=1e-15)
 
+    def test_xyz_without_ellipses(self):
+        # A time limit before the first ellipse (rsa checks it first): the
+        # file holds none, and the XYZ cell is still not singular, its
+        # height the box's larger side (twice the largest semi-axis else).
+        r = run(["--2d", "--n", "100000", "--axes", "1,0.5", "--fraction", "0.5",
+                 "--method", "rsa", "--time-limit", "1e-9", "--out", "e.h5",
+                 "--xyz", "e.xyz"], self.dir)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        with open(self.path("e.xyz")) as f:
+            count = int(f.readline())
+            header = f.readline()
+        cell = [float(x) for x in header.split('Lattice="')[1].split('"')[0].split()]
+        expected = max(cell[0], cell[4]) if count == 0 else 2.0
+        self.assertEqual(cell[8], expected, (count, cell))
+
     def check_short_of_target(self, n, phi):
         """A fire file short of its target: the larger square of its
         certified configuration and its true (lower) packing fraction."""

@@ -463,11 +463,14 @@ int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size
    * the largest semi-axis, is not periodic; an ellipse drawn as the
    * ellipsoid of semi-axes (a0, a1, min(a0, a1)), turned by θ about z (the
    * quaternion (cos θ/2, 0, 0, sin θ/2)), whose section by z = 0 is the
-   * ellipse; θ itself in the column angle (docs/microstructures.rst). */
+   * ellipse; θ itself in the column angle (docs/microstructures.rst).
+   * Without ellipses (a file stopped before the first), H is the box's
+   * larger side, so that the cell is never singular. */
   double height = m->box[2];
   if (dim == 2) {
     height = 0;
     for (size_t i = 0; i < 2 * m->count; i++) height = fmax(height, 2 * m->axes[i]);
+    if (!(height > 0)) height = fmax(m->box[0], m->box[1]);
   }
   fprintf(f, "%zu\n", m->count);
   fprintf(f,
