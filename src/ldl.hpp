@@ -59,13 +59,13 @@ PW85_INLINE bool ldl_decomp(double const *a, Ldl<D> *f) noexcept {
 // reciprocal of the one before, dᵢ being formed from products of entries
 // computed meanwhile (d1 = a11 − a01²/d0, not a11 − L10·a01; in 2D
 // 1/d1 = d0/det(a), below, so that the two divisions run side by side).
-// The roundings differ, not their number. Those products leave the range of doubles
-// sooner than the terms of ldl_decomp(): the diagonal of a must lie in
-// [2^−400, 2^400] (Scaled::moderate), where no product overflows, and one
-// that underflows is below ε times the diagonal entry it is subtracted
-// from, the rounding error of that subtraction anyway (while cond(a) is
-// below 2^170). The input forms are factorised by ldl_decomp() alone,
-// whose definiteness decisions the tests pin.
+// The roundings differ, not their number. Those products leave the range
+// of doubles sooner than the terms of ldl_decomp(): the diagonal of a must
+// lie in [2^−400, 2^400] (Scaled::moderate), where no product overflows,
+// and one that underflows is below ε times the diagonal entry it is
+// subtracted from, the rounding error of that subtraction anyway (while
+// cond(a) is below 2^170). The input forms are factorised by ldl_decomp()
+// alone, whose definiteness decisions the tests pin.
 template <int D>
 PW85_INLINE bool ldl_decomp_fast(double const *a, Ldl<D> *f) noexcept {
   double const d0 = a[0];
