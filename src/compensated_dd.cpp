@@ -105,45 +105,78 @@ PW85_INLINE dd sum3(double t[], int n) noexcept {
   return two_sum(t[n - 1], lo);
 }
 
+// Q(λ) = (1 − λ)·Q1 + λ·Q2 as three doubles per entry, hi + mid + lo,
+// off from the exact value by O(ε³)·(|(1 − λ)·Q1| + |λ·Q2|): the six
+// doubles of μ_hi·Q1, μ_lo·Q1 and λ·Q2 split by two_prod (1 − λ = μ_hi +
+// μ_lo exactly) sum exactly to the entry; one pass of two_sum leaves hi
+// and five errors, a second pass over those leaves mid and errors of order
+// ε²·Σ|parts|, summed plainly into lo.
+template <int D>
+PW85_INLINE void combine_td(double lambda, double const *q1, double const *q2,
+                            double *hi, double *mid, double *lo) noexcept {
+  dd const mu = two_sum(1.0, -lambda);
+  PW85_UNROLL
+  for (int k = 0; k < sym_size(D); ++k) {
+    dd const a = two_prod(mu.hi, q1[k]);
+    dd const b = two_prod(mu.lo, q1[k]);
+    dd const c = two_prod(lambda, q2[k]);
+    double t[6] = {a.lo, b.lo, c.lo, b.hi, c.hi, a.hi};
+    for (int i = 1; i < 6; ++i) {
+      dd const u = two_sum(t[i], t[i - 1]);
+      t[i] = u.hi;
+      t[i - 1] = u.lo;
+    }
+    for (int i = 1; i < 5; ++i) {
+      dd const u = two_sum(t[i], t[i - 1]);
+      t[i] = u.hi;
+      t[i - 1] = u.lo;
+    }
+    hi[k] = t[5];
+    mid[k] = t[4];
+    lo[k] = (t[0] + t[1]) + (t[2] + t[3]);
+  }
+}
+
 // rᵀQ⁻¹r refined from s = s_hi + s_lo (the double-double solution): with
 // ρ = r − Q(λ)·s formed as in three times the working precision,
 // rᵀs + sᵀρ = rᵀQ⁻¹r − eᵀQe (e = Q⁻¹r − s): the double-double solution's
 // error κ(Q)·2⁻¹⁰⁴, an ulp of f at κ near 4e15, enters squared. (Found by
 // fuzz-contact-raw: μ² 0.4996 ulp above a double, cond(Q1) = 3.9e15,
-// rounded the wrong way.) Q(λ) enters ρ exactly, as the six doubles of
-// μ_hi·Q1, μ_lo·Q1 and λ·Q2 split by two_prod (1 − λ = μ_hi + μ_lo
-// exactly), with r + r_lo and every product split: combine_dd()'s hi + lo
-// is off by up to 2⁻¹⁰⁶ relative per entry, which moves f by up to that
-// times κ(Q(λ)) (a held-out pair of the hard set's lambda_end_ill class,
-// κ = 8.6e15: f 2.4e-18 relative low, μ² 0.017 ulp across a midpoint,
-// rounded the wrong way).
+// rounded the wrong way.) Q(λ) enters ρ to O(ε³) (combine_td()), with
+// r + r_lo and the products hi·s, hi·s_lo, mid·s split by two_prod; only
+// mid·s_lo and lo·s, themselves O(ε²)·|Q||s|, are rounded, and lo·s_lo,
+// O(ε³), is left out. An error δ in Q(λ)'s entries moves f by up to
+// δ·κ(Q(λ)) relative: combine_dd()'s hi + lo, δ = 2⁻¹⁰⁶, was not enough
+// (a held-out pair of the hard set's lambda_end_ill class, κ = 8.6e15:
+// f 2.4e-18 relative low, μ² 0.017 ulp across a midpoint, rounded the
+// wrong way).
 template <int D>
 PW85_INLINE dd refined_quad(double lambda, double const *q1, double const *q2,
                             double const *r, double const *r_lo,
                             double const *s, double const *s_lo) noexcept {
-  dd const mu = two_sum(1.0, -lambda);
+  double hi[sym_size(D)], mid[sym_size(D)], lo[sym_size(D)];
+  combine_td<D>(lambda, q1, q2, hi, mid, lo);
   double rho[D];
   PW85_UNROLL
   for (int i = 0; i < D; ++i) {
-    double t[2 + 24 * D];
+    double t[2 + 8 * D];
     int n = 0;
     t[n++] = r[i];
     if (r_lo != nullptr) t[n++] = r_lo[i];
     PW85_UNROLL
     for (int j = 0; j < D; ++j) {
       int const k = sym_index<D>(i, j);
-      dd const parts[3] = {two_prod(mu.hi, q1[k]), two_prod(mu.lo, q1[k]),
-                           two_prod(lambda, q2[k])};
-      double const sj[2] = {s[j], s_lo[j]};
-      for (dd const &part : parts)
-        for (double const y : sj) {
-          dd const a = two_prod(part.hi, y);
-          dd const b = two_prod(part.lo, y);
-          t[n++] = -a.hi;
-          t[n++] = -a.lo;
-          t[n++] = -b.hi;
-          t[n++] = -b.lo;
-        }
+      dd const a = two_prod(hi[k], s[j]);
+      dd const b = two_prod(hi[k], s_lo[j]);
+      dd const c = two_prod(mid[k], s[j]);
+      t[n++] = -a.hi;
+      t[n++] = -a.lo;
+      t[n++] = -b.hi;
+      t[n++] = -b.lo;
+      t[n++] = -c.hi;
+      t[n++] = -c.lo;
+      t[n++] = -(mid[k] * s_lo[j]);
+      t[n++] = -(lo[k] * s[j]);
     }
     rho[i] = sum3(t, n).hi;
   }
