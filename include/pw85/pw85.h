@@ -561,9 +561,12 @@ PW85_API int pw85_principal_axes_quaternion(double const q[PW85_SYM],
  * of Q(λ) at the maximiser); λ within 1.5·u·cond(Q(λ))·min(λ, 1 − λ) + u
  * (the absolute u: λ may be computed as 1 − λ, near 1, where the sphere
  * model (optimisation.rst, eq. (5.9)) misjudges its side of ½; 1e-13
- * relative for a λ of 1e-3 on a fuzzing input). (tests:
- * test-geometry-refs; the tests hold them to 8·u·cond.) λ may differ from pw85_contact_function()'s in
- * the last digits, being more accurate.
+ * relative for a λ of 1e-3 on a fuzzing input). These are measurements,
+ * not proven bounds: on 620 pairs drawn otherwise (an adversarial review,
+ * 2.5.0), x − c1 reached 1.9·u·cond (near-spheres with off-diagonal
+ * entries of 1e-15). (tests: test-geometry-refs; the tests hold them to
+ * 8·u·cond.) λ may differ from pw85_contact_function()'s in the last
+ * digits, being more accurate.
  * Swapping the ellipsoids, (r12, q1, q2) → (−r12, q2, q1), gives the same
  * μ² (bit for bit), λ → 1 − λ (rounded), n → −n (exactly; a zero may
  * change sign) and x − c2 = (x − c1) − r12 (to rounding).
@@ -610,7 +613,9 @@ PW85_API int pw85_contact_geometry(double const r12[PW85_DIM],
  * 1.2·u·cond(Q(λ)), the derivatives with respect to q1 and q2 within
  * 3.8·u·cond(Q(λ)), relative in the norm of each block; the torques within
  * 1.1·u·cond(Q(λ)) of their scale |∂μ²/∂r12|·|x − cᵢ| (a torque may
- * vanish, its own norm is then no scale).
+ * vanish, its own norm is then no scale). Measurements, not proven
+ * bounds: on the pairs of the review above, ∂μ²/∂r12 reached
+ * 1.4·u·cond; the tests hold every block to 8·u·cond.
  * Swapping the ellipsoids exchanges ∂μ²/∂ω1 and ∂μ²/∂ω2, ∂μ²/∂q1 and
  * ∂μ²/∂q2, and negates ∂μ²/∂r12, exactly (a zero may change sign). r12 = 0: μ² is minimal
  * there, every derivative is 0.
@@ -661,8 +666,9 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
  *  before any pair is computed (no output written, `status` filled with
  *  the code): PW85_EFAULT if n > 0 and an input or output pointer is
  *  NULL; PW85_EINVAL if a stride is between 1 and its record's size − 1,
- *  or threads < 0. n = 0: PW85_SUCCESS, nothing read nor written (any
- *  pointer may be NULL).
+ *  or threads < 0. n = 0: PW85_SUCCESS, nothing read nor written,
+ *  whatever the other arguments (any pointer may be NULL, threads or a
+ *  stride out of range).
  *
  *  Threads. `threads` = 1: the calling thread only; 0: OpenMP's default
  *  count (omp_get_max_threads(): OMP_NUM_THREADS if set, else one per

@@ -338,7 +338,8 @@ PW85_API int pw85_2d_principal_axes(double const q[PW85_2D_SYM],
  *  (the same outputs bit for bit, for any number of threads), the status
  *  of the first failing pair returned; PW85_EFAULT or PW85_EINVAL for the
  *  call itself (nothing written, `status` filled with the code); n = 0:
- *  PW85_SUCCESS. Threads as pw85_batch_threads() says.
+ *  PW85_SUCCESS, whatever the other arguments. Threads as
+ *  pw85_batch_threads() says.
  *  @{ */
 
 /**
