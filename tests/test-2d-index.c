@@ -672,6 +672,23 @@ static void test_errors(void) {
   g_assert_cmpuint(count, ==, 42);
   g_assert_true(wid[0] == 42 && shifts[0] == 42 && ml[0] == 42. && res[0] == 42);
   pw85_2d_index_destroy(ix);
+
+  /* A candidate whose reach spans more than 2^20 images of the rectangle
+   * (a needle of half-length 2^19 in a unit square): PW85_ERANGE, as the
+   * header says; half-length 2^17 is decided (−1). */
+  pw85_2d_index *unit = NULL;
+  double const unit_box[2] = {1., 1.}, origin[2] = {0., 0.},
+               disc[3] = {0.01, 0., 0.01}, needle_centre[2] = {0.5, 0.};
+  g_assert_cmpint(pw85_2d_index_create(unit_box, &unit), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_2d_index_insert(unit, 0, origin, disc), ==, PW85_SUCCESS);
+  double needle[3] = {0x1p34, 0., 0.01};
+  g_assert_cmpint(pw85_2d_index_overlap_any(unit, needle_centre, needle, PW85_INDEX_NO_ID,
+                                            &result, &id), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, -1);
+  needle[0] = 0x1p38;
+  g_assert_cmpint(pw85_2d_index_overlap_any(unit, needle_centre, needle, PW85_INDEX_NO_ID,
+                                            &result, &id), ==, PW85_ERANGE);
+  pw85_2d_index_destroy(unit);
 }
 
 /* An ellipse and its own images in the narrowest rectangle: μ² of each

@@ -865,6 +865,22 @@ static void test_bad_input(void) {
   g_assert_cmpint(pw85_index_within(wide, c, tiny, 1., PW85_INDEX_NO_ID, 0, NULL, NULL, NULL, &n), ==, PW85_ERANGE);
   pw85_index_destroy(wide);
 
+  /* A candidate whose reach spans more than 2^20 images of the box (a
+   * needle of half-length 2^19 in a unit box): PW85_ERANGE, as the header
+   * says; half-length 2^17 is decided (−1, the sphere inside the needle). */
+  pw85_index *unit = NULL;
+  double const unit_box[3] = {1., 1., 1.}, origin[3] = {0., 0., 0.},
+               ball[6] = {0.01, 0., 0., 0.01, 0., 0.01},
+               needle_centre[3] = {0.5, 0., 0.};
+  g_assert_cmpint(pw85_index_create(unit_box, &unit), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(unit, 0, origin, ball), ==, PW85_SUCCESS);
+  double needle[6] = {0x1p34, 0., 0., 0.01, 0., 0.01};
+  g_assert_cmpint(pw85_index_overlap_any(unit, needle_centre, needle, PW85_INDEX_NO_ID, &result, &id), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, -1);
+  needle[0] = 0x1p38;
+  g_assert_cmpint(pw85_index_overlap_any(unit, needle_centre, needle, PW85_INDEX_NO_ID, &result, &id), ==, PW85_ERANGE);
+  pw85_index_destroy(unit);
+
   g_assert_cmpint(pw85_index_remove(ix, 3), ==, PW85_SUCCESS);
   g_assert_cmpint(pw85_index_count(ix, &n), ==, PW85_SUCCESS);
   g_assert_cmpuint(n, ==, 0);

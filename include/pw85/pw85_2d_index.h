@@ -279,9 +279,12 @@ PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
  *         positive definite; PW85_EINVAL if |c_k| > 2²⁹·L_k in a periodic
  *         rectangle; PW85_ERANGE if a pair's forms span more than the
- *         range of a double (as pw85_2d_overlap()); PW85_ENOMEM (not
- *         expected, as pw85_2d_overlap()). The outputs are written on
- *         success only.
+ *         range of a double (as pw85_2d_overlap()), or if, in a periodic
+ *         rectangle, the images of a stored ellipse within reach of the
+ *         candidate span more than 2²⁰ rectangles along an axis (a
+ *         candidate about 2¹⁹ times longer than the rectangle: the queries
+ *         enumerate every image); PW85_ENOMEM (not expected, as
+ *         pw85_2d_overlap()). The outputs are written on success only.
  * @since 2.5.0
  */
 PW85_API int pw85_2d_index_overlap_any(pw85_2d_index const *index,

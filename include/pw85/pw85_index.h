@@ -287,8 +287,12 @@ PW85_API int pw85_index_get(pw85_index const *index, size_t id,
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
  *         positive definite; PW85_EINVAL if |c_k| > 2²⁹·L_k in a periodic
  *         box; PW85_ERANGE if a pair's forms span more than the range of
- *         a double (as pw85_overlap()); PW85_ENOMEM (not expected, as
- *         pw85_overlap()). The outputs are written on success only.
+ *         a double (as pw85_overlap()), or if, in a periodic box, the
+ *         images of a stored ellipsoid within reach of the candidate span
+ *         more than 2²⁰ boxes along an axis (a candidate about 2¹⁹ times
+ *         longer than the box: the queries enumerate every image);
+ *         PW85_ENOMEM (not expected, as pw85_overlap()). The outputs are
+ *         written on success only.
  * @since 2.2.0
  */
 PW85_API int pw85_index_overlap_any(pw85_index const *index,

@@ -208,3 +208,27 @@ def check_overlap_any_many(index, c, q):
         index.overlap_any_many(cc[:5], qq[:5], exclude=np.zeros(5))
     r, i = index.overlap_any_many(np.empty((0, 3)), np.empty((0, 6)))
     assert r.shape == (0,) and i.shape == (0,)
+
+
+@pytest.mark.parametrize("dim", [3, 2])
+def test_overlap_any_reach_of_images(dim):
+    """A candidate reaching across more than 2^20 images of the box:
+    PW85_ERANGE (pw85_index.h), with a message naming the reach, not the
+    range of a double; a narrower one is decided."""
+    make = pypw85.Index if dim == 3 else pypw85.d2.Index
+    index = make(np.ones(dim))
+    ball = [0.01, 0.0, 0.0, 0.01, 0.0, 0.01] if dim == 3 else [0.01, 0.0, 0.01]
+    index.insert(0, np.zeros(dim), ball)
+    needle = np.array(ball)
+    needle[0] = 2.0**34
+    centre = np.zeros(dim)
+    centre[0] = 0.5
+    assert index.overlap_any(centre, needle) == (-1, 0)
+    needle[0] = 2.0**38
+    with pytest.raises(pypw85.Error) as e:
+        index.overlap_any(centre, needle)
+    assert e.value.status == pypw85.ERANGE
+    assert "2²⁰" in str(e.value) and "images" in str(e.value)
+    with pytest.raises(pypw85.Error) as e:
+        index.overlap_any_many(centre[None, :], needle[None, :])
+    assert e.value.status == pypw85.ERANGE and "images" in str(e.value)

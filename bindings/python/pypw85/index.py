@@ -47,7 +47,7 @@ if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
     IdLike = Union[int, np.integer]  # an id: int or a NumPy integer
 
 from ._batch import threads_count as _threads_count
-from ._constants import EDOM, EINVAL, ENOTPOSDEF
+from ._constants import EDOM, EINVAL, ENOTPOSDEF, ERANGE
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -108,6 +108,9 @@ MAX_ID = 0xFFFFFFFE
 # the box, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, and a centre within 2²⁹·L_k.
 _SIDE_MARGIN = 1.0 + 2.0**-20
 _CENTRE_REACH = 2.0**29
+# The queries enumerate every image within reach of a candidate, at most
+# 2²⁰ along an axis (PW85_ERANGE beyond: pw85_index_overlap_any()).
+_IMAGE_SPAN = 2.0**20
 
 
 
@@ -445,9 +448,29 @@ class _Index:
             raise Error(code, "get", "id %d is not stored" % ident)
         return c, f
 
+    def _reach_rule(self, f):
+        """The candidate's reach across the box's images, where it is so
+        wide that the queries' enumeration of images refuses it
+        (PW85_ERANGE), or None."""
+        if self.box is None:
+            return None
+        d = self._dim
+        for k, (q, side) in enumerate(zip(f[list(d.diagonal)], self.box)):
+            half = math.sqrt(q) if q > 0 else 0.0
+            if half > _IMAGE_SPAN / 4 * side:
+                return ("√Q_%d%d = %s against L_%d = %s: the candidate "
+                        "reaches across about 2·√Q_%d%d/L_%d images of the "
+                        "%s, and the queries, which enumerate every image, "
+                        "refuse more than 2²⁰ along an axis"
+                        % (k, k, _fmt(half), k, _fmt(side), k, k, k,
+                           d.domain))
+        return None
+
     def _candidate_error(self, code, where, c, f, item=None, n=None):
         if code == EDOM or code == ENOTPOSDEF:
             detail = self._cause(c, f, code=code)
+        elif code == ERANGE and self._reach_rule(f) is not None:
+            detail = self._reach_rule(f)
         else:
             rule = self._placement(c, np.ones(self._dim.sym))  # centre rule
             detail = rule if code == EINVAL and rule else (
