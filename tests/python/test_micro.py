@@ -199,8 +199,13 @@ def test_hdf5_round_trip(tmp_path):
         assert f["quaternions"].shape == (50, 4) and f["image"].dtype == np.int32
         assert f.attrs["seed"] == 2**64 - 3 and f.attrs["seed"].dtype == np.uint64
         assert f.attrs["pw85_version"] == pypw85.__version__
-        expected = sum(4 / 3 * math.pi * x * y * z for x, y, z in m.axes) / m.box.prod()
-        assert f.attrs["packing_fraction"] == pytest.approx(expected, rel=1e-15)
+        # different semi-axes: Σ of the doubles 4/3·π·a0·a1·a2, correctly
+        # rounded, over V rounded twice, then divided: within 2 ulps of the
+        # exact quotient (a bound: 0.5 + 2 × 0.5 + 0.5 ulps, to first order)
+        exact = sum(Fraction(4 / 3 * math.pi * x * y * z) for x, y, z in m.axes) / (
+            Fraction(m.box[0]) * Fraction(m.box[1]) * Fraction(m.box[2]))
+        got = f.attrs["packing_fraction"]
+        assert abs(Fraction(got) - exact) <= 2 * 2**-53 * exact
     r = micro.read_hdf5(path)
     for name in ("box", "centres", "forms", "axes", "quaternions", "image"):
         np.testing.assert_array_equal(getattr(r, name), getattr(m, name))
@@ -232,6 +237,14 @@ def test_xdmf(tmp_path):
     spacing = root.findall("./Domain/Grid/Geometry/DataItem")[1].text.split()
     assert [float(x) for x in spacing] == [1.0, 1.0, 1.0]
     assert root.find("./Domain/Grid/Attribute/DataItem").text == "m.h5:/image"
+    # names with XML's special characters give well-formed XML that names
+    # the file as it is (they were pasted unescaped)
+    for name in ("a&b.h5", "a<b>.h5", "run--1.h5", "q\"'.h5"):
+        micro.write_xdmf(tmp_path / "odd.xdmf", tmp_path / name, (2, 2, 2),
+                         [1.0, 1.0, 1.0])
+        odd = ET.parse(tmp_path / "odd.xdmf").getroot()
+        assert odd.find("./Domain/Grid/Attribute/DataItem").text == name + ":/image"
+    (tmp_path / "odd.xdmf").unlink()
     # dims: three integers from 1 (a zero count made a spacing of L/0),
     # refused before anything is written
     for dims in ((0, 11, 12), (10, 0, 12), (10, 11, -1), (10, 11), 0):

@@ -51,6 +51,7 @@ import re
 import shlex
 import tempfile
 import typing
+from xml.sax.saxutils import escape as xml_escape
 
 import numpy as np
 
@@ -312,10 +313,22 @@ class Microstructure:
     @property
     def packing_fraction(self) -> float:
         """Σ 4π/3·a0·a1·a2 / V; for ellipses the area fraction
-        Σ π·a0·a1 / (L0·L1)."""
+        Σ π·a0·a1 / (L0·L1).
+
+        Where every particle has the same semi-axes, n·v/V formed as
+        pw85-pack forms it (the same value, bit for bit: a file of the tool
+        read and written back keeps its attribute); else the sum correctly
+        rounded (math.fsum), then divided by V.
+        """
         layout = _layout(self.box)
         a = np.asarray(self.axes, dtype=np.float64)
-        return float(sum(layout.measure(row) for row in a) / np.prod(self.box))
+        box = [float(x) for x in self.box]
+        measure = box[0] * box[1]
+        if len(box) == 3:
+            measure *= box[2]
+        if a.shape[0] > 0 and (a == a[0]).all():
+            return float(a.shape[0]) * layout.measure(a[0]) / measure
+        return math.fsum(layout.measure(row) for row in a) / measure
 
 
 class _Layout(typing.NamedTuple):
@@ -523,7 +536,8 @@ def write_xdmf(path, h5_path, dims: Sequence[int], box: ArrayLike,
 
     def join(fmt, values):
         return " ".join(fmt % v for v in values)
-    name = os.path.basename(os.fspath(h5_path))
+    # the file name as XML text (a name may hold & < >)
+    name = xml_escape(os.path.basename(os.fspath(h5_path)))
     text = (
         '<?xml version="1.0" ?>\n'
         '<Xdmf Version="3.0">\n'
