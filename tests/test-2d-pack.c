@@ -151,6 +151,37 @@ static void test_targets(void) {
   }
 }
 
+/* Sizes 100 : 1 and 30 : 1 at φ = 0.3, far below jamming: the target is
+ * reached (two unit discs and one of 0.01 came back PW85_PACK_JAMMED at
+ * 0.26 for seed 3, as in 3D: test-pack.c, size-ratio). */
+static void test_size_ratio(void) {
+  struct {
+    size_t big, small;
+    double ratio;
+    uint64_t seeds;
+  } const cases[] = {{2, 1, 100., 3}, {6, 30, 30., 2}};
+  for (size_t k = 0; k < G_N_ELEMENTS(cases); k++) {
+    size_t const n = cases[k].big + cases[k].small;
+    double *a = g_new(double, 2 * n);
+    for (size_t i = 0; i < 2 * n; i++)
+      a[i] = i < 2 * cases[k].big ? 1.0 : 1.0 / cases[k].ratio;
+    for (uint64_t seed = 1; seed <= cases[k].seeds; seed++) {
+      pw85_pack_options o;
+      pw85_pack_options_init(&o);
+      o.target = 0.3;
+      o.seed = seed;
+      Ellipses s = pack(n, a, &o);
+      check(&s);
+      if (s.outcome != PW85_PACK_TARGET)
+        g_test_fail_printf("%zu + %zu discs at %g : 1, seed %d: outcome %d "
+                           "at phi = %.4f", cases[k].big, cases[k].small,
+                           cases[k].ratio, (int)seed, s.outcome, s.phi);
+      release(&s);
+    }
+    g_free(a);
+  }
+}
+
 /* A target beyond jamming (0.95 for aspect 1.3): PW85_PACK_JAMMED with a
  * certified packing above 0.85 and below the target (measured 0.891 for
  * 200 ellipses, seed 7, in 1.7 s; the record for this aspect, N = 10³,
@@ -492,5 +523,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/2d-pack/aligned", test_aligned);
   g_test_add_func("/pw85/2d-pack/scaled", test_scaled);
   g_test_add_func("/pw85/2d-pack/errors", test_errors);
+  g_test_add_func("/pw85/2d-pack/size-ratio", test_size_ratio);
   return g_test_run();
 }

@@ -451,6 +451,41 @@ static void test_extreme_sizes(void) {
   g_free(a);
 }
 
+/* Sizes 100 : 1 and 30 : 1 at φ = 0.3, far below jamming: the target is
+ * reached. (With masses growing as the smallest semi-axis squared, the
+ * large spheres moved by (ℓ/a)⁴ of their size per step: two unit spheres
+ * and one of 0.01 came back PW85_PACK_JAMMED at φ 0.08 to 0.27, seeds 1
+ * to 3; 6 + 30 spheres at 30 : 1 at 0.21 to 0.23. An adversarial
+ * review.) */
+static void test_size_ratio(void) {
+  struct {
+    size_t big, small;
+    double ratio;
+    uint64_t seeds;
+  } const cases[] = {{2, 1, 100., 3}, {6, 30, 30., 2}};
+  for (size_t k = 0; k < G_N_ELEMENTS(cases); k++) {
+    size_t const n = cases[k].big + cases[k].small;
+    double *a = g_new(double, 3 * n);
+    for (size_t i = 0; i < 3 * n; i++)
+      a[i] = i < 3 * cases[k].big ? 1.0 : 1.0 / cases[k].ratio;
+    for (uint64_t seed = 1; seed <= cases[k].seeds; seed++) {
+      pw85_pack_options o;
+      pw85_pack_options_init(&o);
+      o.target = 0.3;
+      o.seed = seed;
+      Packing s = run(n, a, &o);
+      g_assert_cmpint(s.status, ==, PW85_SUCCESS);
+      check_packing(&s);
+      if (s.outcome != PW85_PACK_TARGET)
+        g_test_fail_printf("%zu + %zu spheres at %g : 1, seed %d: outcome %d "
+                           "at phi = %.4f", cases[k].big, cases[k].small,
+                           cases[k].ratio, (int)seed, s.outcome, s.phi);
+      free_packing(&s);
+    }
+    g_free(a);
+  }
+}
+
 /* n whose 3·n semi-axes (or 6·n forms) no array can hold: PW85_ENOMEM
  * before anything is read or written (3·n wrapped around: the checks
  * read 2 semi-axes, the packer then ran over n items). In a subprocess:
@@ -487,5 +522,6 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/pack/scale-invariance", test_scale_invariance);
   g_test_add_func("/pw85/pack/count-overflow", test_count_overflow);
   g_test_add_func("/pw85/pack/extreme-sizes", test_extreme_sizes);
+  g_test_add_func("/pw85/pack/size-ratio", test_size_ratio);
   return g_test_run();
 }

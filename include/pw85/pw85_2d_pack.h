@@ -73,7 +73,8 @@ extern "C" {
  *
  * @param[in] n the number of ellipses (≥ 1).
  * @param[in] semi_axes 2·n semi-axes (each > 0 and finite), any mix of
- *            sizes and shapes.
+ *            sizes and shapes (how close to jamming a mixture of very
+ *            different sizes gets is a measurement, as pw85_pack() says).
  * @param[in] options the options (NULL: the defaults of
  *            pw85_pack_options_init(); see the file description for the
  *            entries read).

@@ -14,10 +14,15 @@
 //    form and half-step correction of Guénolé et al., Comput. Mater. Sci.
 //    175, 109584, 2020) on the overlap energy Σ(1 − μ)² of the shapes
 //    inflated by 1 + 2⁻¹⁰ (index/energy.hpp), over centres and rotations,
-//    in mass-weighted coordinates (mass m = (c/ℓ)², c the ellipsoid's
-//    smallest semi-axis, ℓ the smallest of all; inertia m·a²,
-//    a its largest), until the energy is exactly 0: the jamming protocol
-//    of O'Hern, Silbert, Liu and Nagel (PRE 68, 011306, 2003).
+//    in mass-weighted coordinates (mass m = (ℓ/c)², c the ellipsoid's
+//    smallest semi-axis, ℓ the smallest of all, so that the stiffness of
+//    its contacts, of order 1/c², gives every ellipsoid about the same
+//    frequency against time steps in units of ℓ; inertia m·a², a its
+//    largest; a move at most max_move·c), until the energy is exactly 0:
+//    the jamming protocol of O'Hern, Silbert, Liu and Nagel (PRE 68,
+//    011306, 2003). (With m = (c/ℓ)² and moves of max_move·ℓ, a sphere
+//    100 times the smallest moved by 1e-8 of its size per step: sizes
+//    30 : 1 and beyond stalled far below jamming.)
 // 3. Where the energy stalls above 0, the configuration grown to contact
 //    is certified (a lower bound of the jamming fraction), and the box
 //    grows to the midpoint: bisection between the densest certified and
@@ -49,8 +54,9 @@ constexpr double pi = 3.14159265358979323846;
 // The inflation of the shapes whose energy is minimised.
 constexpr double inflation = 1.0 + 0x1p-10;
 // FIRE's parameters (Bitzek et al.): N_delay, f_inc, f_dec, α_start, f_α;
-// the time steps in units of ℓ (the smallest semi-axis; masses of order
-// 1, stiffness of order 1/ℓ²) and the largest move per step.
+// the time steps in units of ℓ (the smallest semi-axis; the smallest
+// ellipsoids of mass 1 and stiffness of order 1/ℓ²) and the largest move
+// per step, in units of each ellipsoid's smallest semi-axis.
 constexpr int fire_delay = 5;
 constexpr double fire_inc = 1.1, fire_dec = 0.5, fire_alpha0 = 0.1,
                  fire_falpha = 0.99;
@@ -372,7 +378,7 @@ Status Packer<D>::init() noexcept {
       amax = std::max(amax, a[k]);
       if (a[k] > a[m]) m = k;
     }
-    m_[i] = (amin / ell_) * (amin / ell_);
+    m_[i] = (ell_ / amin) * (ell_ / amin);
     inertia_[i] = m_[i] * amax * amax;
     for (int k = 0; k < D; ++k) {
       ai_[D * i + k] = a[k] * inflation;
@@ -482,15 +488,15 @@ Status Packer<D>::step(bool *zero) noexcept {
       u_[V * i + D + k] =
           (1.0 - alpha_) * u_[V * i + D + k] + mix * t_[R * i + k];
   }
-  // The move, at most max_move·ℓ (and as much at the largest semi-axis's
-  // tip for rotations) per ellipsoid.
+  // The move, at most max_move·c (and as much at the largest semi-axis's
+  // tip for rotations) per ellipsoid, c its smallest semi-axis.
   for (std::size_t i = 0; i < n_; ++i) {
     double const sm = 1.0 / std::sqrt(m_[i]), si = 1.0 / std::sqrt(inertia_[i]);
     double dx[D], w[R];
     for (int k = 0; k < D; ++k) dx[k] = dt_ * u_[V * i + k] * sm;
     for (int k = 0; k < R; ++k) w[k] = dt_ * u_[V * i + D + k] * si;
     double const step_len = std::sqrt(norm2<D>(dx));
-    double const cap = max_move * ell_;
+    double const cap = max_move * ell_ / std::sqrt(m_[i]);  // max_move·amin
     if (step_len > cap)
       for (int k = 0; k < D; ++k) dx[k] *= cap / step_len;
     double const amax = std::sqrt(inertia_[i] / m_[i]);
