@@ -385,6 +385,79 @@ class Pack(ToolCase):
                 self.assertIn(message, r.stderr)
                 self.assertEqual(os.listdir(self.dir), [])
 
+    def test_colliding_outputs(self):
+        """Two outputs naming one file, however spelt: refused (one line
+        naming both options, exit status 2, nothing written). They were
+        written one over the other with exit status 0: --out x.xdmf
+        --voxels M left an HDF5 file replaced by its own XDMF."""
+        ok = ["--n", "50", "--fraction", "0.2", "--method", "rsa"]
+        os.mkdir(os.path.join(self.dir, "sub"))
+        os.symlink(".", os.path.join(self.dir, "here"))
+        with open(os.path.join(self.dir, "real.h5"), "w") as f:
+            f.write("untouched\n")
+        os.symlink("real.h5", os.path.join(self.dir, "link.h5"))
+        before = sorted(os.listdir(self.dir))
+        absolute = os.path.join(os.path.realpath(self.dir), "a.h5")
+        cases = [
+            (["--out", "col.xdmf", "--voxels", "8"], "--out and --voxels"),
+            (["--2d", "--out", "col.xdmf", "--voxels", "8"], "--out and --voxels"),
+            (["--out", "sub/col.xdmf", "--voxels", "8"], "--out and --voxels"),
+            (["--out", "a.h5", "--xyz", "a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "./a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "sub/../a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "here/a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", absolute], "--out and --xyz"),
+            (["--out", "real.h5", "--xyz", "link.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "a.xdmf", "--voxels", "8"], "--xyz and --voxels"),
+            (["--out", "a.h5", "--xyz", "here/a.xdmf", "--voxels", "8"],
+             "--xyz and --voxels"),
+            (["--out", "sub/a", "--xyz", "sub/a.xdmf", "--voxels", "8"],
+             "--xyz and --voxels"),
+        ]
+        for argv, message in cases:
+            with self.subTest(argv=argv):
+                r = run(ok + argv, self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(sorted(os.listdir(self.dir)), before)
+                self.assertEqual(os.listdir(os.path.join(self.dir, "sub")), [])
+        with open(os.path.join(self.dir, "real.h5")) as f:
+            self.assertEqual(f.read(), "untouched\n")
+        # the file to resume: --out may replace it, not --xyz or the XDMF
+        r = run(ok + ["--out", "p.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(self.dir, "p.h5"), "rb") as f:
+            packed = f.read()
+        shutil.copy(os.path.join(self.dir, "p.h5"), os.path.join(self.dir, "q.xdmf"))
+        for argv, message in [
+                (["--resume", "p.h5", "--out", "y.h5", "--xyz", "p.h5"], "--xyz and --resume"),
+                (["--resume", "p.h5", "--out", "y.h5", "--xyz", "here/p.h5"],
+                 "--xyz and --resume"),
+                (["--resume", "p.h5", "--out", "p.h5", "--xyz", "./p.h5"], "--out and --xyz"),
+                (["--resume", "q.xdmf", "--out", "q.h5", "--voxels", "4"],
+                 "--voxels and --resume"),
+                (["--resume", "p.h5", "--out", "p.h5", "--voxels", "4", "--xyz", "p.xdmf"],
+                 "--xyz and --voxels")]:
+            with self.subTest(resume=argv):
+                r = run(argv + ["--n", "60"], self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                for name in ("p.h5", "q.xdmf"):
+                    with open(os.path.join(self.dir, name), "rb") as f:
+                        self.assertEqual(f.read(), packed, name)
+        os.remove(os.path.join(self.dir, "q.xdmf"))
+        # distinct names are accepted, and so is resuming in place
+        r = run(["--resume", "p.h5", "--n", "60", "--out", "p.h5", "--xyz", "p.xyz",
+                 "--voxels", "4"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with h5py.File(os.path.join(self.dir, "p.h5"), "r") as f:
+            self.assertEqual(f["centres"].shape, (60, 3))
+        ET.parse(os.path.join(self.dir, "p.xdmf"))
+        self.assertEqual(ase.io.read(os.path.join(self.dir, "p.xyz"),
+                                     format="extxyz").positions.shape, (60, 3))
+
     def test_bad_files(self):
         ok = ["--n", "100", "--fraction", "0.2", "--method", "rsa"]
         # an output that cannot be written

@@ -72,6 +72,41 @@ int io_check_writable(char const *path, char *err, size_t size) {
   return 0;
 }
 
+/* The directory part of path ("." without one, "/" for "/name") into dir. */
+static void dir_of(char const *path, char *dir, size_t size) {
+  char const *slash = strrchr(path, '/');
+  if (slash == NULL)
+    snprintf(dir, size, ".");
+  else if (slash == path)
+    snprintf(dir, size, "/");
+  else
+    snprintf(dir, size, "%.*s", (int)(slash - path), path);
+}
+
+int io_same_file(char const *a, char const *b) {
+  if (strcmp(a, b) == 0) return 1;
+  struct stat sa, sb;
+  /* two names of one existing file (a link, another spelling) */
+  if (stat(a, &sa) == 0 && stat(b, &sb) == 0)
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  /* not there yet: one name in one directory, spelt two ways (./x, d/../x) */
+  char const *sa_base = strrchr(a, '/'), *sb_base = strrchr(b, '/');
+  if (strcmp(sa_base ? sa_base + 1 : a, sb_base ? sb_base + 1 : b) != 0) return 0;
+  size_t const size = (strlen(a) > strlen(b) ? strlen(a) : strlen(b)) + 2;
+  char *da = malloc(size), *db = malloc(size);
+  int same = 0;
+  if (da != NULL && db != NULL) {
+    dir_of(a, da, size), dir_of(b, db, size);
+    same = stat(da, &sa) == 0 && stat(db, &sb) == 0
+               ? sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino
+               : strcmp(da, db) == 0;
+  } else {
+    same = 1; /* out of memory: refuse rather than risk a file */
+  }
+  free(da), free(db);
+  return same;
+}
+
 /* ---- HDF5 ---- */
 
 /* The dataset of the orientations. */

@@ -36,6 +36,10 @@ struct micro {
 };
 
 int io_check_writable(char const *path, char *err, size_t size);
+/* 1 if the paths a and b name one file: the same string; two names of one
+ * existing file (stat: device and inode); or, the file absent, the same
+ * name in the same directory (stat of the directories). 0 otherwise. */
+int io_same_file(char const *a, char const *b);
 int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t size);
 /* Reads the layout (without /image), 3D or 2D by its attribute dimension
  * (none: 3D); validates types and shapes, and sizes (at most IO_MAX_COUNT

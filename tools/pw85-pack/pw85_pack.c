@@ -71,7 +71,8 @@ static char const usage[] =
     "\n"
     "Exit status: 0 done; 3 stopped early (time limit, jammed, saturated), files\n"
     "written; 130 interrupted (Ctrl-C), the last certified configuration written;\n"
-    "2 a bad argument; 1 another error. Files are written whole or not at all.\n";
+    "2 a bad argument (two outputs that name one file among them); 1 another error.\n"
+    "Files are written whole or not at all.\n";
 
 static char const *prog = "pw85-pack";
 
@@ -476,10 +477,6 @@ static int pack_main(int argc, char **argv) {
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors are reported by us */
   struct dim_ops const *d = o.dims;
 
-  /* The output directories can be written (before any work). */
-  char err[1024];
-  if (io_check_writable(o.out, err, sizeof err) != 0) return error("--out: %s", err);
-  if (o.xyz && io_check_writable(o.xyz, err, sizeof err) != 0) return error("--xyz: %s", err);
   if (o.voxels) {
     size_t const len = strlen(o.out);
     xdmf = malloc(len + 6);
@@ -488,6 +485,34 @@ static int pack_main(int argc, char **argv) {
     char *dot = strrchr(xdmf, '.'), *slash = strrchr(xdmf, '/');
     if (dot != NULL && (slash == NULL || dot > slash)) *dot = '\0';
     strcat(xdmf, ".xdmf");
+  }
+  /* Two outputs (or an output and the file to resume, which only --out may
+   * replace) that name one file: the second written would replace the
+   * first. */
+  if (o.xyz && io_same_file(o.out, o.xyz))
+    return bad_argument("--out and --xyz name the same file (%s): give each its own", o.xyz);
+  if (xdmf && io_same_file(o.out, xdmf))
+    return bad_argument("--out and --voxels name the same file (%s, the XDMF companion of "
+                        "--out): give --out another extension, such as .h5",
+                        xdmf);
+  if (xdmf && o.xyz && io_same_file(o.xyz, xdmf))
+    return bad_argument("--xyz and --voxels name the same file (%s, the XDMF companion of "
+                        "--out): give --xyz another name",
+                        xdmf);
+  if (o.resume && o.xyz && io_same_file(o.resume, o.xyz))
+    return bad_argument("--xyz and --resume name the same file (%s): the XYZ would replace "
+                        "the packing to resume",
+                        o.xyz);
+  if (o.resume && xdmf && io_same_file(o.resume, xdmf))
+    return bad_argument("--voxels and --resume name the same file (%s, the XDMF companion "
+                        "of --out): the XDMF would replace the packing to resume",
+                        xdmf);
+
+  /* The output directories can be written (before any work). */
+  char err[1024];
+  if (io_check_writable(o.out, err, sizeof err) != 0) return error("--out: %s", err);
+  if (o.xyz && io_check_writable(o.xyz, err, sizeof err) != 0) return error("--xyz: %s", err);
+  if (o.voxels) {
     if (io_check_writable(xdmf, err, sizeof err) != 0) return error("--voxels: %s", err);
     double const need = 4.0 * dim_voxels(d, o.voxels);
     double const have = available_memory();
