@@ -458,6 +458,37 @@ class Pack(ToolCase):
         self.assertEqual(ase.io.read(os.path.join(self.dir, "p.xyz"),
                                      format="extxyz").positions.shape, (60, 3))
 
+    def test_resume_fraction(self):
+        """--fraction under --resume: the target of the file's box and the
+        target count, or refused (exit status 2, one line, nothing written)
+        as a differing --seed is; it was ignored, with exit status 0."""
+        ok = ["--method", "rsa", "--seed", "4"]
+        r = run(ok + ["--n", "100", "--fraction", "0.2", "--out", "p.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for argv, message in [
+                (["--fraction", "0.3"], "--fraction: 0.3 differs from the target of p.h5 "
+                 "(100 ellipsoids in its box: 0.2); with --resume, --n sets the target"),
+                (["--fraction", "0.2000001"], "--fraction: 0.2000001 differs"),
+                (["--n", "150", "--fraction", "0.2"],
+                 "--fraction: 0.2 differs from the target of p.h5 (150 ellipsoids in its "
+                 "box: 0.3)")]:
+            with self.subTest(argv=argv):
+                r = run(["--resume", "p.h5", "--out", "y.h5"] + argv, self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(os.listdir(self.dir), ["p.h5"])
+        # the fraction of the file, or of its box with the count of --n
+        for argv, count in [(["--fraction", "0.2"], 100),
+                            (["--n", "150", "--fraction", "0.3"], 150)]:
+            with self.subTest(argv=argv):
+                r = run(["--resume", "p.h5", "--out", "y.h5"] + argv, self.dir)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                with h5py.File(os.path.join(self.dir, "y.h5"), "r") as f:
+                    self.assertEqual(f["centres"].shape, (count, 3))
+                    self.assertAlmostEqual(f.attrs["packing_fraction"], count / 500,
+                                           delta=1e-15)
+
     def test_bad_files(self):
         ok = ["--n", "100", "--fraction", "0.2", "--method", "rsa"]
         # an output that cannot be written

@@ -455,6 +455,22 @@ class Pack2D(ToolCase):
                       r.stderr)
         self.assertEqual(os.listdir(self.dir), [])
 
+    def test_resume_fraction(self):
+        # as in 3D: a --fraction other than the target of the file's box and
+        # count refused (it was ignored: exit status 0 at 0.4), the same
+        # accepted
+        r = run(["--2d", "--n", "300", "--axes", "1,0.4", "--fraction", "0.4", "--seed", "2",
+                 "--method", "rsa", "--out", "p2.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        r = run(["--2d", "--resume", "p2.h5", "--fraction", "0.5", "--out", "o.h5"], self.dir)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertEqual(r.stderr, "pw85-pack: --fraction: 0.5 differs from the target of "
+                         "p2.h5 (300 ellipses in its box: 0.4); with --resume, --n sets the "
+                         "target (see --help)\n")
+        self.assertEqual(os.listdir(self.dir), ["p2.h5"])
+        r = run(["--2d", "--resume", "p2.h5", "--fraction", "0.4", "--out", "o.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+
     def test_resume_other_dimension(self):
         # --2d anywhere on the line (here after --axes A,B)
         for args, name in ((["--axes", "1,0.5", "--2d"], "flat.h5"),
