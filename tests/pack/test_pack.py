@@ -349,6 +349,23 @@ class Pack(ToolCase):
             # empty fields (strtok skipped them: 1,,1,1 read as 1,1,1)
             ({"--axes": "1,,1,1"}, "--axes"), ({"--axes": "1,1,1,"}, "--axes"),
             ({"--axes": ",1,1,1"}, "--axes"), ({"--axes": "1,1,,"}, "--axes"),
+            # numbers > 0 outside the range of the semi-axes: 1e-150 was
+            # blamed on --fraction ("would fill to -nan"), 1e150 was "not
+            # numbers > 0"
+            ({"--axes": "1e-150,1e-150,1e-150"}, "--axes: 1e-150 is outside the range of "
+             "the semi-axes, 1e-100 to 1e100, got '1e-150,1e-150,1e-150'"),
+            ({"--axes": "1,1,1e150"}, "--axes: 1e150 is outside the range"),
+            ({"--axes": "1e-320,1,1"}, "--axes: 1e-320 is outside the range"),
+            ({"--axes": "1,1e-400,1"}, "--axes: 1e-400 is outside the range"),
+            ({"--axes": "1,1,1e400"}, "--axes: 1e400 is outside the range"),
+            ({"--axes": "-1e-400,1,1"}, "--axes: expected three numbers > 0"),
+            # in range, but N of them at F need a box beyond a double
+            ({"--axes": "1e100,1e100,1e100", "--n": "100000000", "--fraction": "0.5"},
+             "--n, --axes and --fraction: 100000000 ellipsoids of semi-axes "
+             "1e100,1e100,1e100 at 0.5 need a box whose volume is beyond the range of a "
+             "double"),
+            ({"--n": "100000000", "--fraction": "1e-300"},
+             "100000000 ellipsoids of semi-axes 1,1,1 at 1e-300 need a box whose volume"),
             # a fraction whose box, rounded, 3 spheres fill to 1 or more: the
             # packer refused it with a generic "outside its documented domain"
             ({"--n": "3", "--fraction": "0.9999999999999999"},
@@ -375,6 +392,15 @@ class Pack(ToolCase):
                 self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
                 self.assertIn(message, r.stderr)
                 self.assertEqual(os.listdir(self.dir), [])
+        # the ends of the range of the semi-axes are packed
+        for axes in ("1e-100,1e-100,1e-100", "1e100,1e100,1e100"):
+            with self.subTest(axes=axes):
+                r = run(["--n", "10", "--fraction", "0.3", "--axes", axes, "--out", "e.h5"],
+                        self.dir)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                with h5py.File(os.path.join(self.dir, "e.h5"), "r") as f:
+                    self.assertAlmostEqual(f.attrs["packing_fraction"], 0.3, delta=1e-15)
+                os.remove(os.path.join(self.dir, "e.h5"))
         for argv, message in [(["--fraction", "0.2", "--out", "x.h5"], "--n"),
                               (["--n", "10", "--out", "x.h5"], "--fraction"),
                               (["--n", "10", "--fraction", "0.2"], "--out"),

@@ -418,8 +418,8 @@ class Pack2D(ToolCase):
         r = run(["--help"], self.dir)
         self.assertEqual(r.returncode, 0)
         self.assertIn("--2d", r.stdout)
-        self.assertIn("--axes A,B,C      semi-axes (> 0, default 1,1,1; with --2d: A,B",
-                      r.stdout)
+        self.assertIn("--axes A,B,C      semi-axes (1e-100 to 1e100, default 1,1,1; with "
+                      "--2d: A,B,", r.stdout)
 
     def test_progress_bar_in_tmux(self):
         self.check_progress_bar("--2d --n 2000 --fraction 0.95 --axes 1,0.5",
@@ -434,6 +434,12 @@ class Pack2D(ToolCase):
             (["--axes", "1"], "--axes: expected two numbers > 0"),
             (["--axes", "1,"], "--axes: expected two numbers > 0"),
             (["--axes", "1,0"], "--axes: expected two numbers > 0"),
+            (["--axes", "1e-150,1e-150"], "--axes: 1e-150 is outside the range of the "
+             "semi-axes, 1e-100 to 1e100, got '1e-150,1e-150'"),
+            (["--axes", "1e150,1"], "--axes: 1e150 is outside the range"),
+            (["--axes", "1e100,1e100", "--fraction", "1e-200"],
+             "--n, --axes and --fraction: 100 ellipses of semi-axes 1e100,1e100 at 1e-200 "
+             "need a box whose area is beyond the range of a double"),
             (["--voxels", "65537"], "--voxels: expected an integer from 1 to 65536 (--2d)"),
             (["--voxels", "0"], "--voxels: expected an integer from 1 to 65536 (--2d)"),
             (["--n", "1", "--fraction", "0.5"], "--n: 1 ellipses give a box of side"),

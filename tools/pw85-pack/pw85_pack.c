@@ -47,7 +47,8 @@ static char const usage[] =
     "certified configuration and its true packing fraction.\n"
     "\n"
     "  --n N             number of ellipsoids (1 to 100000000)\n"
-    "  --axes A,B,C      semi-axes (> 0, default 1,1,1; with --2d: A,B, default 1,1)\n"
+    "  --axes A,B,C      semi-axes (1e-100 to 1e100, default 1,1,1; with --2d: A,B,\n"
+    "                    default 1,1)\n"
     "  --fraction F      target packing fraction, 0 < F < 1 (sets the box)\n"
     "  --2d              ellipses instead (pw85_2d_pack(), the index of ellipses):\n"
     "                    the files in their 2D layout (docs), the XYZ in the plane\n"
@@ -117,21 +118,39 @@ static int rounds_up_to_one(char const *s) {
   return down < 1.0;
 }
 
+/* The range of the semi-axes: their products (a volume, N of them over the
+ * fraction) stay normal doubles, far from underflow (1e-150 made the
+ * volume 0, and the fraction of the box 0/0). */
+#define AXIS_MIN 1e-100
+#define AXIS_MAX 1e100
+
 /* Exactly `count` fields separated by commas, none empty, each a number
- * > 0 and <= 1e100 (strtok would skip empty fields: 1,,1,1 as 1,1,1). */
-static int parse_axes(char const *s, double *axes, int count) {
+ * from AXIS_MIN to AXIS_MAX (strtok would skip empty fields: 1,,1,1 as
+ * 1,1,1): 0; -1 if a field is not a number > 0; 1 if it is one outside
+ * the range (1e-400 and 1e400 included, which strtod() rounds to 0 and
+ * infinity), copied into bad. */
+static int parse_axes(char const *s, double *axes, int count, char *bad, size_t bad_size) {
   char buf[256];
   char const *p = s;
   for (int k = 0; k < count; k++) {
     char const *comma = strchr(p, ',');
     size_t const len = comma != NULL ? (size_t)(comma - p) : strlen(p);
-    if ((comma != NULL) != (k < count - 1) || len == 0 || len >= sizeof buf) return 0;
+    if ((comma != NULL) != (k < count - 1) || len == 0 || len >= sizeof buf) return -1;
     memcpy(buf, p, len);
     buf[len] = '\0';
-    if (!parse_double(buf, &axes[k]) || !(axes[k] > 0) || axes[k] > 1e100) return 0;
+    char *end;
+    errno = 0;
+    axes[k] = strtod(buf, &end);
+    int const underflow = errno == ERANGE && axes[k] == 0 && !signbit(axes[k]);
+    if (end == buf || *end != '\0' || isnan(axes[k]) || !(axes[k] > 0 || underflow))
+      return -1;
+    if (!(axes[k] >= AXIS_MIN && axes[k] <= AXIS_MAX)) {
+      snprintf(bad, bad_size, "%s", buf);
+      return 1;
+    }
     p = comma != NULL ? comma + 1 : p + len;
   }
-  return 1;
+  return 0;
 }
 
 static int parse_u64(char const *s, uint64_t *x) {
@@ -241,9 +260,16 @@ static int parse(int argc, char **argv, struct options *o) {
     }
   }
   int const dim = o->dims->dim;
-  if (o->axes_text && !parse_axes(o->axes_text, o->axes, dim))
+  char bad[256];
+  int const axes_status =
+      o->axes_text ? parse_axes(o->axes_text, o->axes, dim, bad, sizeof bad) : 0;
+  if (axes_status < 0)
     return bad_argument("--axes: expected %s numbers > 0 separated by commas%s, got '%s'",
                         dim == 3 ? "three" : "two", dim == 3 ? "" : " (--2d)", o->axes_text);
+  if (axes_status > 0)
+    return bad_argument("--axes: %s is outside the range of the semi-axes, 1e-100 to 1e100, "
+                        "got '%s'",
+                        bad, o->axes_text);
   if (o->voxels_text) {
     /* 4096³ and 65536² int32: 256 GiB and 16 GiB */
     uint64_t const most = dim == 3 ? 4096 : 65536;
@@ -545,8 +571,14 @@ static int pack_main(int argc, char **argv) {
     if (status != 0) return status;
   } else {
     double const v = d->measure(o.axes);
-    double const side = d->dim == 3 ? cbrt((double)o.n * v / o.fraction)
-                                    : sqrt((double)o.n * v / o.fraction);
+    double const whole = (double)o.n * v / o.fraction; /* the box's volume (area) */
+    if (!isfinite(whole))
+      return bad_argument("--n, --axes and --fraction: %zu %s of semi-axes %s at %s need a "
+                          "box whose %s is beyond the range of a double",
+                          o.n, d->shapes,
+                          o.axes_text ? o.axes_text : d->dim == 3 ? "1,1,1" : "1,1",
+                          o.fraction_text, d->dim == 3 ? "volume" : "area");
+    double const side = d->dim == 3 ? cbrt(whole) : sqrt(whole);
     double const box[3] = {side, side, side};
     /* The packing fraction of the box as the methods compute it (pack.h:
      * from the sides): rounding can take it to 1 or beyond near 1, where
