@@ -515,6 +515,48 @@ class Pack(ToolCase):
                     self.assertAlmostEqual(f.attrs["packing_fraction"], count / 500,
                                            delta=1e-15)
 
+    def test_xdmf_names(self):
+        """The XDMF companion well-formed XML (xml.etree) for any name of
+        --out that XML can hold, and naming it: "--" went into its comment,
+        & and < into its text, unescaped. Names that XML cannot hold (control
+        characters, not UTF-8) refused with --voxels (one line, exit status
+        2, nothing written)."""
+        ok = ["--n", "20", "--fraction", "0.2", "--method", "rsa", "--voxels", "4"]
+        for dim in ([], ["--2d"]):
+            for stem in ("run--1", "a&b", "a<b>c", "q\"u'o", "a]]>b", "x&amp;y",
+                         "\u00e9--\u00fc", "-->"):
+                with self.subTest(stem=stem, dim=dim):
+                    try:
+                        r = run(ok + dim + ["--out", stem + ".h5"], self.dir)
+                        self.assertEqual(r.returncode, 0, r.stderr)
+                        self.assertEqual(sorted(os.listdir(self.dir)),
+                                         sorted([stem + ".h5", stem + ".xdmf"]))
+                        path = os.path.join(self.dir, stem + ".xdmf")
+                        root = ET.parse(path).getroot()
+                        data = root.find("./Domain/Grid/Attribute/DataItem")
+                        self.assertEqual(data.get("Format"), "HDF")
+                        self.assertEqual(data.text, stem + ".h5:/image")
+                    finally:
+                        for name in os.listdir(self.dir):
+                            os.remove(os.path.join(self.dir, name))
+        # "\udcff": the byte 0xff (os.fsencode); 0xc0 0xaf: "/" overlong
+        for name in ("a\nb.h5", "tab\tb.h5", "cr\rb.h5", "a\udcffb.h5", "a\udcc0\udcafb.h5"):
+            with self.subTest(name=name):
+                try:
+                    r = run(ok + ["--out", name], self.dir, errors="backslashreplace")
+                    self.assertEqual(r.returncode, 2, r.stderr)
+                    self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                    self.assertIn("--out and --voxels: the name of --out goes into the XDMF "
+                                  "companion, which XML cannot hold", r.stderr)
+                    self.assertEqual(os.listdir(self.dir), [])
+                finally:
+                    for name in os.listdir(self.dir):
+                        os.remove(os.path.join(self.dir, name))
+        # without --voxels, no XML: the name is the file system's business
+        r = run(ok[:-2] + ["--out", "a\nb.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(os.listdir(self.dir), ["a\nb.h5"])
+
     def test_bad_files(self):
         ok = ["--n", "100", "--fraction", "0.2", "--method", "rsa"]
         # an output that cannot be written

@@ -438,6 +438,43 @@ static void join(char *buf, size_t size, int count, char const *fmt, double cons
   }
 }
 
+int io_xml_name(char const *path) {
+  unsigned char const *p = (unsigned char const *)base_name(path);
+  while (*p) {
+    unsigned const b = *p;
+    int const more = b < 0x80 ? 0 : (b & 0xe0) == 0xc0 ? 1 : (b & 0xf0) == 0xe0 ? 2
+                     : (b & 0xf8) == 0xf0                ? 3
+                                                         : -1;
+    if (b < 0x20 || more < 0) return 0;
+    unsigned long c = more == 0 ? b : b & (0x3f >> more);
+    for (int k = 1; k <= more; k++) {
+      if ((p[k] & 0xc0) != 0x80) return 0;
+      c = c << 6 | (p[k] & 0x3f);
+    }
+    /* the shortest form; no surrogate; XML 1.0's Char */
+    static unsigned long const least[4] = {0, 0x80, 0x800, 0x10000};
+    if (c < least[more] || c > 0x10ffff || (c >= 0xd800 && c <= 0xdfff) || c == 0xfffe ||
+        c == 0xffff)
+      return 0;
+    p += 1 + more;
+  }
+  return 1;
+}
+
+/* s into f with & < > " ' as XML's entities: text or an attribute value. */
+static void put_xml(FILE *f, char const *s) {
+  for (; *s; s++) {
+    switch (*s) {
+      case '&': fputs("&amp;", f); break;
+      case '<': fputs("&lt;", f); break;
+      case '>': fputs("&gt;", f); break;
+      case '"': fputs("&quot;", f); break;
+      case '\'': fputs("&apos;", f); break;
+      default: fputc(*s, f);
+    }
+  }
+}
+
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
                   char *err, size_t size) {
   int fd;
@@ -460,11 +497,12 @@ int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
   /* XDMF lists dimensions slowest first (z y x; 2D: y x): the image's first
    * index, along x, is ParaView's Z (3D) or Y (2D) (docs/microstructures.rst,
    * "ParaView"). 2D: a 2DCoRectMesh with ORIGIN_DXDY (XDMF 3, Topology and
-   * Geometry). */
+   * Geometry). The name of the HDF5 file is escaped (put_xml()), and not in
+   * the comment, where "--" is not allowed. */
   fprintf(f,
           "<?xml version=\"1.0\" ?>\n"
-          "<!-- pw85-pack %s: the voxel image of %s (docs: \"Microstructures for FFT "
-          "solvers and viewers\"). -->\n"
+          "<!-- pw85-pack %s: the voxel image of the HDF5 file below (docs: "
+          "\"Microstructures for FFT solvers and viewers\"). -->\n"
           "<Xdmf Version=\"3.0\">\n"
           "  <Domain>\n"
           "    <Grid Name=\"image\" GridType=\"Uniform\">\n"
@@ -477,14 +515,16 @@ int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
           "      </Geometry>\n"
           "      <Attribute Name=\"phase\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
           "        <DataItem Dimensions=\"%s\" NumberType=\"Int\" Precision=\"4\" "
-          "Format=\"HDF\">%s:/image</DataItem>\n"
-          "      </Attribute>\n"
-          "    </Grid>\n"
-          "  </Domain>\n"
-          "</Xdmf>\n",
-          m->pw85_version, base_name(h5_path), dim, point_text,
-          dim == 3 ? "ORIGIN_DXDYDZ" : "ORIGIN_DXDY", dim, origin_text, dim, spacing_text,
-          cell_text, base_name(h5_path));
+          "Format=\"HDF\">",
+          m->pw85_version, dim, point_text, dim == 3 ? "ORIGIN_DXDYDZ" : "ORIGIN_DXDY", dim,
+          origin_text, dim, spacing_text, cell_text);
+  put_xml(f, base_name(h5_path));
+  fputs(":/image</DataItem>\n"
+        "      </Attribute>\n"
+        "    </Grid>\n"
+        "  </Domain>\n"
+        "</Xdmf>\n",
+        f);
   return finish_beside(f, tmp, fd, path, err, size);
 }
 

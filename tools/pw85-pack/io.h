@@ -46,6 +46,10 @@ int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t siz
  * ellipsoids). */
 int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size);
 void io_free(struct micro *m);
+/* 1 if the file name of path (its last component) can be written in an
+ * XML document (io_write_xdmf() escapes & < > " '): UTF-8, without control
+ * characters, which XML 1.0 does not allow even as references. 0 if not. */
+int io_xml_name(char const *path);
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
                   char *err, size_t size);
 int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size);

@@ -517,6 +517,10 @@ static int pack_main(int argc, char **argv) {
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors are reported by us */
   struct dim_ops const *d = o.dims;
 
+  if (o.voxels && !io_xml_name(o.out))
+    return bad_argument("--out and --voxels: the name of --out goes into the XDMF "
+                        "companion, which XML cannot hold: a control character, or not "
+                        "UTF-8");
   if (o.voxels) {
     size_t const len = strlen(o.out);
     xdmf = malloc(len + 6);
