@@ -349,6 +349,23 @@ class Pack(ToolCase):
             # empty fields (strtok skipped them: 1,,1,1 read as 1,1,1)
             ({"--axes": "1,,1,1"}, "--axes"), ({"--axes": "1,1,1,"}, "--axes"),
             ({"--axes": ",1,1,1"}, "--axes"), ({"--axes": "1,1,,"}, "--axes"),
+            # numbers > 0 outside the range of the semi-axes: 1e-150 was
+            # blamed on --fraction ("would fill to -nan"), 1e150 was "not
+            # numbers > 0"
+            ({"--axes": "1e-150,1e-150,1e-150"}, "--axes: 1e-150 is outside the range of "
+             "the semi-axes, 1e-100 to 1e100, got '1e-150,1e-150,1e-150'"),
+            ({"--axes": "1,1,1e150"}, "--axes: 1e150 is outside the range"),
+            ({"--axes": "1e-320,1,1"}, "--axes: 1e-320 is outside the range"),
+            ({"--axes": "1,1e-400,1"}, "--axes: 1e-400 is outside the range"),
+            ({"--axes": "1,1,1e400"}, "--axes: 1e400 is outside the range"),
+            ({"--axes": "-1e-400,1,1"}, "--axes: expected three numbers > 0"),
+            # in range, but N of them at F need a box beyond a double
+            ({"--axes": "1e100,1e100,1e100", "--n": "100000000", "--fraction": "0.5"},
+             "--n, --axes and --fraction: 100000000 ellipsoids of semi-axes "
+             "1e100,1e100,1e100 at 0.5 need a box whose volume is beyond the range of a "
+             "double"),
+            ({"--n": "100000000", "--fraction": "1e-300"},
+             "100000000 ellipsoids of semi-axes 1,1,1 at 1e-300 need a box whose volume"),
             # a fraction whose box, rounded, 3 spheres fill to 1 or more: the
             # packer refused it with a generic "outside its documented domain"
             ({"--n": "3", "--fraction": "0.9999999999999999"},
@@ -375,6 +392,15 @@ class Pack(ToolCase):
                 self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
                 self.assertIn(message, r.stderr)
                 self.assertEqual(os.listdir(self.dir), [])
+        # the ends of the range of the semi-axes are packed
+        for axes in ("1e-100,1e-100,1e-100", "1e100,1e100,1e100"):
+            with self.subTest(axes=axes):
+                r = run(["--n", "10", "--fraction", "0.3", "--axes", axes, "--out", "e.h5"],
+                        self.dir)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                with h5py.File(os.path.join(self.dir, "e.h5"), "r") as f:
+                    self.assertAlmostEqual(f.attrs["packing_fraction"], 0.3, delta=1e-15)
+                os.remove(os.path.join(self.dir, "e.h5"))
         for argv, message in [(["--fraction", "0.2", "--out", "x.h5"], "--n"),
                               (["--n", "10", "--out", "x.h5"], "--fraction"),
                               (["--n", "10", "--fraction", "0.2"], "--out"),
@@ -384,6 +410,152 @@ class Pack(ToolCase):
                 self.assertEqual(r.returncode, 2, r.stderr)
                 self.assertIn(message, r.stderr)
                 self.assertEqual(os.listdir(self.dir), [])
+
+    def test_colliding_outputs(self):
+        """Two outputs naming one file, however spelt: refused (one line
+        naming both options, exit status 2, nothing written). They were
+        written one over the other with exit status 0: --out x.xdmf
+        --voxels M left an HDF5 file replaced by its own XDMF."""
+        ok = ["--n", "50", "--fraction", "0.2", "--method", "rsa"]
+        os.mkdir(os.path.join(self.dir, "sub"))
+        os.symlink(".", os.path.join(self.dir, "here"))
+        with open(os.path.join(self.dir, "real.h5"), "w") as f:
+            f.write("untouched\n")
+        os.symlink("real.h5", os.path.join(self.dir, "link.h5"))
+        before = sorted(os.listdir(self.dir))
+        absolute = os.path.join(os.path.realpath(self.dir), "a.h5")
+        cases = [
+            (["--out", "col.xdmf", "--voxels", "8"], "--out and --voxels"),
+            (["--2d", "--out", "col.xdmf", "--voxels", "8"], "--out and --voxels"),
+            (["--out", "sub/col.xdmf", "--voxels", "8"], "--out and --voxels"),
+            (["--out", "a.h5", "--xyz", "a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "./a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "sub/../a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "here/a.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", absolute], "--out and --xyz"),
+            (["--out", "real.h5", "--xyz", "link.h5"], "--out and --xyz"),
+            (["--out", "a.h5", "--xyz", "a.xdmf", "--voxels", "8"], "--xyz and --voxels"),
+            (["--out", "a.h5", "--xyz", "here/a.xdmf", "--voxels", "8"],
+             "--xyz and --voxels"),
+            (["--out", "sub/a", "--xyz", "sub/a.xdmf", "--voxels", "8"],
+             "--xyz and --voxels"),
+        ]
+        for argv, message in cases:
+            with self.subTest(argv=argv):
+                r = run(ok + argv, self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(sorted(os.listdir(self.dir)), before)
+                self.assertEqual(os.listdir(os.path.join(self.dir, "sub")), [])
+        with open(os.path.join(self.dir, "real.h5")) as f:
+            self.assertEqual(f.read(), "untouched\n")
+        # the file to resume: --out may replace it, not --xyz or the XDMF
+        r = run(ok + ["--out", "p.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(self.dir, "p.h5"), "rb") as f:
+            packed = f.read()
+        shutil.copy(os.path.join(self.dir, "p.h5"), os.path.join(self.dir, "q.xdmf"))
+        for argv, message in [
+                (["--resume", "p.h5", "--out", "y.h5", "--xyz", "p.h5"], "--xyz and --resume"),
+                (["--resume", "p.h5", "--out", "y.h5", "--xyz", "here/p.h5"],
+                 "--xyz and --resume"),
+                (["--resume", "p.h5", "--out", "p.h5", "--xyz", "./p.h5"], "--out and --xyz"),
+                (["--resume", "q.xdmf", "--out", "q.h5", "--voxels", "4"],
+                 "--voxels and --resume"),
+                (["--resume", "p.h5", "--out", "p.h5", "--voxels", "4", "--xyz", "p.xdmf"],
+                 "--xyz and --voxels")]:
+            with self.subTest(resume=argv):
+                r = run(argv + ["--n", "60"], self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                for name in ("p.h5", "q.xdmf"):
+                    with open(os.path.join(self.dir, name), "rb") as f:
+                        self.assertEqual(f.read(), packed, name)
+        os.remove(os.path.join(self.dir, "q.xdmf"))
+        # distinct names are accepted, and so is resuming in place
+        r = run(["--resume", "p.h5", "--n", "60", "--out", "p.h5", "--xyz", "p.xyz",
+                 "--voxels", "4"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with h5py.File(os.path.join(self.dir, "p.h5"), "r") as f:
+            self.assertEqual(f["centres"].shape, (60, 3))
+        ET.parse(os.path.join(self.dir, "p.xdmf"))
+        self.assertEqual(ase.io.read(os.path.join(self.dir, "p.xyz"),
+                                     format="extxyz").positions.shape, (60, 3))
+
+    def test_resume_fraction(self):
+        """--fraction under --resume: the target of the file's box and the
+        target count, or refused (exit status 2, one line, nothing written)
+        as a differing --seed is; it was ignored, with exit status 0."""
+        ok = ["--method", "rsa", "--seed", "4"]
+        r = run(ok + ["--n", "100", "--fraction", "0.2", "--out", "p.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for argv, message in [
+                (["--fraction", "0.3"], "--fraction: 0.3 differs from the target of p.h5 "
+                 "(100 ellipsoids in its box: 0.2); with --resume, --n sets the target"),
+                (["--fraction", "0.2000001"], "--fraction: 0.2000001 differs"),
+                (["--n", "150", "--fraction", "0.2"],
+                 "--fraction: 0.2 differs from the target of p.h5 (150 ellipsoids in its "
+                 "box: 0.3)")]:
+            with self.subTest(argv=argv):
+                r = run(["--resume", "p.h5", "--out", "y.h5"] + argv, self.dir)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(os.listdir(self.dir), ["p.h5"])
+        # the fraction of the file, or of its box with the count of --n
+        for argv, count in [(["--fraction", "0.2"], 100),
+                            (["--n", "150", "--fraction", "0.3"], 150)]:
+            with self.subTest(argv=argv):
+                r = run(["--resume", "p.h5", "--out", "y.h5"] + argv, self.dir)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                with h5py.File(os.path.join(self.dir, "y.h5"), "r") as f:
+                    self.assertEqual(f["centres"].shape, (count, 3))
+                    self.assertAlmostEqual(f.attrs["packing_fraction"], count / 500,
+                                           delta=1e-15)
+
+    def test_xdmf_names(self):
+        """The XDMF companion well-formed XML (xml.etree) for any name of
+        --out that XML can hold, and naming it: "--" went into its comment,
+        & and < into its text, unescaped. Names that XML cannot hold (control
+        characters, not UTF-8) refused with --voxels (one line, exit status
+        2, nothing written)."""
+        ok = ["--n", "20", "--fraction", "0.2", "--method", "rsa", "--voxels", "4"]
+        for dim in ([], ["--2d"]):
+            for stem in ("run--1", "a&b", "a<b>c", "q\"u'o", "a]]>b", "x&amp;y",
+                         "\u00e9--\u00fc", "-->"):
+                with self.subTest(stem=stem, dim=dim):
+                    try:
+                        r = run(ok + dim + ["--out", stem + ".h5"], self.dir)
+                        self.assertEqual(r.returncode, 0, r.stderr)
+                        self.assertEqual(sorted(os.listdir(self.dir)),
+                                         sorted([stem + ".h5", stem + ".xdmf"]))
+                        path = os.path.join(self.dir, stem + ".xdmf")
+                        root = ET.parse(path).getroot()
+                        data = root.find("./Domain/Grid/Attribute/DataItem")
+                        self.assertEqual(data.get("Format"), "HDF")
+                        self.assertEqual(data.text, stem + ".h5:/image")
+                    finally:
+                        for name in os.listdir(self.dir):
+                            os.remove(os.path.join(self.dir, name))
+        # "\udcff": the byte 0xff (os.fsencode); 0xc0 0xaf: "/" overlong
+        for name in ("a\nb.h5", "tab\tb.h5", "cr\rb.h5", "a\udcffb.h5", "a\udcc0\udcafb.h5"):
+            with self.subTest(name=name):
+                try:
+                    r = run(ok + ["--out", name], self.dir, errors="backslashreplace")
+                    self.assertEqual(r.returncode, 2, r.stderr)
+                    self.assertEqual(len(r.stderr.splitlines()), 1, r.stderr)
+                    self.assertIn("--out and --voxels: the name of --out goes into the XDMF "
+                                  "companion, which XML cannot hold", r.stderr)
+                    self.assertEqual(os.listdir(self.dir), [])
+                finally:
+                    for name in os.listdir(self.dir):
+                        os.remove(os.path.join(self.dir, name))
+        # without --voxels, no XML: the name is the file system's business
+        r = run(ok[:-2] + ["--out", "a\nb.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(os.listdir(self.dir), ["a\nb.h5"])
 
     def test_bad_files(self):
         ok = ["--n", "100", "--fraction", "0.2", "--method", "rsa"]

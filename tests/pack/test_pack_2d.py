@@ -418,8 +418,8 @@ class Pack2D(ToolCase):
         r = run(["--help"], self.dir)
         self.assertEqual(r.returncode, 0)
         self.assertIn("--2d", r.stdout)
-        self.assertIn("--axes A,B,C      semi-axes (> 0, default 1,1,1; with --2d: A,B",
-                      r.stdout)
+        self.assertIn("--axes A,B,C      semi-axes (1e-100 to 1e100, default 1,1,1; with "
+                      "--2d: A,B,", r.stdout)
 
     def test_progress_bar_in_tmux(self):
         self.check_progress_bar("--2d --n 2000 --fraction 0.95 --axes 1,0.5",
@@ -434,6 +434,12 @@ class Pack2D(ToolCase):
             (["--axes", "1"], "--axes: expected two numbers > 0"),
             (["--axes", "1,"], "--axes: expected two numbers > 0"),
             (["--axes", "1,0"], "--axes: expected two numbers > 0"),
+            (["--axes", "1e-150,1e-150"], "--axes: 1e-150 is outside the range of the "
+             "semi-axes, 1e-100 to 1e100, got '1e-150,1e-150'"),
+            (["--axes", "1e150,1"], "--axes: 1e150 is outside the range"),
+            (["--axes", "1e100,1e100", "--fraction", "1e-200"],
+             "--n, --axes and --fraction: 100 ellipses of semi-axes 1e100,1e100 at 1e-200 "
+             "need a box whose area is beyond the range of a double"),
             (["--voxels", "65537"], "--voxels: expected an integer from 1 to 65536 (--2d)"),
             (["--voxels", "0"], "--voxels: expected an integer from 1 to 65536 (--2d)"),
             (["--n", "1", "--fraction", "0.5"], "--n: 1 ellipses give a box of side"),
@@ -454,6 +460,22 @@ class Pack2D(ToolCase):
         self.assertIn("--axes: expected three numbers > 0 separated by commas, got '1,0.5'",
                       r.stderr)
         self.assertEqual(os.listdir(self.dir), [])
+
+    def test_resume_fraction(self):
+        # as in 3D: a --fraction other than the target of the file's box and
+        # count refused (it was ignored: exit status 0 at 0.4), the same
+        # accepted
+        r = run(["--2d", "--n", "300", "--axes", "1,0.4", "--fraction", "0.4", "--seed", "2",
+                 "--method", "rsa", "--out", "p2.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        r = run(["--2d", "--resume", "p2.h5", "--fraction", "0.5", "--out", "o.h5"], self.dir)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertEqual(r.stderr, "pw85-pack: --fraction: 0.5 differs from the target of "
+                         "p2.h5 (300 ellipses in its box: 0.4); with --resume, --n sets the "
+                         "target (see --help)\n")
+        self.assertEqual(os.listdir(self.dir), ["p2.h5"])
+        r = run(["--2d", "--resume", "p2.h5", "--fraction", "0.4", "--out", "o.h5"], self.dir)
+        self.assertEqual(r.returncode, 0, r.stderr)
 
     def test_resume_other_dimension(self):
         # --2d anywhere on the line (here after --axes A,B)

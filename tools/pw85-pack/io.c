@@ -72,6 +72,41 @@ int io_check_writable(char const *path, char *err, size_t size) {
   return 0;
 }
 
+/* The directory part of path ("." without one, "/" for "/name") into dir. */
+static void dir_of(char const *path, char *dir, size_t size) {
+  char const *slash = strrchr(path, '/');
+  if (slash == NULL)
+    snprintf(dir, size, ".");
+  else if (slash == path)
+    snprintf(dir, size, "/");
+  else
+    snprintf(dir, size, "%.*s", (int)(slash - path), path);
+}
+
+int io_same_file(char const *a, char const *b) {
+  if (strcmp(a, b) == 0) return 1;
+  struct stat sa, sb;
+  /* two names of one existing file (a link, another spelling) */
+  if (stat(a, &sa) == 0 && stat(b, &sb) == 0)
+    return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+  /* not there yet: one name in one directory, spelt two ways (./x, d/../x) */
+  char const *sa_base = strrchr(a, '/'), *sb_base = strrchr(b, '/');
+  if (strcmp(sa_base ? sa_base + 1 : a, sb_base ? sb_base + 1 : b) != 0) return 0;
+  size_t const size = (strlen(a) > strlen(b) ? strlen(a) : strlen(b)) + 2;
+  char *da = malloc(size), *db = malloc(size);
+  int same = 0;
+  if (da != NULL && db != NULL) {
+    dir_of(a, da, size), dir_of(b, db, size);
+    same = stat(da, &sa) == 0 && stat(db, &sb) == 0
+               ? sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino
+               : strcmp(da, db) == 0;
+  } else {
+    same = 1; /* out of memory: refuse rather than risk a file */
+  }
+  free(da), free(db);
+  return same;
+}
+
 /* ---- HDF5 ---- */
 
 /* The dataset of the orientations. */
@@ -403,6 +438,43 @@ static void join(char *buf, size_t size, int count, char const *fmt, double cons
   }
 }
 
+int io_xml_name(char const *path) {
+  unsigned char const *p = (unsigned char const *)base_name(path);
+  while (*p) {
+    unsigned const b = *p;
+    int const more = b < 0x80 ? 0 : (b & 0xe0) == 0xc0 ? 1 : (b & 0xf0) == 0xe0 ? 2
+                     : (b & 0xf8) == 0xf0                ? 3
+                                                         : -1;
+    if (b < 0x20 || more < 0) return 0;
+    unsigned long c = more == 0 ? b : b & (0x3f >> more);
+    for (int k = 1; k <= more; k++) {
+      if ((p[k] & 0xc0) != 0x80) return 0;
+      c = c << 6 | (p[k] & 0x3f);
+    }
+    /* the shortest form; no surrogate; XML 1.0's Char */
+    static unsigned long const least[4] = {0, 0x80, 0x800, 0x10000};
+    if (c < least[more] || c > 0x10ffff || (c >= 0xd800 && c <= 0xdfff) || c == 0xfffe ||
+        c == 0xffff)
+      return 0;
+    p += 1 + more;
+  }
+  return 1;
+}
+
+/* s into f with & < > " ' as XML's entities: text or an attribute value. */
+static void put_xml(FILE *f, char const *s) {
+  for (; *s; s++) {
+    switch (*s) {
+      case '&': fputs("&amp;", f); break;
+      case '<': fputs("&lt;", f); break;
+      case '>': fputs("&gt;", f); break;
+      case '"': fputs("&quot;", f); break;
+      case '\'': fputs("&apos;", f); break;
+      default: fputc(*s, f);
+    }
+  }
+}
+
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
                   char *err, size_t size) {
   int fd;
@@ -425,11 +497,12 @@ int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
   /* XDMF lists dimensions slowest first (z y x; 2D: y x): the image's first
    * index, along x, is ParaView's Z (3D) or Y (2D) (docs/microstructures.rst,
    * "ParaView"). 2D: a 2DCoRectMesh with ORIGIN_DXDY (XDMF 3, Topology and
-   * Geometry). */
+   * Geometry). The name of the HDF5 file is escaped (put_xml()), and not in
+   * the comment, where "--" is not allowed. */
   fprintf(f,
           "<?xml version=\"1.0\" ?>\n"
-          "<!-- pw85-pack %s: the voxel image of %s (docs: \"Microstructures for FFT "
-          "solvers and viewers\"). -->\n"
+          "<!-- pw85-pack %s: the voxel image of the HDF5 file below (docs: "
+          "\"Microstructures for FFT solvers and viewers\"). -->\n"
           "<Xdmf Version=\"3.0\">\n"
           "  <Domain>\n"
           "    <Grid Name=\"image\" GridType=\"Uniform\">\n"
@@ -442,14 +515,16 @@ int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
           "      </Geometry>\n"
           "      <Attribute Name=\"phase\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
           "        <DataItem Dimensions=\"%s\" NumberType=\"Int\" Precision=\"4\" "
-          "Format=\"HDF\">%s:/image</DataItem>\n"
-          "      </Attribute>\n"
-          "    </Grid>\n"
-          "  </Domain>\n"
-          "</Xdmf>\n",
-          m->pw85_version, base_name(h5_path), dim, point_text,
-          dim == 3 ? "ORIGIN_DXDYDZ" : "ORIGIN_DXDY", dim, origin_text, dim, spacing_text,
-          cell_text, base_name(h5_path));
+          "Format=\"HDF\">",
+          m->pw85_version, dim, point_text, dim == 3 ? "ORIGIN_DXDYDZ" : "ORIGIN_DXDY", dim,
+          origin_text, dim, spacing_text, cell_text);
+  put_xml(f, base_name(h5_path));
+  fputs(":/image</DataItem>\n"
+        "      </Attribute>\n"
+        "    </Grid>\n"
+        "  </Domain>\n"
+        "</Xdmf>\n",
+        f);
   return finish_beside(f, tmp, fd, path, err, size);
 }
 

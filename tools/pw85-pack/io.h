@@ -36,12 +36,20 @@ struct micro {
 };
 
 int io_check_writable(char const *path, char *err, size_t size);
+/* 1 if the paths a and b name one file: the same string; two names of one
+ * existing file (stat: device and inode); or, the file absent, the same
+ * name in the same directory (stat of the directories). 0 otherwise. */
+int io_same_file(char const *a, char const *b);
 int io_write_hdf5(char const *path, struct micro const *m, char *err, size_t size);
 /* Reads the layout (without /image), 3D or 2D by its attribute dimension
  * (none: 3D); validates types and shapes, and sizes (at most IO_MAX_COUNT
  * ellipsoids). */
 int io_read_hdf5(char const *path, struct micro *m, char *err, size_t size);
 void io_free(struct micro *m);
+/* 1 if the file name of path (its last component) can be written in an
+ * XML document (io_write_xdmf() escapes & < > " '): UTF-8, without control
+ * characters, which XML 1.0 does not allow even as references. 0 if not. */
+int io_xml_name(char const *path);
 int io_write_xdmf(char const *path, char const *h5_path, struct micro const *m,
                   char *err, size_t size);
 int io_write_xyz(char const *path, struct micro const *m, char *err, size_t size);

@@ -47,7 +47,8 @@ static char const usage[] =
     "certified configuration and its true packing fraction.\n"
     "\n"
     "  --n N             number of ellipsoids (1 to 100000000)\n"
-    "  --axes A,B,C      semi-axes (> 0, default 1,1,1; with --2d: A,B, default 1,1)\n"
+    "  --axes A,B,C      semi-axes (1e-100 to 1e100, default 1,1,1; with --2d: A,B,\n"
+    "                    default 1,1)\n"
     "  --fraction F      target packing fraction, 0 < F < 1 (sets the box)\n"
     "  --2d              ellipses instead (pw85_2d_pack(), the index of ellipses):\n"
     "                    the files in their 2D layout (docs), the XYZ in the plane\n"
@@ -62,7 +63,9 @@ static char const usage[] =
     "  --time-limit S    stop packing after S seconds (> 0) and write what is there\n"
     "  --resume FILE     continue the packing in FILE (written by pw85-pack\n"
     "                    --method rsa): its box, axes, seed and method; --n may\n"
-    "                    raise the count; --2d for a file of ellipses, only then\n"
+    "                    raise the count, and with it the fraction (--fraction,\n"
+    "                    if given, must be the one of that box and count); --2d\n"
+    "                    for a file of ellipses, only then\n"
     "  --method NAME     packing method: fire (default; pw85_pack(): overlaps\n"
     "                    relaxed by FIRE, dense, jamming) or rsa (random sequential\n"
     "                    addition: fast, saturates at lower fractions, resumable)\n"
@@ -71,7 +74,8 @@ static char const usage[] =
     "\n"
     "Exit status: 0 done; 3 stopped early (time limit, jammed, saturated), files\n"
     "written; 130 interrupted (Ctrl-C), the last certified configuration written;\n"
-    "2 a bad argument; 1 another error. Files are written whole or not at all.\n";
+    "2 a bad argument (two outputs that name one file among them); 1 another error.\n"
+    "Files are written whole or not at all.\n";
 
 static char const *prog = "pw85-pack";
 
@@ -114,21 +118,39 @@ static int rounds_up_to_one(char const *s) {
   return down < 1.0;
 }
 
+/* The range of the semi-axes: their products (a volume, N of them over the
+ * fraction) stay normal doubles, far from underflow (1e-150 made the
+ * volume 0, and the fraction of the box 0/0). */
+#define AXIS_MIN 1e-100
+#define AXIS_MAX 1e100
+
 /* Exactly `count` fields separated by commas, none empty, each a number
- * > 0 and <= 1e100 (strtok would skip empty fields: 1,,1,1 as 1,1,1). */
-static int parse_axes(char const *s, double *axes, int count) {
+ * from AXIS_MIN to AXIS_MAX (strtok would skip empty fields: 1,,1,1 as
+ * 1,1,1): 0; -1 if a field is not a number > 0; 1 if it is one outside
+ * the range (1e-400 and 1e400 included, which strtod() rounds to 0 and
+ * infinity), copied into bad. */
+static int parse_axes(char const *s, double *axes, int count, char *bad, size_t bad_size) {
   char buf[256];
   char const *p = s;
   for (int k = 0; k < count; k++) {
     char const *comma = strchr(p, ',');
     size_t const len = comma != NULL ? (size_t)(comma - p) : strlen(p);
-    if ((comma != NULL) != (k < count - 1) || len == 0 || len >= sizeof buf) return 0;
+    if ((comma != NULL) != (k < count - 1) || len == 0 || len >= sizeof buf) return -1;
     memcpy(buf, p, len);
     buf[len] = '\0';
-    if (!parse_double(buf, &axes[k]) || !(axes[k] > 0) || axes[k] > 1e100) return 0;
+    char *end;
+    errno = 0;
+    axes[k] = strtod(buf, &end);
+    int const underflow = errno == ERANGE && axes[k] == 0 && !signbit(axes[k]);
+    if (end == buf || *end != '\0' || isnan(axes[k]) || !(axes[k] > 0 || underflow))
+      return -1;
+    if (!(axes[k] >= AXIS_MIN && axes[k] <= AXIS_MAX)) {
+      snprintf(bad, bad_size, "%s", buf);
+      return 1;
+    }
     p = comma != NULL ? comma + 1 : p + len;
   }
-  return 1;
+  return 0;
 }
 
 static int parse_u64(char const *s, uint64_t *x) {
@@ -238,9 +260,16 @@ static int parse(int argc, char **argv, struct options *o) {
     }
   }
   int const dim = o->dims->dim;
-  if (o->axes_text && !parse_axes(o->axes_text, o->axes, dim))
+  char bad[256];
+  int const axes_status =
+      o->axes_text ? parse_axes(o->axes_text, o->axes, dim, bad, sizeof bad) : 0;
+  if (axes_status < 0)
     return bad_argument("--axes: expected %s numbers > 0 separated by commas%s, got '%s'",
                         dim == 3 ? "three" : "two", dim == 3 ? "" : " (--2d)", o->axes_text);
+  if (axes_status > 0)
+    return bad_argument("--axes: %s is outside the range of the semi-axes, 1e-100 to 1e100, "
+                        "got '%s'",
+                        bad, o->axes_text);
   if (o->voxels_text) {
     /* 4096³ and 65536² int32: 256 GiB and 16 GiB */
     uint64_t const most = dim == 3 ? 4096 : 65536;
@@ -441,6 +470,18 @@ static int resume(struct options const *o, struct pack_config *cf, char *method,
     return bad_argument("--n: %zu is fewer than the %zu %s of %s", o->n, r.count, d->shapes,
                         o->resume);
   }
+  /* --fraction, as --axes and --seed: the file's box and the target count
+   * set the target fraction; a differing one is refused, not ignored. The
+   * same fraction within 16ε (the box of a fresh run, its side rounded,
+   * gives back the fraction asked for within 7ε: measured, 200 000 random
+   * counts, axes and fractions, 3D and 2D). */
+  double const target_phi = (double)cf->target * d->measure(a) / box_measure(d, r.box);
+  if (o->have_fraction && !(fabs(o->fraction - target_phi) <= 16 * DBL_EPSILON * target_phi)) {
+    io_free(&r);
+    return bad_argument("--fraction: %s differs from the target of %s (%zu %s in its box: "
+                        "%.6g); with --resume, --n sets the target",
+                        o->fraction_text, o->resume, cf->target, d->shapes, target_phi);
+  }
   if (!alloc_state(&st, d, cf->target)) {
     io_free(&r);
     return error("out of memory");
@@ -476,10 +517,10 @@ static int pack_main(int argc, char **argv) {
   H5Eset_auto2(H5E_DEFAULT, NULL, NULL); /* errors are reported by us */
   struct dim_ops const *d = o.dims;
 
-  /* The output directories can be written (before any work). */
-  char err[1024];
-  if (io_check_writable(o.out, err, sizeof err) != 0) return error("--out: %s", err);
-  if (o.xyz && io_check_writable(o.xyz, err, sizeof err) != 0) return error("--xyz: %s", err);
+  if (o.voxels && !io_xml_name(o.out))
+    return bad_argument("--out and --voxels: the name of --out goes into the XDMF "
+                        "companion, which XML cannot hold: a control character, or not "
+                        "UTF-8");
   if (o.voxels) {
     size_t const len = strlen(o.out);
     xdmf = malloc(len + 6);
@@ -488,6 +529,34 @@ static int pack_main(int argc, char **argv) {
     char *dot = strrchr(xdmf, '.'), *slash = strrchr(xdmf, '/');
     if (dot != NULL && (slash == NULL || dot > slash)) *dot = '\0';
     strcat(xdmf, ".xdmf");
+  }
+  /* Two outputs (or an output and the file to resume, which only --out may
+   * replace) that name one file: the second written would replace the
+   * first. */
+  if (o.xyz && io_same_file(o.out, o.xyz))
+    return bad_argument("--out and --xyz name the same file (%s): give each its own", o.xyz);
+  if (xdmf && io_same_file(o.out, xdmf))
+    return bad_argument("--out and --voxels name the same file (%s, the XDMF companion of "
+                        "--out): give --out another extension, such as .h5",
+                        xdmf);
+  if (xdmf && o.xyz && io_same_file(o.xyz, xdmf))
+    return bad_argument("--xyz and --voxels name the same file (%s, the XDMF companion of "
+                        "--out): give --xyz another name",
+                        xdmf);
+  if (o.resume && o.xyz && io_same_file(o.resume, o.xyz))
+    return bad_argument("--xyz and --resume name the same file (%s): the XYZ would replace "
+                        "the packing to resume",
+                        o.xyz);
+  if (o.resume && xdmf && io_same_file(o.resume, xdmf))
+    return bad_argument("--voxels and --resume name the same file (%s, the XDMF companion "
+                        "of --out): the XDMF would replace the packing to resume",
+                        xdmf);
+
+  /* The output directories can be written (before any work). */
+  char err[1024];
+  if (io_check_writable(o.out, err, sizeof err) != 0) return error("--out: %s", err);
+  if (o.xyz && io_check_writable(o.xyz, err, sizeof err) != 0) return error("--xyz: %s", err);
+  if (o.voxels) {
     if (io_check_writable(xdmf, err, sizeof err) != 0) return error("--voxels: %s", err);
     double const need = 4.0 * dim_voxels(d, o.voxels);
     double const have = available_memory();
@@ -506,8 +575,14 @@ static int pack_main(int argc, char **argv) {
     if (status != 0) return status;
   } else {
     double const v = d->measure(o.axes);
-    double const side = d->dim == 3 ? cbrt((double)o.n * v / o.fraction)
-                                    : sqrt((double)o.n * v / o.fraction);
+    double const whole = (double)o.n * v / o.fraction; /* the box's volume (area) */
+    if (!isfinite(whole))
+      return bad_argument("--n, --axes and --fraction: %zu %s of semi-axes %s at %s need a "
+                          "box whose %s is beyond the range of a double",
+                          o.n, d->shapes,
+                          o.axes_text ? o.axes_text : d->dim == 3 ? "1,1,1" : "1,1",
+                          o.fraction_text, d->dim == 3 ? "volume" : "area");
+    double const side = d->dim == 3 ? cbrt(whole) : sqrt(whole);
     double const box[3] = {side, side, side};
     /* The packing fraction of the box as the methods compute it (pack.h:
      * from the sides): rounding can take it to 1 or beyond near 1, where
