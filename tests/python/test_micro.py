@@ -245,6 +245,10 @@ def test_xdmf(tmp_path):
         odd = ET.parse(tmp_path / "odd.xdmf").getroot()
         assert odd.find("./Domain/Grid/Attribute/DataItem").text == name + ":/image"
     (tmp_path / "odd.xdmf").unlink()
+    # names XML 1.0 cannot hold are refused, nothing written (pw85-pack too)
+    for name in ("a\x01b.h5", "tab\x0b.h5", b"\xff.h5"):
+        with pytest.raises(ValueError, match="XML"):
+            micro.write_xdmf(tmp_path / "odd.xdmf", name, (2, 2, 2), [1.0, 1.0, 1.0])
     # dims: three integers from 1 (a zero count made a spacing of L/0),
     # refused before anything is written
     for dims in ((0, 11, 12), (10, 0, 12), (10, 11, -1), (10, 11), 0):

@@ -511,6 +511,11 @@ def read_hdf5(path, *, image: bool = True) -> Microstructure:
                               extra=extra, **arrays)
 
 
+# The characters outside XML 1.0's Char production (surrogates included:
+# os.fsdecode() gives them for bytes that are not UTF-8).
+_XML_BAD = re.compile("[^\t\n\r\u0020-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+
+
 def write_xdmf(path, h5_path, dims: Sequence[int], box: ArrayLike,
                origin: Optional[ArrayLike] = None) -> None:
     """The XDMF companion of an HDF5 file's /image, for ParaView (XDMF lists
@@ -536,8 +541,13 @@ def write_xdmf(path, h5_path, dims: Sequence[int], box: ArrayLike,
 
     def join(fmt, values):
         return " ".join(fmt % v for v in values)
-    # the file name as XML text (a name may hold & < >)
-    name = xml_escape(os.path.basename(os.fspath(h5_path)))
+    # the file name as XML text (a name may hold & < >); a character XML
+    # 1.0 cannot hold (a control character, an undecodable byte) refused
+    base = os.path.basename(os.fsdecode(h5_path))
+    if _XML_BAD.search(base):
+        raise ValueError("h5_path: %r holds a character that XML cannot "
+                         "hold" % (base,))
+    name = xml_escape(base)
     text = (
         '<?xml version="1.0" ?>\n'
         '<Xdmf Version="3.0">\n'
