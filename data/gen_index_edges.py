@@ -9,9 +9,9 @@ that path where the decision is closest (tests/test-index-edges.c).
 
 For each base pair (forms as in gen_tangency_edges.py) and each target
 mu^2 = 1 + k eps, the image vector r* reaching it is computed at 120 digits,
-then the centres are placed so that the exact r misses r* by about 2^-24
-ulps of r* only: the query's centre c is r* (open domain) or L - r* (a
-periodic box, shift n = (1, ..., 1)) times 1 + delta, |delta| ~ 2^-25,
+then the centres are placed so that the exact r misses r* by about 2^-25
+ulp of r* only: the query's centre c = n L - r* (1 + delta), |delta| in
+[2^-25, 2^-24], n = 0 in an open domain and (1, ..., 1) in a periodic box,
 rounded to doubles, and the stored centre c_j = r* + c - n L rounded to a
 double (a small number, whose bits reach far below ulp(r*)). The rows keep
 the exact r = c_j + n L - c (rationals), whose mu^2 - 1 is certified by the
@@ -134,7 +134,7 @@ def place(rng, dim, rstar, box):
 
 
 def box_for(rng, dim, rstar, q1, q2):
-    """Sides L_k: at least twice the reach of the pair along axis k, so that
+    """Sides L_k: 4 to 6 times the reach of the pair along axis k, so that
     only the image n = (1, ..., 1) comes near; not a power of two."""
     out = []
     for k in range(dim):

@@ -115,7 +115,6 @@ template <int D>
 PW85_INLINE void combine_td(double lambda, double const *q1, double const *q2,
                             double *hi, double *mid, double *lo) noexcept {
   dd const mu = two_sum(1.0, -lambda);
-  PW85_UNROLL
   for (int k = 0; k < sym_size(D); ++k) {
     dd const a = two_prod(mu.hi, q1[k]);
     dd const b = two_prod(mu.lo, q1[k]);
@@ -145,11 +144,11 @@ PW85_INLINE void combine_td(double lambda, double const *q1, double const *q2,
 // rounded the wrong way.) Q(λ) enters ρ to O(ε³) (combine_td()), with
 // r + r_lo and the products hi·s, hi·s_lo, mid·s split by two_prod; only
 // mid·s_lo and lo·s, themselves O(ε²)·|Q||s|, are rounded, and lo·s_lo,
-// O(ε³), is left out. An error δ in Q(λ)'s entries moves f by up to
-// δ·κ(Q(λ)) relative: combine_dd()'s hi + lo, δ = 2⁻¹⁰⁶, was not enough
-// (a held-out pair of the hard set's lambda_end_ill class, κ = 8.6e15:
-// f 2.4e-18 relative low, μ² 0.017 ulp across a midpoint, rounded the
-// wrong way).
+// O(ε³), is left out. An error δ in Q(λ)'s entries, relative to
+// (1 − λ)·|Q1| + λ·|Q2|, moves f by up to about 2δ·κ(Q(λ)) relative:
+// combine_dd()'s hi + lo, δ = 2⁻¹⁰⁶, was not enough (a held-out pair of
+// the hard set's lambda_end_ill class, κ = 8.6e15: f 2.4e-18 relative
+// low, μ² 0.017 ulp across a midpoint, rounded the wrong way).
 template <int D>
 PW85_INLINE dd refined_quad(double lambda, double const *q1, double const *q2,
                             double const *r, double const *r_lo,

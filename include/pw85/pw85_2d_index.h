@@ -282,7 +282,7 @@ PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
  *         range of a double (as pw85_2d_overlap()), or if, in a periodic
  *         rectangle, the images of a stored ellipse within reach of the
  *         candidate span more than 2²⁰ rectangles along an axis (a
- *         candidate about 2¹⁹ times longer than the rectangle: the queries
+ *         candidate whose half-length is about 2¹⁹ sides: the queries
  *         enumerate every image); PW85_ENOMEM (not expected, as
  *         pw85_2d_overlap()). The outputs are written on success only.
  * @since 2.5.0

@@ -289,8 +289,8 @@ PW85_API int pw85_index_get(pw85_index const *index, size_t id,
  *         box; PW85_ERANGE if a pair's forms span more than the range of
  *         a double (as pw85_overlap()), or if, in a periodic box, the
  *         images of a stored ellipsoid within reach of the candidate span
- *         more than 2²⁰ boxes along an axis (a candidate about 2¹⁹ times
- *         longer than the box: the queries enumerate every image);
+ *         more than 2²⁰ boxes along an axis (a candidate whose half-length
+ *         is about 2¹⁹ sides: the queries enumerate every image);
  *         PW85_ENOMEM (not expected, as pw85_overlap()). The outputs are
  *         written on success only.
  * @since 2.2.0

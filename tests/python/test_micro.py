@@ -200,12 +200,13 @@ def test_hdf5_round_trip(tmp_path):
         assert f.attrs["seed"] == 2**64 - 3 and f.attrs["seed"].dtype == np.uint64
         assert f.attrs["pw85_version"] == pypw85.__version__
         # different semi-axes: Σ of the doubles 4/3·π·a0·a1·a2, correctly
-        # rounded, over V rounded twice, then divided: within 2 ulps of the
-        # exact quotient (a bound: 0.5 + 2 × 0.5 + 0.5 ulps, to first order)
+        # rounded (u = 2⁻⁵³ relative), over V rounded twice (2u), then
+        # divided (u): within 4u of the exact quotient, to first order (a
+        # bound; measured 0.21u on this configuration)
         exact = sum(Fraction(4 / 3 * math.pi * x * y * z) for x, y, z in m.axes) / (
             Fraction(m.box[0]) * Fraction(m.box[1]) * Fraction(m.box[2]))
         got = f.attrs["packing_fraction"]
-        assert abs(Fraction(got) - exact) <= 2 * 2**-53 * exact
+        assert abs(Fraction(got) - exact) <= 4 * 2**-53 * exact
     r = micro.read_hdf5(path)
     for name in ("box", "centres", "forms", "axes", "quaternions", "image"):
         np.testing.assert_array_equal(getattr(r, name), getattr(m, name))
@@ -246,7 +247,7 @@ def test_xdmf(tmp_path):
         assert odd.find("./Domain/Grid/Attribute/DataItem").text == name + ":/image"
     (tmp_path / "odd.xdmf").unlink()
     # names XML 1.0 cannot hold are refused, nothing written (pw85-pack too)
-    for name in ("a\x01b.h5", "tab\x0b.h5", b"\xff.h5"):
+    for name in ("a\x01b.h5", "tab\x0b.h5", b"\xff.h5", "cr\rb.h5", "t\tb.h5"):
         with pytest.raises(ValueError, match="XML"):
             micro.write_xdmf(tmp_path / "odd.xdmf", name, (2, 2, 2), [1.0, 1.0, 1.0])
     # dims: three integers from 1 (a zero count made a spacing of L/0),

@@ -457,7 +457,7 @@ class _Index:
         d = self._dim
         for k, (q, side) in enumerate(zip(f[list(d.diagonal)], self.box)):
             half = math.sqrt(q) if q > 0 else 0.0
-            if half > _IMAGE_SPAN / 4 * side:
+            if half > _IMAGE_SPAN / 2 * (1.0 - 2.0**-4) * side:
                 return ("√Q_%d%d = %s against L_%d = %s: the candidate "
                         "reaches across about 2·√Q_%d%d/L_%d images of the "
                         "%s, and the queries, which enumerate every image, "

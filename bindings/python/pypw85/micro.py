@@ -511,9 +511,11 @@ def read_hdf5(path, *, image: bool = True) -> Microstructure:
                               extra=extra, **arrays)
 
 
-# The characters outside XML 1.0's Char production (surrogates included:
-# os.fsdecode() gives them for bytes that are not UTF-8).
-_XML_BAD = re.compile("[^\t\n\r\u0020-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
+# The characters of a file name refused in XML text: those outside XML
+# 1.0's Char production (surrogates included: os.fsdecode() gives them for
+# bytes that are not UTF-8), and tab, newline and carriage return, which a
+# parser normalises (pw85-pack refuses the same).
+_XML_BAD = re.compile("[^\u0020-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
 
 def write_xdmf(path, h5_path, dims: Sequence[int], box: ArrayLike,
