@@ -8,6 +8,7 @@
 #include <glib.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <pw85/pw85.hpp>
 #include <pw85/pw85_2d_index.hpp>
@@ -96,6 +97,18 @@ bool same(std::vector<double> const &a, double const *b, std::size_t n) {
 
 // pack() against the C function; a target the packer reaches, then one
 // beyond jamming for the callbacks.
+// A plain function as the pair energy: U = (1.4 − μ²)², as the lambda u of
+// the energy test; and as a progress callback that stops at once. (A
+// function named as the callable did not compile: its address is no
+// object pointer.)
+bool plain_energy(double mu2, double &U, double &dU) {
+  U = (1.4 - mu2) * (1.4 - mu2);
+  dU = -2.0 * (1.4 - mu2);
+  return true;
+}
+
+bool plain_stop(pw85_pack_progress const &) { return false; }
+
 template <class T>
 void check_pack(std::size_t n, double target, double beyond) {
   std::vector<double> const a = T::semi_axes(n);
@@ -140,6 +153,9 @@ void check_pack(std::size_t n, double target, double beyond) {
                           thrown),
                   ==, PW85_SUCCESS);
   g_assert_cmpint(thrown.outcome, ==, PW85_PACK_CANCELLED);
+  typename T::Packing plain;
+  g_assert_cmpint(T::pack(a, o, plain_stop, plain), ==, PW85_SUCCESS);
+  g_assert_cmpint(plain.outcome, ==, PW85_PACK_CANCELLED);
 
   // Errors leave the output unchanged.
   typename T::Packing untouched = p;
@@ -202,6 +218,11 @@ void check_energy(std::size_t n, double side) {
   g_assert_true(std::memcmp(&e, &ec, sizeof e) == 0);
   g_assert_true(same(f, fc.data(), T::dim * n));
   g_assert_true(same(t, tc.data(), T::rot * n));
+  double ep = 0;
+  std::vector<double> fp, tp;
+  g_assert_cmpint(index.energy(tt, plain_energy, 2, n, ep, fp, tp), ==, 0);
+  g_assert_true(std::memcmp(&e, &ep, sizeof e) == 0);
+  g_assert_true(fp == f && tp == t);
 
   // A lambda that stops, one that throws: PW85_ECANCELLED, outputs kept;
   // an ε not > 0, rows not above the ids: PW85_EINVAL.
@@ -219,6 +240,10 @@ void check_energy(std::size_t n, double side) {
   g_assert_true(t == tq0);
   typename T::Index none;
   g_assert_cmpint(none.overlap_energy(1.0, 1, n, e, f, t), ==, PW85_EFAULT);
+  // rows no vector can hold: still PW85_EFAULT (it was PW85_ENOMEM, the
+  // vectors allocated first)
+  g_assert_cmpint(none.overlap_energy(1.0, 1, SIZE_MAX / 2, e, f, t), ==,
+                  PW85_EFAULT);
 }
 
 void test_pack() { check_pack<Dim3>(150, 0.5, 0.7); }

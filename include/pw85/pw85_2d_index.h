@@ -449,7 +449,8 @@ PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
  * (x·F_y − y·F_x) of the forces applied at the images' centres,
  * c_j + n∘L, sum to zero (to rounding). Overlap energy:
  * U′ = −ε·(1 − μ)/μ; a pair with coincident centres (r = 0, μ = 0) adds
- * U = ε and no force. U and U′ are taken at the μ² of the query; for
+ * U = ε and no force, and so does a pair whose μ² underflows to 0 (|r|
+ * below about 1e-162 of the sizes: its force is then lost). U and U′ are taken at the μ² of the query; for
  * PW85_ENERGY_USER they come from fn, called in the calling thread only,
  * once per pair, in the order (i, j, n); the derivatives of μ² are
  * computed on threads.
@@ -461,7 +462,8 @@ PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
  * a 2×2 solve per pair, on `threads` threads. Memory, besides the
  * outputs: the query's pairs (40 bytes each), a copy of the stored
  * ellipses (40 bytes per id below the id table's size) and two arrays of
- * 2·n and n doubles. Accuracy: forces and torques agree with central
+ * 2·n and n doubles. Accuracy, measured (of order u·cond(Q(λ)) per pair,
+ * as pw85_index_energy() says): forces and torques agree with central
  * differences of the energy (step 1e-5) to 1.7e-9 relative to
  * 1 + |value| (tests/test-2d-energy.c: the overlap energy of 60 ellipses
  * of aspect 2 and semi-axes near 1 in a periodic square of side 6, with
@@ -488,7 +490,10 @@ PW85_API int pw85_2d_index_pairs_within(pw85_2d_index const *index, double t,
  *         PW85_ECANCELLED if fn returned non-zero; PW85_ERANGE as
  *         pw85_2d_index_pairs_within() or pw85_2d_contact_derivatives() on
  *         a pair, or if the energy, or an entry of forces or torques (those
- *         asked for), is beyond the range of a double; PW85_ENOMEM (also
+ *         asked for), is beyond the range of a double, or, with forces
+ *         or torques asked for, if a pair's U′ is (ε·(1 − μ)/μ of the
+ *         overlap energy with ε near the top of a double's range, even
+ *         where the forces themselves would fit); PW85_ENOMEM (also
  *         when forces or torques is given and the size in bytes of 2·n
  *         doubles would not fit a size_t). Nothing is written on error.
  * @since 2.5.0

@@ -474,7 +474,9 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  * So the forces sum to zero, and the torques plus the moments of the
  * forces applied at the images' centres, c_j + n∘L, sum to zero (to
  * rounding). Overlap energy: U′ = −ε·(1 − μ)/μ; a pair with coincident
- * centres (r = 0, μ = 0) adds U = ε and no force. U and U′ are taken at
+ * centres (r = 0, μ = 0) adds U = ε and no force, and so does a pair whose
+ * μ² underflows to 0 (|r| below about 1e-162 of the sizes: its force is
+ * then lost). U and U′ are taken at
  * the μ² of the query; for PW85_ENERGY_USER they come from fn,
  * called in the calling thread only, once per pair, in the order (i, j,
  * n); the derivatives of μ² are computed on threads.
@@ -488,9 +490,13 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  * solve per pair, on `threads` threads. Memory, besides the outputs:
  * the query's pairs (40 bytes each), a copy of the stored ellipsoids
  * (72 bytes per id below the id table's size) and two arrays of 3·n
- * doubles. Accuracy: forces and
- * torques agree with central differences of the energy to 1.2e-9
- * relative (tests/test-energy.c).
+ * doubles. Accuracy, measured: forces and torques agree with central
+ * differences of the energy to 1.2e-9 relative on triaxial ellipsoids of
+ * semi-axes s·(1, 0.6, 0.3) (tests/test-energy.c). s is solved in
+ * double, so each pair's derivatives carry an error of order
+ * u·cond(Q(λ)) (u = 2⁻⁵³): 2.9e-8 for a force and 9.4e-8 for a torque
+ * on a pair of aspect ratio 3.4e4, cond(Q(λ)) = 5e9 (an adversarial
+ * review); pw85_contact_derivatives() is accurate there.
  *
  * @param[in] index the index.
  * @param[in] kind PW85_ENERGY_OVERLAP or PW85_ENERGY_USER.
@@ -512,7 +518,10 @@ typedef int (*pw85_pair_energy)(double mu2, void *data, double out[2]);
  *         PW85_ECANCELLED if fn returned non-zero; PW85_ERANGE as
  *         pw85_index_pairs_within() or pw85_contact_derivatives() on a
  *         pair, or if the energy, or an entry of forces or torques (those
- *         asked for), is beyond the range of a double; PW85_ENOMEM (also
+ *         asked for), is beyond the range of a double, or, with forces
+ *         or torques asked for, if a pair's U′ is (ε·(1 − μ)/μ of the
+ *         overlap energy with ε near the top of a double's range, even
+ *         where the forces themselves would fit); PW85_ENOMEM (also
  *         when forces or torques is given and the size in bytes of 3·n
  *         doubles would not fit a size_t). Nothing is written on error.
  * @since 2.4.0

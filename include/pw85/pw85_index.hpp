@@ -486,9 +486,14 @@ class BasicIndex {
   int energy(double t, U &&u, int threads, std::size_t n, double &energy,
              std::vector<double> &forces,
              std::vector<double> &torques) const noexcept {
+    // A function named as u is held by a pointer, whose address (an
+    // object's) passes through void *; any other callable by reference.
     using F = typename std::remove_reference<U>::type;
-    return energy_of(PW85_ENERGY_USER, t, &call_energy<F>,
-                     const_cast<void *>(static_cast<void const *>(&u)),
+    typename std::conditional<std::is_function<F>::value, F *, F &>::type
+        held = u;
+    using G = typename std::remove_reference<decltype(held)>::type;
+    return energy_of(PW85_ENERGY_USER, t, &call_energy<G>,
+                     const_cast<void *>(static_cast<void const *>(&held)),
                      threads, n, energy, forces, torques);
   }
 
@@ -532,7 +537,9 @@ class BasicIndex {
                 std::vector<double> &forces,
                 std::vector<double> &torques) const noexcept {
     // (dim·n wraps around only where the C function returns
-    // PW85_ENOMEM before it writes anything.)
+    // PW85_ENOMEM before it writes anything.) A moved-from index is
+    // PW85_EFAULT, as the C function says, before any allocation.
+    if (handle() == nullptr) return PW85_EFAULT;
     std::vector<double> f, t;
     int status = resize(f, Api::dim * n);
     if (status == PW85_SUCCESS) status = resize(t, (Api::dim == 3 ? 3 : 1) * n);

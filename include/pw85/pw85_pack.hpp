@@ -115,10 +115,15 @@ int run_with(Fn fn, std::vector<double> Result::*orientations,
              std::vector<double> const &semi_axes,
              pw85_pack_options const &options, F &&progress,
              Result &out) noexcept {
-  using G = typename std::remove_reference<F>::type;
+  // A function named as progress is held by a pointer (pw85_index.hpp,
+  // Index::energy()); any other callable by reference.
+  using H = typename std::remove_reference<F>::type;
+  typename std::conditional<std::is_function<H>::value, H *, H &>::type
+      held = progress;
+  using G = typename std::remove_reference<decltype(held)>::type;
   pw85_pack_options o = options;
   o.progress = &call_progress<G>;
-  o.progress_data = const_cast<void *>(static_cast<void const *>(&progress));
+  o.progress_data = const_cast<void *>(static_cast<void const *>(&held));
   return run<D, O, S>(fn, orientations, semi_axes, o, out);
 }
 
