@@ -153,14 +153,17 @@ static void test_targets(void) {
 
 /* Sizes 100 : 1 and 30 : 1 at φ = 0.3, far below jamming: the target is
  * reached (two unit discs and one of 0.01 came back PW85_PACK_JAMMED at
- * 0.26 for seed 3, as in 3D: test-pack.c, size-ratio). */
+ * 0.26 for seed 3, as in 3D: test-pack.c, size-ratio). 8 + 72 at 100 : 1
+ * also needs the stall window to grow with the sizes (0.275 and 0.251,
+ * jammed, with 500 steps); 1.4 s, not run under valgrind. */
 static void test_size_ratio(void) {
   struct {
     size_t big, small;
     double ratio;
     uint64_t seeds;
-  } const cases[] = {{2, 1, 100., 3}, {6, 30, 30., 2}};
+  } const cases[] = {{2, 1, 100., 3}, {6, 30, 30., 2}, {8, 72, 100., 2}};
   for (size_t k = 0; k < G_N_ELEMENTS(cases); k++) {
+    if (k == 2 && g_getenv("PW85_TEST_SMALL")) continue;
     size_t const n = cases[k].big + cases[k].small;
     double *a = g_new(double, 2 * n);
     for (size_t i = 0; i < 2 * n; i++)

@@ -456,14 +456,17 @@ static void test_extreme_sizes(void) {
  * large spheres moved by (ℓ/a)⁴ of their size per step: two unit spheres
  * and one of 0.01 came back PW85_PACK_JAMMED at φ 0.08 to 0.27, seeds 1
  * to 3; 6 + 30 spheres at 30 : 1 at 0.21 to 0.23. An adversarial
- * review.) */
+ * review.) 10 + 90 at 100 : 1 also needs the stall window to grow with
+ * the sizes (0.2997, jammed, with 500 steps); 0.6 s, not run under
+ * valgrind (PW85_TEST_SMALL). */
 static void test_size_ratio(void) {
   struct {
     size_t big, small;
     double ratio;
     uint64_t seeds;
-  } const cases[] = {{2, 1, 100., 3}, {6, 30, 30., 2}};
+  } const cases[] = {{2, 1, 100., 3}, {6, 30, 30., 2}, {10, 90, 100., 1}};
   for (size_t k = 0; k < G_N_ELEMENTS(cases); k++) {
+    if (k == 2 && g_getenv("PW85_TEST_SMALL")) continue;
     size_t const n = cases[k].big + cases[k].small;
     double *a = g_new(double, 3 * n);
     for (size_t i = 0; i < 3 * n; i++)

@@ -19,7 +19,8 @@
  * rectangle of the target packing fraction φ = Σπ·a0·a1 / (L0·L1), with
  * uniform angles or aligned; FIRE on the overlap energy U = Σ(1 − μ)² of
  * the shapes inflated by 1 + 2⁻¹⁰ over centres and angles until
- * √U < 2⁻¹¹; where the energy falls by less than half in 500 steps, the
+ * √U < 2⁻¹¹; where the energy falls by less than half in 500 steps (up to
+ * 5000 with sizes far apart, as pw85_pack()), the
  * rectangle grows (by 2% at most) and bisection proceeds between the
  * densest certified and the least jammed packing fraction, until within
  * 0.1%. Any configuration is certified by scaling the rectangle and

@@ -19,7 +19,8 @@
  * jamming protocol of O'Hern et al. (Phys. Rev. E 68, 011306, 2003), with
  * the contact function of Perram and Wertheim as the overlap measure of
  * ellipsoids (Zeravcic et al., EPL 87, 26001, 2009). Where the energy
- * falls by less than half in 500 steps (the target is beyond jamming for
+ * falls by less than half in 500 steps (more, up to 5000, with sizes far
+ * apart: docs/packing.rst) (the target is beyond jamming for
  * this protocol), the box grows (by 2% at most) and bisection proceeds
  * between the densest certified and the least jammed packing fraction,
  * until they are within 0.1%. At any time, a
@@ -142,11 +143,11 @@ PW85_API void pw85_pack_options_init(pw85_pack_options *options) PW85_NOEXCEPT;
  * @param[in] n the number of ellipsoids (≥ 1).
  * @param[in] semi_axes 3·n semi-axes (each > 0 and finite), any mix of
  *            sizes and shapes. (Every result is certified; how close to
- *            jamming a mixture gets is a measurement: sizes 30 : 1 and
- *            100 : 1 at φ = 0.3 reach the target with a few large
- *            spheres; 20 unit spheres and 180 of 0.01, many small ones
- *            starting inside large ones, stall and report
- *            PW85_PACK_JAMMED near φ = 0.24, seeds 1 and 2.)
+ *            jamming a mixture gets is a measurement: at φ = 0.3, 2 + 1,
+ *            6 + 30, 8 + 72 and 20 + 180 unit spheres and spheres of
+ *            0.01 reach the target (seeds 1 and 2); at 1000 : 1, 6 + 30
+ *            stop at 0.25 (PW85_PACK_JAMMED), and in 2D 10 + 90 discs
+ *            at 100 : 1 stop at 0.293 and 0.2997.)
  * @param[in] options the options (NULL: the defaults).
  * @param[out] box the sides L0, L1, L2 of the box.
  * @param[out] centres 3·n doubles: the centres, in [0, L_k).

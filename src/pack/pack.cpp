@@ -68,8 +68,15 @@ constexpr double max_move = 0.1;
 // 3e-10 in 200 steps), above it creeps (10⁴ of 1 : 0.8 : 0.6 at 0.74: by
 // 10% per 500 steps); a stall declared near jamming costs a
 // decompression of at most `backoff`. Bisection stops when the bracket is
-// below bisect_tol relative.
+// below bisect_tol relative. With sizes far apart the window is longer:
+// a small ellipsoid moves by at most max_move times its own size per step,
+// and may have to cross a large one (c_max/ℓ of its sizes); the window is
+// then window_per_size·c_max/ℓ steps (c_max the largest of the smallest
+// semi-axes), up to max_window. (20 unit spheres and 180 of 0.01 at 0.3:
+// jammed near 0.24 with 500 steps, the target with 5000.)
 constexpr std::size_t stall_window = 500;
+constexpr double window_per_size = 50.0;
+constexpr std::size_t max_window = 5000;
 constexpr double stall_drop = 0.5;
 constexpr double bisect_tol = 1e-3;
 // The largest decompression after a stall.
@@ -331,6 +338,7 @@ class Packer {
   PackParams const &prm_;
   Clock::time_point start_;
   double volume_ = 0.0, ell_ = 0.0;
+  std::size_t window_ = stall_window;
   double box_[D] = {};
   double phi_ = 0.0;
   Buffer<double> c_, p_, qi_;   // centres, orientations, inflated forms
@@ -379,6 +387,9 @@ Status Packer<D>::init() noexcept {
       if (a[k] > a[m]) m = k;
     }
     m_[i] = (ell_ / amin) * (ell_ / amin);
+    double const w = window_per_size * (amin / ell_);
+    if (w > double(window_))
+      window_ = w < double(max_window) ? std::size_t(w) : max_window;
     inertia_[i] = m_[i] * amax * amax;
     for (int k = 0; k < D; ++k) {
       ai_[D * i + k] = a[k] * inflation;
@@ -610,7 +621,7 @@ Status Packer<D>::run(double *box, double *c, double *p, double *q,
       window_energy = energy_;
       window_start = steps_;
     }
-    if (!zero && steps_ - window_start >= stall_window) {
+    if (!zero && steps_ - window_start >= window_) {
       stalled = energy_ > (1.0 - stall_drop) * window_energy;
       window_energy = energy_;
       window_start = steps_;
