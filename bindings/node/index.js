@@ -168,13 +168,31 @@ class Pw85Error extends Error {
   }
 }
 
-// A Float64Array of n numbers from an array-like of length n: x itself if
-// it is one (libpw85 only reads it), else a copy.
+// A Float64Array of the entries of x: x itself if it is one (libpw85 only
+// reads it), else a copy, each entry a number (not '1', not 1n): a
+// TypeError naming the entry otherwise.
+function float64s(x, name) {
+  if (x instanceof Float64Array) return x;
+  if (!ArrayBuffer.isView(x)) {
+    for (let k = 0; k < x.length; ++k) {
+      if (typeof x[k] !== 'number') {
+        throw new TypeError(`pw85: ${name}[${k}] must be a number, got ` +
+          `${x[k] === null ? 'null' : typeof x[k]}`);
+      }
+    }
+  } else if (x instanceof BigInt64Array || x instanceof BigUint64Array) {
+    throw new TypeError(`pw85: ${name} must hold numbers, got a ` +
+      x.constructor.name);
+  }
+  return Float64Array.from(x);
+}
+
+// A Float64Array of n numbers from an array-like of length n.
 function doubles(x, n, name) {
   if (x == null || typeof x.length !== 'number' || x.length !== n) {
     throw new RangeError(`pw85: ${name} must hold ${n} numbers`);
   }
-  return x instanceof Float64Array ? x : Float64Array.from(x);
+  return float64s(x, name);
 }
 
 function number(x, name) {
@@ -388,7 +406,7 @@ function records(inputs) {
       throw new RangeError(`pw85: ${name} holds ${x.length / size} records, ` +
         `the others ${n}`);
     }
-    const data = x instanceof Float64Array ? x : Float64Array.from(x);
+    const data = float64s(x, name);
     return { name, data, size, stride: x.length === size ? 0 : size };
   }).concat([n]);
 }
