@@ -705,6 +705,19 @@ const INDEX_2D = Object.freeze({
 const SIDE_MARGIN = 1 + 2 ** -20;
 const CENTRE_REACH = 2 ** 29;
 
+// The threshold t of within and pairsWithin: finite (PW85_EDOM) and > 0
+// (PW85_EINVAL), checked here to name t (libpw85's status does not).
+function threshold(t, call) {
+  number(t, 't');
+  if (!Number.isFinite(t)) {
+    throw new Pw85Error(status.PW85_EDOM, call, `t = ${t} is not finite`);
+  }
+  if (!(t > 0)) {
+    throw new Pw85Error(status.PW85_EINVAL, call, `t = ${t} is not > 0`);
+  }
+  return t;
+}
+
 function idOf(x, name) {
   if (!Number.isInteger(x) || x < 0 || x > MAX_ID) {
     throw new TypeError(`pw85: ${name} must be an integer from 0 to ` +
@@ -1007,11 +1020,7 @@ class IndexBase {
   within(centre, q, t = 1, exclude = null) {
     const cd = doubles(centre, this._d.dim, 'centre');
     const qd = doubles(q, this._d.sym, 'q');
-    number(t, 't');
-    if (!(t > 0)) {
-      throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
-        : status.PW85_EINVAL, this._call('within'), `t = ${t} is not > 0`);
-    }
+    threshold(t, this._call('within'));
     const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
     const r = this._collect((cap, ids, shifts, ml, count) => this._d.c.within(
       this._handle(), cd, qd, t, ex, cap, ids, shifts, ml, count),
@@ -1057,12 +1066,7 @@ class IndexBase {
   /** Every pair (and image) with μ² < t, each once:
    *  [{i, j, shift, mu2, lambda}]. */
   pairsWithin(t, { threads = 1 } = {}) {
-    number(t, 't');
-    if (!(t > 0)) {
-      throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
-        : status.PW85_EINVAL, this._call('pairs_within'),
-      `t = ${t} is not > 0`);
-    }
+    threshold(t, this._call('pairs_within'));
     const th = this._threads(threads, this._call('pairs_within'));
     const r = this._collect((cap, ids, shifts, ml, count) =>
       this._d.c.pairsWithin(this._handle(), t, th, cap, ids, shifts, ml,

@@ -191,6 +191,26 @@ test('Index errors name the rule, the id, the item and the numbers', () => {
   throwsWith(() => new pw85.Index([1, 2, Infinity]), 'PW85_EDOM', 'L_2 = Infinity is not finite');
 });
 
+test('within and pairsWithin name t when it is not finite, not the candidate', () => {
+  // t = ±Infinity reached libpw85 (PW85_EDOM), whose detail then listed the
+  // centre and q.
+  for (const [index, c, q] of [[new pw85.Index([3, 3, 3]), [0, 0, 0], sphere(1)],
+    [new pw85.d2.Index([3, 3]), [0, 0], [1, 0, 1]]]) {
+    index.insert(0, c, q);
+    for (const t of [Infinity, -Infinity, NaN]) {
+      for (const f of [() => index.within(c, q, t), () => index.pairsWithin(t)]) {
+        assert.throws(f, (e) => {
+          assert.equal(e.code, 'PW85_EDOM');
+          assert.equal(e.detail, `t = ${t} is not finite`);
+          return true;
+        });
+      }
+    }
+    throwsWith(() => index.pairsWithin(-1), 'PW85_EINVAL', 't = -1 is not > 0');
+    index.close();
+  }
+});
+
 test('index.d.ts declares every export, and only those', () => {
   const dts = fs.readFileSync(path.join(__dirname, '..', 'index.d.ts'), 'utf8');
   const declared = new Set([...dts.matchAll(
