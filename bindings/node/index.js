@@ -704,6 +704,7 @@ const INDEX_2D = Object.freeze({
 
 const SIDE_MARGIN = 1 + 2 ** -20;
 const CENTRE_REACH = 2 ** 29;
+const IMAGE_SPAN = 2 ** 20;
 
 // The threshold t of within and pairsWithin: finite (PW85_EDOM) and > 0
 // (PW85_EINVAL), checked here to name t (libpw85's status does not).
@@ -927,11 +928,35 @@ class IndexBase {
     return { centre, q };
   }
 
-  _candidateError(code, call, centre, q) {
+  // The candidate's reach across the images of the box, where it is so
+  // long that the queries, which enumerate every image, refuse it
+  // (PW85_ERANGE: more than 2²⁰ boxes along an axis, pw85_index.h), or
+  // undefined. The reach of within is √t times the candidate's.
+  _reach(q, t = 1) {
+    if (this.box == null) return undefined;
+    const { dim, diagonal, domain } = this._d;
+    const qkk = t === 1 ? 'Q_kk' : 't·Q_kk';
+    for (let k = 0; k < dim; ++k) {
+      const half = q[diagonal[k]] > 0 ? Math.sqrt(t * q[diagonal[k]]) : 0;
+      if (half > IMAGE_SPAN / 2 * (1 - 2 ** -4) * this.box[k]) {
+        const name = (x) => x.replace(/kk/g, `${k}${k}`);
+        const root = t === 1 ? `√${name(qkk)}` : `√(${name(qkk)})`;
+        return `${root} = ${fmt(half)} against L_${k} = ` +
+          `${fmt(this.box[k])}: the candidate reaches across about ` +
+          `2·${root}/L_${k} images of the ${domain}, and the queries, ` +
+          'which enumerate every image, refuse more than 2²⁰ along an axis';
+      }
+    }
+    return undefined;
+  }
+
+  _candidateError(code, call, centre, q, t = 1) {
+    const reach = code === status.PW85_ERANGE
+      ? this._reach(q, t) : undefined;
     const detail = code === status.PW85_EINVAL
       ? (this._placement(centre, new Float64Array(this._d.sym)) ||
          `centre = ${list(centre)}`)
-      : (this._cause(code, centre, q) ||
+      : (reach || this._cause(code, centre, q) ||
          `centre = ${list(centre)}, q = ${list(q)}`);
     return new Pw85Error(code, call, detail);
   }
@@ -1025,7 +1050,7 @@ class IndexBase {
     const r = this._collect((cap, ids, shifts, ml, count) => this._d.c.within(
       this._handle(), cd, qd, t, ex, cap, ids, shifts, ml, count),
     this._call('within'), 1, true, 16,
-    (code) => this._candidateError(code, this._call('within'), cd, qd));
+    (code) => this._candidateError(code, this._call('within'), cd, qd, t));
     return Array.from({ length: r.m }, (_, k) => ({
       id: Number(r.ids[k]),
       shift: this._shift(r.shifts, k),

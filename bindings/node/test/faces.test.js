@@ -211,6 +211,36 @@ test('within and pairsWithin name t when it is not finite, not the candidate', (
   }
 });
 
+test('a candidate reaching across more than 2²⁰ images: PW85_ERANGE naming the reach', () => {
+  // pw85_index.h: the queries refuse a candidate whose images in reach span
+  // more than 2²⁰ boxes (a half-length of about 2¹⁹ sides). The detail cited
+  // the width rule of stored ellipsoids, which candidates are not under.
+  for (const [index, c, ball] of [
+    [new pw85.Index([1, 1, 1]), [0.5, 0, 0], [0.01, 0, 0, 0.01, 0, 0.01]],
+    [new pw85.d2.Index([1, 1]), [0.5, 0], [0.01, 0, 0.01]]]) {
+    index.insert(0, c.map(() => 0), ball);
+    const needle = [...ball];
+    needle[0] = 2 ** 36; // a half-length of 2¹⁸ sides: decided
+    assert.deepEqual(index.overlapAny(c, needle), { result: -1, id: 0 });
+    needle[0] = 2 ** 38; // 2¹⁹ sides
+    const reach = ['√Q_00 = 524288 against L_0 = 1', 'images of the ' +
+      `${c.length === 3 ? 'box' : 'rectangle'}`, 'refuse more than 2²⁰'];
+    const notWidth = (f, text) => assert.throws(f, (e) => {
+      assert.equal(e.code, 'PW85_ERANGE');
+      for (const x of [].concat(text)) assert.ok(e.detail.includes(x), e.detail);
+      assert.ok(!e.detail.includes('narrower'), e.detail);
+      return true;
+    });
+    notWidth(() => index.overlapAny(c, needle), reach);
+    notWidth(() => index.overlapAnyBatch([...c, ...c], [...ball, ...needle]),
+      ['candidate 1 of 2: ', ...reach]);
+    notWidth(() => index.within(c, needle), reach);
+    // within's reach is √t times the candidate's.
+    notWidth(() => index.within(c, ball, 2 ** 80), '√(t·Q_00) = 109951162777.6');
+    index.close();
+  }
+});
+
 test('index.d.ts declares every export, and only those', () => {
   const dts = fs.readFileSync(path.join(__dirname, '..', 'index.d.ts'), 'utf8');
   const declared = new Set([...dts.matchAll(
