@@ -395,8 +395,7 @@ function batchThreads(threads = 0, n = 256 * (2 ** 31 - 1)) {
 function records(inputs) {
   let n = 1;
   for (const [name, x, size] of inputs) {
-    if (x == null || typeof x.length !== 'number' || x.length % size !== 0 ||
-        x.length === 0) {
+    if (x == null || typeof x.length !== 'number' || x.length % size !== 0) {
       throw new RangeError(`pw85: ${name} must hold ${size}·n numbers`);
     }
     if (x.length !== size) n = x.length / size;

@@ -241,6 +241,32 @@ test('a candidate reaching across more than 2²⁰ images: PW85_ERANGE naming th
   }
 });
 
+test('empty inputs: nothing done, empty results, as n = 0 in C', () => {
+  // They were RangeErrors; libpw85 takes n = 0 (PW85_SUCCESS, nothing read).
+  const q = sphere(1);
+  for (const [index, c, f] of [[new pw85.Index([3, 3, 3]), [0, 0, 0], q],
+    [new pw85.d2.Index(null), [0, 0], [1, 0, 1]]]) {
+    index.insert([], [], []);
+    index.insert([], c, f); // one record for all of no items
+    assert.equal(index.size, 0);
+    index.insert(7, c, f);
+    index.insert([], [], []);
+    assert.deepEqual(index.ids(), [7]);
+    for (const out of [index.overlapAnyBatch([], f),
+      index.overlapAnyBatch([], [], { exclude: [], threads: 2 })]) {
+      assert.ok(out.results instanceof Int32Array && out.results.length === 0);
+      assert.ok(out.ids instanceof Float64Array && out.ids.length === 0);
+    }
+    assert.throws(() => index.insert([], c.concat(c), f), RangeError); // 0 ids, 2 centres
+    index.close();
+    assert.throws(() => index.insert([], [], []), /closed/);
+  }
+  const out = pw85.contactFunctionBatch([], q, q);
+  assert.ok(out instanceof Float64Array && out.length === 0);
+  assert.equal(pw85.overlapBatch([], [], []).length, 0);
+  assert.equal(pw85.d2.ellipseBatch([], []).length, 0);
+});
+
 test('index.d.ts declares every export, and only those', () => {
   const dts = fs.readFileSync(path.join(__dirname, '..', 'index.d.ts'), 'utf8');
   const declared = new Set([...dts.matchAll(
