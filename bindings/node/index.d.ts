@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // TypeScript declarations of the pw85 package (index.js). Vectors are 3
 // numbers, symmetric forms 6 (upper triangle, row by row); batches take
-// n records end to end, or one record for every item. Ellipses (pw85_2d.h)
-// under d2: vectors of 2 numbers, forms [Q00, Q01, Q11].
+// n records end to end (n = 0: empty results), or one record for every
+// item; the index's insert takes n = 0 ids too (nothing done). Ellipses
+// (pw85_2d.h) under d2: vectors of 2 numbers, forms [Q00, Q01, Q11].
 
 export type Vector = ArrayLike<number>;
 export type Form = ArrayLike<number>;

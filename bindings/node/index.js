@@ -168,13 +168,31 @@ class Pw85Error extends Error {
   }
 }
 
-// A Float64Array of n numbers from an array-like of length n: x itself if
-// it is one (libpw85 only reads it), else a copy.
+// A Float64Array of the entries of x: x itself if it is one (libpw85 only
+// reads it), else a copy, each entry a number (not '1', not 1n): a
+// TypeError naming the entry otherwise.
+function float64s(x, name) {
+  if (x instanceof Float64Array) return x;
+  if (!ArrayBuffer.isView(x)) {
+    for (let k = 0; k < x.length; ++k) {
+      if (typeof x[k] !== 'number') {
+        throw new TypeError(`pw85: ${name}[${k}] must be a number, got ` +
+          `${x[k] === null ? 'null' : typeof x[k]}`);
+      }
+    }
+  } else if (x instanceof BigInt64Array || x instanceof BigUint64Array) {
+    throw new TypeError(`pw85: ${name} must hold numbers, got a ` +
+      x.constructor.name);
+  }
+  return Float64Array.from(x);
+}
+
+// A Float64Array of n numbers from an array-like of length n.
 function doubles(x, n, name) {
   if (x == null || typeof x.length !== 'number' || x.length !== n) {
     throw new RangeError(`pw85: ${name} must hold ${n} numbers`);
   }
-  return x instanceof Float64Array ? x : Float64Array.from(x);
+  return float64s(x, name);
 }
 
 function number(x, name) {
@@ -377,8 +395,7 @@ function batchThreads(threads = 0, n = 256 * (2 ** 31 - 1)) {
 function records(inputs) {
   let n = 1;
   for (const [name, x, size] of inputs) {
-    if (x == null || typeof x.length !== 'number' || x.length % size !== 0 ||
-        x.length === 0) {
+    if (x == null || typeof x.length !== 'number' || x.length % size !== 0) {
       throw new RangeError(`pw85: ${name} must hold ${size}·n numbers`);
     }
     if (x.length !== size) n = x.length / size;
@@ -388,7 +405,7 @@ function records(inputs) {
       throw new RangeError(`pw85: ${name} holds ${x.length / size} records, ` +
         `the others ${n}`);
     }
-    const data = x instanceof Float64Array ? x : Float64Array.from(x);
+    const data = float64s(x, name);
     return { name, data, size, stride: x.length === size ? 0 : size };
   }).concat([n]);
 }
@@ -686,6 +703,20 @@ const INDEX_2D = Object.freeze({
 
 const SIDE_MARGIN = 1 + 2 ** -20;
 const CENTRE_REACH = 2 ** 29;
+const IMAGE_SPAN = 2 ** 20;
+
+// The threshold t of within and pairsWithin: finite (PW85_EDOM) and > 0
+// (PW85_EINVAL), checked here to name t (libpw85's status does not).
+function threshold(t, call) {
+  number(t, 't');
+  if (!Number.isFinite(t)) {
+    throw new Pw85Error(status.PW85_EDOM, call, `t = ${t} is not finite`);
+  }
+  if (!(t > 0)) {
+    throw new Pw85Error(status.PW85_EINVAL, call, `t = ${t} is not > 0`);
+  }
+  return t;
+}
 
 function idOf(x, name) {
   if (!Number.isInteger(x) || x < 0 || x > MAX_ID) {
@@ -896,11 +927,35 @@ class IndexBase {
     return { centre, q };
   }
 
-  _candidateError(code, call, centre, q) {
+  // The candidate's reach across the images of the box, where it is so
+  // long that the queries, which enumerate every image, refuse it
+  // (PW85_ERANGE: more than 2²⁰ boxes along an axis, pw85_index.h), or
+  // undefined. The reach of within is √t times the candidate's.
+  _reach(q, t = 1) {
+    if (this.box == null) return undefined;
+    const { dim, diagonal, domain } = this._d;
+    const qkk = t === 1 ? 'Q_kk' : 't·Q_kk';
+    for (let k = 0; k < dim; ++k) {
+      const half = q[diagonal[k]] > 0 ? Math.sqrt(t * q[diagonal[k]]) : 0;
+      if (half > IMAGE_SPAN / 2 * (1 - 2 ** -4) * this.box[k]) {
+        const name = (x) => x.replace(/kk/g, `${k}${k}`);
+        const root = t === 1 ? `√${name(qkk)}` : `√(${name(qkk)})`;
+        return `${root} = ${fmt(half)} against L_${k} = ` +
+          `${fmt(this.box[k])}: the candidate reaches across about ` +
+          `2·${root}/L_${k} images of the ${domain}, and the queries, ` +
+          'which enumerate every image, refuse more than 2²⁰ along an axis';
+      }
+    }
+    return undefined;
+  }
+
+  _candidateError(code, call, centre, q, t = 1) {
+    const reach = code === status.PW85_ERANGE
+      ? this._reach(q, t) : undefined;
     const detail = code === status.PW85_EINVAL
       ? (this._placement(centre, new Float64Array(this._d.sym)) ||
          `centre = ${list(centre)}`)
-      : (this._cause(code, centre, q) ||
+      : (reach || this._cause(code, centre, q) ||
          `centre = ${list(centre)}, q = ${list(q)}`);
     return new Pw85Error(code, call, detail);
   }
@@ -989,16 +1044,12 @@ class IndexBase {
   within(centre, q, t = 1, exclude = null) {
     const cd = doubles(centre, this._d.dim, 'centre');
     const qd = doubles(q, this._d.sym, 'q');
-    number(t, 't');
-    if (!(t > 0)) {
-      throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
-        : status.PW85_EINVAL, this._call('within'), `t = ${t} is not > 0`);
-    }
+    threshold(t, this._call('within'));
     const ex = exclude == null ? NO_ID : BigInt(idOf(exclude, 'exclude'));
     const r = this._collect((cap, ids, shifts, ml, count) => this._d.c.within(
       this._handle(), cd, qd, t, ex, cap, ids, shifts, ml, count),
     this._call('within'), 1, true, 16,
-    (code) => this._candidateError(code, this._call('within'), cd, qd));
+    (code) => this._candidateError(code, this._call('within'), cd, qd, t));
     return Array.from({ length: r.m }, (_, k) => ({
       id: Number(r.ids[k]),
       shift: this._shift(r.shifts, k),
@@ -1039,12 +1090,7 @@ class IndexBase {
   /** Every pair (and image) with μ² < t, each once:
    *  [{i, j, shift, mu2, lambda}]. */
   pairsWithin(t, { threads = 1 } = {}) {
-    number(t, 't');
-    if (!(t > 0)) {
-      throw new Pw85Error(Number.isNaN(t) ? status.PW85_EDOM
-        : status.PW85_EINVAL, this._call('pairs_within'),
-      `t = ${t} is not > 0`);
-    }
+    threshold(t, this._call('pairs_within'));
     const th = this._threads(threads, this._call('pairs_within'));
     const r = this._collect((cap, ids, shifts, ml, count) =>
       this._d.c.pairsWithin(this._handle(), t, th, cap, ids, shifts, ml,

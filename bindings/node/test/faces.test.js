@@ -191,6 +191,82 @@ test('Index errors name the rule, the id, the item and the numbers', () => {
   throwsWith(() => new pw85.Index([1, 2, Infinity]), 'PW85_EDOM', 'L_2 = Infinity is not finite');
 });
 
+test('within and pairsWithin name t when it is not finite, not the candidate', () => {
+  // t = ±Infinity reached libpw85 (PW85_EDOM), whose detail then listed the
+  // centre and q.
+  for (const [index, c, q] of [[new pw85.Index([3, 3, 3]), [0, 0, 0], sphere(1)],
+    [new pw85.d2.Index([3, 3]), [0, 0], [1, 0, 1]]]) {
+    index.insert(0, c, q);
+    for (const t of [Infinity, -Infinity, NaN]) {
+      for (const f of [() => index.within(c, q, t), () => index.pairsWithin(t)]) {
+        assert.throws(f, (e) => {
+          assert.equal(e.code, 'PW85_EDOM');
+          assert.equal(e.detail, `t = ${t} is not finite`);
+          return true;
+        });
+      }
+    }
+    throwsWith(() => index.pairsWithin(-1), 'PW85_EINVAL', 't = -1 is not > 0');
+    index.close();
+  }
+});
+
+test('a candidate reaching across more than 2²⁰ images: PW85_ERANGE naming the reach', () => {
+  // pw85_index.h: the queries refuse a candidate whose images in reach span
+  // more than 2²⁰ boxes (a half-length of about 2¹⁹ sides). The detail cited
+  // the width rule of stored ellipsoids, which candidates are not under.
+  for (const [index, c, ball] of [
+    [new pw85.Index([1, 1, 1]), [0.5, 0, 0], [0.01, 0, 0, 0.01, 0, 0.01]],
+    [new pw85.d2.Index([1, 1]), [0.5, 0], [0.01, 0, 0.01]]]) {
+    index.insert(0, c.map(() => 0), ball);
+    const needle = [...ball];
+    needle[0] = 2 ** 36; // a half-length of 2¹⁸ sides: decided
+    assert.deepEqual(index.overlapAny(c, needle), { result: -1, id: 0 });
+    needle[0] = 2 ** 38; // 2¹⁹ sides
+    const reach = ['√Q_00 = 524288 against L_0 = 1', 'images of the ' +
+      `${c.length === 3 ? 'box' : 'rectangle'}`, 'refuse more than 2²⁰'];
+    const notWidth = (f, text) => assert.throws(f, (e) => {
+      assert.equal(e.code, 'PW85_ERANGE');
+      for (const x of [].concat(text)) assert.ok(e.detail.includes(x), e.detail);
+      assert.ok(!e.detail.includes('narrower'), e.detail);
+      return true;
+    });
+    notWidth(() => index.overlapAny(c, needle), reach);
+    notWidth(() => index.overlapAnyBatch([...c, ...c], [...ball, ...needle]),
+      ['candidate 1 of 2: ', ...reach]);
+    notWidth(() => index.within(c, needle), reach);
+    // within's reach is √t times the candidate's.
+    notWidth(() => index.within(c, ball, 2 ** 80), '√(t·Q_00) = 109951162777.6');
+    index.close();
+  }
+});
+
+test('empty inputs: nothing done, empty results, as n = 0 in C', () => {
+  // They were RangeErrors; libpw85 takes n = 0 (PW85_SUCCESS, nothing read).
+  const q = sphere(1);
+  for (const [index, c, f] of [[new pw85.Index([3, 3, 3]), [0, 0, 0], q],
+    [new pw85.d2.Index(null), [0, 0], [1, 0, 1]]]) {
+    index.insert([], [], []);
+    index.insert([], c, f); // one record for all of no items
+    assert.equal(index.size, 0);
+    index.insert(7, c, f);
+    index.insert([], [], []);
+    assert.deepEqual(index.ids(), [7]);
+    for (const out of [index.overlapAnyBatch([], f),
+      index.overlapAnyBatch([], [], { exclude: [], threads: 2 })]) {
+      assert.ok(out.results instanceof Int32Array && out.results.length === 0);
+      assert.ok(out.ids instanceof Float64Array && out.ids.length === 0);
+    }
+    assert.throws(() => index.insert([], c.concat(c), f), RangeError); // 0 ids, 2 centres
+    index.close();
+    assert.throws(() => index.insert([], [], []), /closed/);
+  }
+  const out = pw85.contactFunctionBatch([], q, q);
+  assert.ok(out instanceof Float64Array && out.length === 0);
+  assert.equal(pw85.overlapBatch([], [], []).length, 0);
+  assert.equal(pw85.d2.ellipseBatch([], []).length, 0);
+});
+
 test('index.d.ts declares every export, and only those', () => {
   const dts = fs.readFileSync(path.join(__dirname, '..', 'index.d.ts'), 'utf8');
   const declared = new Set([...dts.matchAll(

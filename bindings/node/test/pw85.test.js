@@ -52,8 +52,33 @@ test('errors are Pw85Error with the status and pw85\'s message', () => {
       pw85.strerror(pw85.status.PW85_ENOTPOSDEF) + ' (PW85_ENOTPOSDEF): '));
   assert.throws(() => pw85.overlap([NaN, 0, 0], q1, q2),
     (e) => e instanceof pw85.Pw85Error && e.code === 'PW85_EDOM');
-  assert.throws(() => pw85.contactFunction(r12, q1, ['x', 0, 0, 1, 0, 1]),
-    (e) => e.code === 'PW85_EDOM');
+});
+
+test('entries of the wrong type are TypeErrors naming the entry, before any call', () => {
+  // They reached libpw85 as NaN (PW85_EDOM) or, numeric strings, as numbers.
+  const typeError = (f, text) => assert.throws(f, (e) => {
+    assert.ok(e instanceof TypeError && !(e instanceof pw85.Pw85Error), e);
+    assert.ok(e.message.includes(text), e.message);
+    return true;
+  });
+  typeError(() => pw85.contactFunction(['x', 0, 0], q1, q2), 'r12[0] must be a number, got string');
+  typeError(() => pw85.contactFunction(['0.7', '-0.7', '1.1'], q1, q2), 'r12[0]');
+  typeError(() => pw85.overlap(r12, q1, [25, 0, 0, 0.25, {}, 0.25]), 'q2[4] must be a number, got object');
+  typeError(() => pw85.contactFunction(r12, q1, [25, 0, 0, 0.25, null, 0.25]), 'q2[4] must be a number, got null');
+  typeError(() => pw85.contactFunction([1n, 0n, 0n], q1, q2), 'r12[0] must be a number, got bigint');
+  typeError(() => pw85.contactFunction(BigInt64Array.of(1n, 0n, 0n), q1, q2), 'r12 must hold numbers');
+  typeError(() => pw85.spheroid(1, 2, [0, 0, '1']), 'n[2]');
+  typeError(() => pw85.contactFunctionBatch([0.7, -0.7, 1.1, 'x', 0, 0], q1, q2), 'r12[3]');
+  typeError(() => pw85.d2.contactFunction([1, '0'], [1, 0, 1], [1, 0, 1]), 'r12[1]');
+  const index = new pw85.Index([3, 3, 3]);
+  typeError(() => index.insert(0, ['1', 0, 0], [1, 0, 0, 1, 0, 1]), 'centres[0]');
+  typeError(() => index.within([0, 0, 0], [1, 0, 0, 1, 0, '1']), 'q[5]');
+  assert.equal(index.size, 0);
+  index.close();
+  typeError(() => new pw85.Index([3, '3', 3]), 'box[1]');
+  // Typed arrays of numbers are numbers: accepted as they were.
+  assert.deepEqual(pw85.contactFunction(Float32Array.of(0.5, 0, 0), q1, q2),
+    pw85.contactFunction([0.5, 0, 0], q1, q2));
 });
 
 test('wrong lengths are RangeErrors, before any call', () => {
