@@ -467,10 +467,11 @@ class _Index:
         return None
 
     def _candidate_error(self, code, where, c, f, item=None, n=None):
+        reach = self._reach_rule(f) if code == ERANGE else None
         if code == EDOM or code == ENOTPOSDEF:
             detail = self._cause(c, f, code=code)
-        elif code == ERANGE and self._reach_rule(f) is not None:
-            detail = self._reach_rule(f)
+        elif reach is not None:
+            detail = reach
         else:
             rule = self._placement(c, np.ones(self._dim.sym))  # centre rule
             detail = rule if code == EINVAL and rule else (
