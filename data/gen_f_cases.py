@@ -95,7 +95,7 @@ def pattern(rng, t):
 
 
 def jitter(rng, e, w=0.3):
-    return e * 10.0**rng.uniform(-w, w, 3)
+    return e * gen.pow10(rng.uniform(-w, w, 3))
 
 
 def near_end(rng):
@@ -143,11 +143,11 @@ def make_forms(rng, cls, t):
     # classes 4, 5: D Q0 D
     spread = max(t - rng.uniform(0, 1), 0.0) / 2
     o = rng.uniform(-3, 3)
-    d = 10.0**np.array([o, o + spread, o + rng.uniform(0, spread)])
+    d = gen.pow10([o, o + spread, o + rng.uniform(0, spread)])
     d = d[rng.permutation(3)]
     q01 = form(rotation(rng), pattern(rng, rng.uniform(0, 1)))
     q02 = form(rotation(rng), pattern(rng, rng.uniform(0, 1)))
-    d2 = d * 10.0**rng.uniform(-0.2, 0.2, 3)
+    d2 = d * gen.pow10(rng.uniform(-0.2, 0.2, 3))
     q1, q2 = scaled(d, q01), scaled(d2, q02)
     if cls == 4:
         return q1, q2, float(rng.uniform(0, 1))

@@ -132,7 +132,7 @@ def axes_of(rng, shape, log_ar, centre):
         e = [hi, hi - rng.uniform(0.0, min(1.0, log_ar)), lo]
     else:
         e = [hi, rng.uniform(lo, hi), lo]
-    return [float(x) for x in 10.0**np.array(e)]
+    return [float(x) for x in gen.pow10(e)]
 
 
 def form(axes, quat):
@@ -271,7 +271,7 @@ def _ill_form(rng, how):
     spread = rng.uniform(6.0, 8.0)
     o = rng.uniform(-3.0, 3.0)
     e = np.array([o, o + spread, o + rng.uniform(0.0, spread)])
-    return scale_form(q, 10.0**e[rng.permutation(3)])
+    return scale_form(q, gen.pow10(e[rng.permutation(3)]))
 
 
 def _cond_class(how):
