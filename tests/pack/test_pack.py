@@ -120,8 +120,10 @@ class ToolCase(unittest.TestCase):
                         "-x", "160", "-y", "8", "-c", self.dir, command],
                        check=True, env=env)
         try:
+            # Up to 30 s for the bar (the pane stays as long after the run):
+            # under ASan on a slow machine the first one comes late.
             screen = ""
-            for _ in range(200):
+            for _ in range(600):
                 time.sleep(0.05)
                 screen = subprocess.run(
                     [tmux, "-L", session, "capture-pane", "-p", "-t", session],
