@@ -11,12 +11,27 @@ namespace pw85::detail {
 
 namespace {
 
+// The biased exponent field of x (0 for zero and subnormals).
+inline int biased_exponent(double x) noexcept {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return static_cast<int>((bits >> 52) & 0x7ff);
+}
+
+// 2^k for k in [−1022, 1023], from its bits (pow2() without the check).
+inline double normal_pow2(int k) noexcept {
+  std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
 // The smallest and largest |x| of the diagonals of q1 and q2, written out
 // as a tree of min and max: -O2 leaves loops rolled, and this runs on
 // every call.
 template <int D>
-void diagonal_range(double const *q1, double const *q2, double *lo,
-                    double *hi) noexcept {
+PW85_INLINE void diagonal_range(double const *q1, double const *q2,
+                                double *lo, double *hi) noexcept {
   constexpr int k = Layout<D>::diag[1];
   double const a = std::fabs(q1[0]), b = std::fabs(q1[k]);
   double const c = std::fabs(q2[0]), d = std::fabs(q2[k]);
@@ -47,9 +62,7 @@ inline void scale_n(double const *x, int k, double *y) noexcept {
 }  // namespace
 
 int exponent(double x) noexcept {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  int const biased = static_cast<int>((bits >> 52) & 0x7ff);
+  int const biased = biased_exponent(x);
   if (biased != 0) return biased - 1022;
   int e = 0;
   std::frexp(x, &e);
@@ -58,10 +71,7 @@ int exponent(double x) noexcept {
 
 double pow2(int k) noexcept {
   if (k < -1022 || k > 1023) return std::ldexp(1.0, k);
-  std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
-  double x;
-  std::memcpy(&x, &bits, sizeof x);
-  return x;
+  return normal_pow2(k);
 }
 
 double times_pow2(double x, int k) noexcept {
@@ -69,24 +79,14 @@ double times_pow2(double x, int k) noexcept {
   return k >= -1022 && k <= 1023 ? x * pow2(k) : std::ldexp(x, k);
 }
 
+namespace {
+
+// The fields of *s set by the exponents e of rmax (er) and of the extreme
+// diagonal entries (emin, emax), the scaled entries aside; returns
+// rescale()'s answer.
 template <int D>
-bool rescale(double const *r, double const *q1, double const *q2,
-             Scaled<D> *s) noexcept {
-  double rmax = std::fabs(r[0]);
-  PW85_UNROLL
-  for (int i = 1; i < D; ++i) rmax = std::max(rmax, std::fabs(r[i]));
-  s->r_is_zero = rmax == 0.0;
-  int const er = exponent(rmax);
-  // The exponent is monotone in |x|: those of the extreme diagonal entries
-  // are the extreme exponents.
-  double dmin = 0.0, dmax = 0.0;
-  diagonal_range<D>(q1, q2, &dmin, &dmax);
-  int const emin = exponent(dmin);
-  int const emax = exponent(dmax);
-  int const eq = emin + (emax - emin) / 2;
-  scale_n<D>(r, -er, s->r);
-  scale_n<sym_size(D)>(q1, -eq, s->q1);
-  scale_n<sym_size(D)>(q2, -eq, s->q2);
+PW85_INLINE bool set_exponents(int er, int emin, int emax, int eq,
+                               Scaled<D> *s) noexcept {
   s->shift = 2 * er - eq;
   s->r_exp = er;
   s->q_exp = eq;
@@ -97,6 +97,64 @@ bool rescale(double const *r, double const *q1, double const *q2,
   // which leaves the form indefinite: its factorisation then fails on a
   // non-finite pivot.
   return emax - emin <= max_diagonal_span;
+}
+
+// rescale() for any finite input, from rmax = max|rᵢ| and the extreme
+// |diagonal entries|: zero r, subnormal entries, scale factors beyond the
+// normal range (ldexp). Out of line, so that the common path calls nothing.
+template <int D>
+__attribute__((noinline)) bool rescale_general(double const *r,
+                                               double const *q1,
+                                               double const *q2, double rmax,
+                                               double dmin, double dmax,
+                                               Scaled<D> *s) noexcept {
+  s->r_is_zero = rmax == 0.0;
+  int const er = exponent(rmax);
+  // The exponent is monotone in |x|: those of the extreme diagonal entries
+  // are the extreme exponents.
+  int const emin = exponent(dmin);
+  int const emax = exponent(dmax);
+  int const eq = emin + (emax - emin) / 2;
+  scale_n<D>(r, -er, s->r);
+  scale_n<sym_size(D)>(q1, -eq, s->q1);
+  scale_n<sym_size(D)>(q2, -eq, s->q2);
+  return set_exponents(er, emin, emax, eq, s);
+}
+
+}  // namespace
+
+// The common case is rescale_general() with its first branches taken
+// (the same operations, the same results bit for bit): r ≠ 0 and the
+// extreme diagonal entries normal, so that exponent() reads the bits, and
+// both scale factors normal doubles (scale_n()'s multiplication).
+template <int D>
+bool rescale(double const *r, double const *q1, double const *q2,
+             Scaled<D> *s) noexcept {
+  double rmax = std::fabs(r[0]);
+  PW85_UNROLL
+  for (int i = 1; i < D; ++i) rmax = std::max(rmax, std::fabs(r[i]));
+  double dmin = 0.0, dmax = 0.0;
+  diagonal_range<D>(q1, q2, &dmin, &dmax);
+  int const br = biased_exponent(rmax);
+  int const bmin = biased_exponent(dmin);
+  int const er = br - 1022, emin = bmin - 1022;
+  int const emax = biased_exponent(dmax) - 1022;  // ≥ emin
+  int const eq = emin + (emax - emin) / 2;
+  // Normal rmax and dmin (so dmax too) give er, eq ≥ −1021; 2^−er and
+  // 2^−eq are then normal while er, eq ≤ 1022.
+  if (PW85_UNLIKELY(br == 0 || bmin == 0 || er > 1022 || eq > 1022))
+    return rescale_general<D>(r, q1, q2, rmax, dmin, dmax, s);
+  double const fr = normal_pow2(-er), fq = normal_pow2(-eq);
+  PW85_UNROLL
+  for (int i = 0; i < D; ++i) s->r[i] = r[i] * fr;
+  constexpr int n = sym_size(D);
+  PW85_UNROLL
+  for (int i = 0; i < n; ++i) {
+    s->q1[i] = q1[i] * fq;
+    s->q2[i] = q2[i] * fq;
+  }
+  s->r_is_zero = false;
+  return set_exponents(er, emin, emax, eq, s);
 }
 
 template bool rescale<2>(double const *, double const *, double const *,

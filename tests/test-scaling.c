@@ -176,6 +176,51 @@ static void test_span_limit(void) {
   for (int k = 0; k < PW85_DERIV_SIZE; k++) g_assert_cmpfloat(d[k], ==, -1.);
 }
 
+/* Both ways through the rescaling (src/scaling.cpp): the common one, read
+ * from the exponent bits, up to its edges (the largest |rᵢ| or the middle
+ * diagonal exponent at 2^1021, frexp exponent 1022), and the general one
+ * beyond them (exponent 1023 or 1024, where 2^−e is subnormal) or for
+ * subnormal entries (frexp, ldexp). Two equal spheres Q = 2^2k·I, centres
+ * 2^m apart along an axis: μ² = 2^2m/(2·2^k)² = 2^(2m−2k−2) and λ = ½,
+ * exactly (subnormal μ² too: a power of two). In 3D and in 2D. */
+static void test_rescale_paths(void) {
+  struct {
+    int m, k;
+  } const cases[] = {
+      {0, 0},         {1000, 500},  {-1000, -500}, /* common */
+      {1021, 510},    /* r and the diagonals at the common path's edge */
+      {1022, 511},    {1023, 511},  /* r beyond it; the diagonals beyond */
+      {1021, 511},    /* the diagonals alone beyond it */
+      {-530, -530},   /* subnormal diagonals */
+      {-1040, -525},  /* subnormal r and diagonals, subnormal μ² */
+      {-1021, -511},  {-1022, -511}, /* μ² at 2^−1022 and 2^−1024 */
+  };
+  for (size_t c = 0; c < G_N_ELEMENTS(cases); c++) {
+    int const m = cases[c].m, k = cases[c].k;
+    double const mu2 = ldexp(1., 2 * m - 2 * k - 2), d = ldexp(1., 2 * k);
+    int const expected = mu2 < 1. ? -1 : 1;
+    double const r[PW85_DIM] = {0., ldexp(1., m), 0.};
+    double const q[PW85_SYM] = {d, 0., 0., d, 0., d};
+    double out[2] = {-1., -1.};
+    int res = 7;
+    g_assert_cmpint(pw85_contact_function(r, q, q, out), ==, PW85_SUCCESS);
+    g_assert_cmpfloat(out[0], ==, mu2);
+    g_assert_cmpfloat(out[1], ==, 0.5);
+    g_assert_cmpint(pw85_overlap(r, q, q, &res), ==, PW85_SUCCESS);
+    g_assert_cmpint(res, ==, expected);
+    double const r2[2] = {ldexp(1., m), 0.};
+    double const p[3] = {d, 0., d};
+    out[0] = out[1] = -1.;
+    res = 7;
+    g_assert_cmpint(pw85_2d_contact_function(r2, p, p, out), ==,
+                    PW85_SUCCESS);
+    g_assert_cmpfloat(out[0], ==, mu2);
+    g_assert_cmpfloat(out[1], ==, 0.5);
+    g_assert_cmpint(pw85_2d_overlap(r2, p, p, &res), ==, PW85_SUCCESS);
+    g_assert_cmpint(res, ==, expected);
+  }
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -187,5 +232,6 @@ int main(int argc, char **argv) {
                   test_size_ratio);
   g_test_add_func("/pw85/scaling/f_neg/power-of-two", test_f_neg_scale);
   g_test_add_func("/pw85/scaling/span-limit", test_span_limit);
+  g_test_add_func("/pw85/scaling/rescale-paths", test_rescale_paths);
   return g_test_run();
 }
