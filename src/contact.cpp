@@ -20,9 +20,12 @@ namespace pw85::detail {
 
 template <bool Fast, int D>
 Status solve(Problem<D> const &p, double out[2], double const *r_lo) noexcept {
-  // 3. Warm start (eq. (5.9)); 4. Newton on ω from there.
+  // 3. Warm start (eq. (5.9); for ellipses, then the root of the quartic
+  // (5.9b)); 4. Newton on ω from there.
+  double start = warm_start(p);
+  if constexpr (D == 2) start = rational_start(p, start);
   return solve_after_newton<Fast>(
-      p, newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter), out, r_lo);
+      p, newton_on_omega<Fast>(p, start, warm_newton_iter), out, r_lo);
 }
 
 template <bool Fast, int D>

@@ -252,9 +252,10 @@ PW85_INLINE Decision point_filters(PlainPoint<D> const &pt, double h,
                                     : Decision::undecided;
 }
 
-// The search's own Newton on ω from the warm start (step 4,
-// newton_on_omega()), with filters 3 and 4 at each of its points: the
-// bounds hold at every λ, so each point is certified as the first; the
+// The search's own Newton on ω from its start (step 4, newton_on_omega();
+// for ellipses once filters 3 and 4 fail at λ0), with filters 3 and 4 at
+// each of its points: the bounds hold at every λ, so each point is
+// certified as the first; the
 // intervals shrink onto μ² as λ → λ*, and the test decides as soon as one
 // excludes 1, near contact after a few steps, without the search's
 // certification and finish. Where Newton stops on a small step, up to
@@ -269,8 +270,20 @@ Status decide(Filtering<D> const &s, Decision *d) noexcept {
     *d = point_filters(pt, h, s);
     return *d != Decision::undecided;
   };
+  double start = warm_start(p);
+  if constexpr (D == 2) {
+    // The filters at the warm start first (far from contact they decide
+    // there, without the quartic's cost); else Newton from the root of the
+    // quartic (warm_start.hpp, rational_start()).
+    PlainPoint<D> pt;
+    if (evaluate_terms<Fast>(start, p, &pt)) {
+      *d = point_filters(pt, HUGE_VAL, s);
+      if (*d != Decision::undecided) return Status::success;
+    }
+    start = rational_start(p, start);
+  }
   NewtonResult<D> const newton =
-      newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter, visit);
+      newton_on_omega<Fast>(p, start, warm_newton_iter, visit);
   if (*d != Decision::undecided) return Status::success;
   if (newton.stop == NewtonStop::small_step) {
     double lambda = newton.lambda;

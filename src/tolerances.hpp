@@ -59,6 +59,14 @@ constexpr int restart_newton_iter = 3;
 // the plain ω for cond(Q) near 1e6. (At 1e-4, λ ended 6e-14 off on the
 // reference data, for 1% fewer evaluations.)
 constexpr double newton_accept = 1e-5;
+// The two-dimensional start (warm_start.hpp, rational_start()) takes at
+// most this many Halley steps on its quartic P, and stops where Newton's
+// step P/P′ is at most rational_start_accept relative to min(λ, 1 − λ):
+// Halley's step from there leaves λ about the cube of that off (to the
+// rounding of the coefficients), within the newton_accept of step 4's
+// first point.
+constexpr int rational_start_steps = 12;
+constexpr double rational_start_accept = 1e-2;
 // Newton steps on ω from the warm start, before Brent's method certifies.
 constexpr int warm_newton_iter = 8;
 // The width of Brent's first bracket, which already meets Brent's stopping

@@ -4,9 +4,13 @@
 #ifndef PW85_SRC_WARM_START_HPP
 #define PW85_SRC_WARM_START_HPP
 
+#include <algorithm>
+#include <cmath>
+
 #include "ldl.hpp"
 #include "problem.hpp"
 #include "sym.hpp"
+#include "tolerances.hpp"
 
 namespace pw85::detail {
 
@@ -36,6 +40,70 @@ inline double warm_start(double a1, double a2) noexcept {
 template <int D>
 inline double warm_start(Problem<D> const &p) noexcept {
   return warm_start(p.a1, p.a2);
+}
+
+// The two-dimensional start (docs/optimisation.rst, step 3, "ellipses"):
+// with s = 1 − λ, t = λ and Q(λ) = s·Q1 + t·Q2, rᵀ·adj(Q(λ))·r = ν0·s + ν1·t
+// (adj is linear for 2×2 forms; νᵢ = rᵀ·adj(Qᵢ)·r) and
+// det Q(λ) = β0·s² + β1·s·t + β2·t² (β0 = det Q1, β2 = det Q2,
+// β1 = tr(adj(Q1)·Q2)), so f = s·t·(ν0·s + ν1·t)/det Q(λ) and f′ has the
+// sign of the quartic
+//   P = ν0β0·s⁴ + 2ν1β0·s³t + ((ν1 − ν0)β1 + ν1β0 − ν0β2)·s²t²
+//       − 2ν0β2·st³ − ν1β2·t⁴,
+// (eq. (5.9b)), P(0) > 0 > P(1). Halley's steps on P, safeguarded by the
+// bracket of its signs, from λ0 cost a few dozen flops each, against a
+// factorisation, a solve and four products per plain point. The
+// coefficients are rounded (det Qᵢ cancels as cond(Qᵢ) grows): the root is
+// a start only, which the certified stages do not rely on. Returns λ0
+// where a coefficient is not finite or P fails to change sign between the
+// ends; always a λ in (0, 1) when λ0 is.
+inline double rational_start(Problem<2> const &p, double lambda0) noexcept {
+  double const *a = p.q1, *b = p.q2, *r = p.r;
+  double const r00 = r[0] * r[0], r01 = 2.0 * (r[0] * r[1]), r11 = r[1] * r[1];
+  double const nu0 = a[2] * r00 - a[1] * r01 + a[0] * r11;
+  double const nu1 = b[2] * r00 - b[1] * r01 + b[0] * r11;
+  double const beta0 = a[0] * a[2] - a[1] * a[1];
+  double const beta2 = b[0] * b[2] - b[1] * b[1];
+  double const beta1 = a[2] * b[0] + a[0] * b[2] - 2.0 * (a[1] * b[1]);
+  double const c0 = nu0 * beta0, c1 = 2.0 * (nu1 * beta0),
+               c2 = (nu1 - nu0) * beta1 + (nu1 * beta0 - nu0 * beta2),
+               c3 = -2.0 * (nu0 * beta2), c4 = -(nu1 * beta2);
+  // P = Σ cⱼ·s^(4−j)·t^j, P′ = Σ dⱼ·s^(3−j)·t^j, P″ = Σ eⱼ·s^(2−j)·t^j.
+  double const d0 = c1 - 4.0 * c0, d1 = 2.0 * c2 - 3.0 * c1,
+               d2 = 3.0 * c3 - 2.0 * c2, d3 = 4.0 * c4 - c3;
+  double const e0 = d1 - 3.0 * d0, e1 = 2.0 * (d2 - d1), e2 = 3.0 * d3 - d2;
+  if (!(c0 > 0.0 && c4 < 0.0 && std::isfinite(c2) && std::isfinite(d0) &&
+        std::isfinite(d1) && std::isfinite(d2) && std::isfinite(d3)))
+    return lambda0;
+  double lo = 0.0, hi = 1.0, lambda = lambda0;
+  for (int k = 0; k < rational_start_steps; ++k) {
+    double const t = lambda, s = 1.0 - lambda;
+    double const ss = s * s, st = s * t, tt = t * t;
+    double const pv =
+        ss * (c0 * ss + c1 * st + c2 * tt) + tt * (c3 * st + c4 * tt);
+    double const dp = ss * (d0 * s + d1 * t) + tt * (d2 * s + d3 * t);
+    if (pv == 0.0) return lambda;
+    (pv > 0.0 ? lo : hi) = lambda;
+    double const ddp = ss * e0 + st * e1 + tt * e2;
+    // Halley's step where P decreases (as at its root); a NaN, a step out
+    // of the bracket, or a point where P does not decrease (P may rise
+    // from λ = 0 before it falls, and Halley's step is then small where
+    // P′ vanishes, far from the root) bisects.
+    double next = lambda - 2.0 * pv * dp / (2.0 * dp * dp - pv * ddp);
+    if (!(dp < 0.0 && next > lo && next < hi)) {
+      next = lo == 0.0   ? 0.0625 * hi
+             : hi == 1.0 ? 1.0 - 0.0625 * (1.0 - lo)
+                         : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) return lambda;
+    } else if (std::fabs(pv) <= rational_start_accept *
+                                    std::min(lambda, 1.0 - lambda) *
+                                    std::fabs(dp)) {
+      // Newton's step P/P′ at most rational_start_accept (relative).
+      return next;
+    }
+    lambda = next;
+  }
+  return lambda;
 }
 
 // Newton's step on ω from an end of [0, 1]. At λ = 0, ω = −1 and

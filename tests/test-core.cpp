@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Kernels of the core that the public API does not expose on their own,
 // tested through the core's static library: the factorisations of Q(λ),
-// the bracket given to GSL's Brent minimiser, and the spatial index's
-// inscribed radius and bulk insertion.
+// the bracket given to GSL's Brent minimiser, the start of the search of
+// ellipses, and the spatial index's inscribed radius and bulk insertion.
 #include <glib.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
@@ -18,8 +18,10 @@
 #include "index/index.hpp"
 #include "ldl.hpp"
 #include "pw85.h"
+#include "problem.hpp"
 #include "pw85_2d.h"
 #include "testutil.h"
+#include "warm_start.hpp"
 
 namespace {
 
@@ -253,6 +255,112 @@ void test_deep_overlap_2d() {
   g_rand_free(rng);
 }
 
+// The maximiser of f for the problem p (scaled and oriented), computed
+// independently of the quartic of rational_start(): bisection in long
+// double on the sign of f′ = μ1² − μ2² (eq. (5.4)), s = Q(λ)⁻¹·r from the
+// 2×2 inverse, 120 halvings (below the long double's resolution of λ*
+// for the pairs drawn here, λ* ≥ 1e-6).
+long double maximiser_2d(pw85::detail::Problem<2> const &p) {
+  long double lo = 0.0L, hi = 1.0L;
+  for (int k = 0; k < 120; ++k) {
+    long double const l = 0.5L * (lo + hi), m = 1.0L - l;
+    long double const a = m * p.q1[0] + l * p.q2[0],
+                      b = m * p.q1[1] + l * p.q2[1],
+                      c = m * p.q1[2] + l * p.q2[2];
+    long double const det = a * c - b * b;
+    long double const s0 = (c * p.r[0] - b * p.r[1]) / det,
+                      s1 = (a * p.r[1] - b * p.r[0]) / det;
+    long double const p1 = p.q1[0] * s0 * s0 + 2.0L * p.q1[1] * s0 * s1 +
+                           p.q1[2] * s1 * s1;
+    long double const p2 = p.q2[0] * s0 * s0 + 2.0L * p.q2[1] * s0 * s1 +
+                           p.q2[2] * s1 * s1;
+    (m * m * p1 - l * l * p2 > 0.0L ? lo : hi) = l;
+  }
+  return 0.5L * (lo + hi);
+}
+
+// A random ellipse: semi-axes 10^U(lo, 0), a random angle.
+void random_ellipse(GRand *rng, double lo, double q[3]) {
+  double const a[2] = {std::pow(10., g_rand_double_range(rng, lo, 0.)),
+                       std::pow(10., g_rand_double_range(rng, lo, 0.))};
+  g_assert_cmpint(pw85_2d_ellipse(a, g_rand_double_range(rng, -3.2, 3.2), q), ==,
+                  PW85_SUCCESS);
+}
+
+// rational_start() (warm_start.hpp, eq. (5.9b)) lands within 1e-5 of λ*
+// relative to min(λ*, 1 − λ*), inside the newton_accept of step 4, where
+// the search then accepts its first point: its last Halley step was below
+// 1e-2, the next is about the cube of that off (1e-6), and the
+// coefficients' rounding adds about ε·cond(Qᵢ) (1e-12 here). Measured
+// worst on these pairs: printed. A wrong coefficient of the quartic moves
+// its root by far more (checked: c2 without its ν1β0 term fails).
+void test_rational_start() {
+  using namespace pw85::detail;
+  GRand *rng = g_rand_new_with_seed(2031);
+  double worst = 0.0, worst_sphere = 0.0;
+  for (int n = 0; n < 2000; n++) {
+    double q1[3], q2[3];
+    random_ellipse(rng, -2., q1);  // aspect ratios to 100
+    random_ellipse(rng, -2., q2);
+    double const t = g_rand_double_range(rng, -3.2, 3.2);
+    double const len = std::pow(10., g_rand_double_range(rng, -1., 1.));
+    double const r[2] = {len * std::cos(t), len * std::sin(t)};
+    Problem<2> p;
+    g_assert_true(prepare(r, q1, q2, &p) == Status::success);
+    quads(&p);
+    orient(&p);
+    double const l0 = warm_start(p);
+    double const l = rational_start(p, l0);
+    long double const star = maximiser_2d(p);
+    long double const near = std::fmin(star, 1.0L - star);
+    double const err = double(std::fabs(l - star) / near);
+    if (!(err <= 1e-5))
+      g_error("rational_start: λ = %.17g, λ* = %.17Lg, λ0 = %.17g (pair %d)", l,
+              star, l0, n);
+    worst = std::fmax(worst, err);
+    worst_sphere = std::fmax(worst_sphere, double(std::fabs(l0 - star) / near));
+  }
+  g_test_message("rational_start: worst relative error %.3g (the sphere "
+                 "model's: %.3g)", worst, worst_sphere);
+  // The sphere model alone is far off on these pairs: the test would see a
+  // start that stayed at λ0.
+  g_assert_cmpfloat(worst_sphere, >, 1e-2);
+  g_rand_free(rng);
+}
+
+// Where the quartic's coefficients are not finite, or do not show
+// P(0) > 0 > P(1) (a form that is not positive definite), λ0 stays; for
+// forms conditioned up to 1e15 the start is some λ in (0, 1).
+void test_rational_start_edges() {
+  using namespace pw85::detail;
+  Problem<2> p{};
+  double const huge[3] = {1e200, 0.0, 1e200}, unit[3] = {1.0, 0.0, 1.0};
+  double const indefinite[3] = {1.0, 2.0, 1.0};
+  double const r[2] = {1.0, 0.5};
+  std::memcpy(p.r, r, sizeof r);
+  std::memcpy(p.q1, huge, sizeof huge);  // ν0β0 ~ 1e600
+  std::memcpy(p.q2, unit, sizeof unit);
+  g_assert_cmpfloat(rational_start(p, 0.3), ==, 0.3);
+  std::memcpy(p.q1, indefinite, sizeof indefinite);  // β0 = −3, ν0 = 1
+  p.r[1] = 0.0;
+  g_assert_cmpfloat(rational_start(p, 0.3), ==, 0.3);
+  GRand *rng = g_rand_new_with_seed(2032);
+  for (int n = 0; n < 5000; n++) {
+    double q1[3], q2[3];
+    random_ellipse(rng, -7.5, q1);  // cond to 1e15
+    random_ellipse(rng, -7.5, q2);
+    double const t = g_rand_double_range(rng, -3.2, 3.2);
+    double const r2[2] = {std::cos(t), std::sin(t)};
+    Problem<2> q;
+    if (prepare(r2, q1, q2, &q) != Status::success) continue;
+    quads(&q);
+    orient(&q);
+    double const l = rational_start(q, warm_start(q));
+    if (!(l > 0.0 && l < 1.0)) g_error("rational_start: λ = %.17g (pair %d)", l, n);
+  }
+  g_rand_free(rng);
+}
+
 void test_inscribed_radius() {
   GRand *rng = g_rand_new_with_seed(2026);
   int tight = 0, moderate = 0;
@@ -430,6 +538,8 @@ int main(int argc, char **argv) {
   install_failing_gsl_handler();
   g_test_add_func("/pw85/core/ldl/backward-error", test_ldl_backward_error);
   g_test_add_func("/pw85/core/golden-bracket", test_golden_bracket);
+  g_test_add_func("/pw85/core/rational-start", test_rational_start);
+  g_test_add_func("/pw85/core/rational-start/edges", test_rational_start_edges);
   g_test_add_func("/pw85/core/index/inscribed-radius", test_inscribed_radius);
   g_test_add_func("/pw85/core/index/inscribed-radius-2d", test_inscribed_radius_2d);
   g_test_add_func("/pw85/core/index/deep-overlap-2d", test_deep_overlap_2d);
