@@ -212,12 +212,22 @@ struct PlainBounds {
   double cond;    // κ̄(Q(λ)) = tr(Q)·tr(Q⁻¹) ≥ cond(Q(λ))
 };
 
+// λ²·p for λ in (0, 1): below 2⁻⁵¹¹, λ² would be subnormal and keep fewer
+// than 53 bits, which the bounds' margins (ε-relative roundings) do not
+// cover (μ2² 2e-6 low there made pw85_2d_overlap answer "overlap" for
+// μ² = 1 + 11 ulps: fuzz-2d, regress-lambda-squared-underflow); then
+// λ·(λ·p), whose intermediate is of order μ2²/λ. Elsewhere (λ ≥ 2⁻⁵¹¹)
+// the product as before, bit for bit.
+PW85_INLINE double lambda_sq_times(double lambda, double p) noexcept {
+  return lambda >= 0x1p-511 ? lambda * lambda * p : lambda * (lambda * p);
+}
+
 // μ1² and μ2² of *b.
 template <int D>
 PW85_INLINE void plain_mu_sq(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   double const lambda = pt.lambda, mu = 1.0 - lambda;
   b->mu1_sq = mu * mu * pt.p1;
-  b->mu2_sq = lambda * lambda * pt.p2;
+  b->mu2_sq = lambda_sq_times(lambda, pt.p2);
 }
 
 // κ̄ of *b (its margins' only cost, a trace of Q⁻¹ from the factors);

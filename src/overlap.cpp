@@ -145,7 +145,8 @@ PW85_INLINE Decision accurate_bounds(PlainPoint<D> const &pt,
   double const cross = 2.0 * lambda * (sr + 4.0 * eps * abs_sr + e_sq);
   // The margin on the sum of the terms' magnitudes: the cross term may be
   // negative, and of the order of the others where κ(Q(λ)) nears 1/ε.
-  double const lam2_p2 = lambda * lambda * p2, rho_q2 = 2.0 * p.tinv2 * res2;
+  double const lam2_p2 = lambda_sq_times(lambda, p2),
+               rho_q2 = 2.0 * p.tinv2 * res2;
   double const mu2_sq = lam2_p2 + cross + rho_q2 +
                         margin * (lam2_p2 + std::fabs(cross) + rho_q2);
   if (std::max(mu1_sq, mu2_sq) < s.one * (1.0 - 5.0 * eps))

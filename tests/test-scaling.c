@@ -221,6 +221,43 @@ static void test_rescale_paths(void) {
   }
 }
 
+/* A point-like ellipse (entries 2^-1060, subnormal) against a form of
+ * order one, r nearly along its long axis: μ² is rᵀQ2⁻¹r to about 1e-150
+ * (f rises to it for λ far above the first form's size and μ² ≤ rᵀQ2⁻¹r,
+ * the centre bound), and rᵀQ2⁻¹r − 1 = 11.2069·ε exactly in rationals
+ * (python3 fractions: (c·r0² − 2b·r0·r1 + a·r1²)/(ac − b²) − 1 with
+ * Q2 = [[a, b], [b, c]]), outside the 4-ulp band: disjoint. The search
+ * visits λ ≈ 2^-528, where λ² is subnormal: μ2² = λ²·P2 computed with it
+ * came out 2e-6 low, and the overlap test answered −1 (fuzz-2d,
+ * regress-lambda-squared-underflow; the same in 3D with a third axis). */
+static void test_lambda_squared_underflow(void) {
+  double const r2[2] = {0x1.0000000000001p+0, 0x1.0000000003p+0};
+  double const p1[3] = {0x0.0000000004626p-1022, 0., 0x0.000fp-1022};
+  double const p2[3] = {1., 1., 0x1.0000000fa35p+0};
+  double const mr2[2] = {-r2[0], -r2[1]};
+  double out[2];
+  int res = 7;
+  g_assert_cmpint(pw85_2d_contact_function(r2, p1, p2, out), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, 1. + 11. * DBL_EPSILON); /* rounded 11.2069 */
+  g_assert_cmpint(pw85_2d_overlap(r2, p1, p2, &res), ==, PW85_SUCCESS);
+  g_assert_cmpint(res, ==, 1);
+  res = 7;
+  g_assert_cmpint(pw85_2d_overlap(mr2, p2, p1, &res), ==, PW85_SUCCESS);
+  g_assert_cmpint(res, ==, 1);
+  double const r3[3] = {r2[0], r2[1], 0.};
+  double const mr3[3] = {-r2[0], -r2[1], 0.};
+  double const q1[6] = {p1[0], 0., 0., p1[2], 0., p1[2]};
+  double const q2[6] = {1., 1., 0., p2[2], 0., 1.};
+  g_assert_cmpint(pw85_contact_function(r3, q1, q2, out), ==, PW85_SUCCESS);
+  g_assert_cmpfloat(out[0], ==, 1. + 11. * DBL_EPSILON);
+  res = 7;
+  g_assert_cmpint(pw85_overlap(r3, q1, q2, &res), ==, PW85_SUCCESS);
+  g_assert_cmpint(res, ==, 1);
+  res = 7;
+  g_assert_cmpint(pw85_overlap(mr3, q2, q1, &res), ==, PW85_SUCCESS);
+  g_assert_cmpint(res, ==, 1);
+}
+
 int main(int argc, char **argv) {
   g_test_init(&argc, &argv, NULL);
   install_failing_gsl_handler();
@@ -233,5 +270,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/scaling/f_neg/power-of-two", test_f_neg_scale);
   g_test_add_func("/pw85/scaling/span-limit", test_span_limit);
   g_test_add_func("/pw85/scaling/rescale-paths", test_rescale_paths);
+  g_test_add_func("/pw85/scaling/overlap/lambda-squared-underflow",
+                  test_lambda_squared_underflow);
   return g_test_run();
 }
