@@ -53,9 +53,10 @@ template <bool Fast, int D>
 Status solve(Problem<D> const &p, double out[2],
              double const *r_lo = nullptr) noexcept;
 
-// Steps 5 to 7, after step 4's Newton from the warm start (newton: its
-// result, as newton_on_omega<Fast>(p, warm_start(p), warm_newton_iter)
-// returns it, or stopped earlier by a visitor): solve() is step 4, then
+// Steps 5 to 7, after step 4's Newton from the start of step 3 (newton:
+// its result, as newton_on_omega<Fast>(p, start, warm_newton_iter) returns
+// it, start being warm_start(p), then for ellipses rational_start(), or
+// stopped earlier by a visitor): solve() is step 4, then
 // this. The overlap test runs step 4 itself with its filters as the
 // visitor, and continues here when they do not decide.
 template <bool Fast, int D>

@@ -49,14 +49,15 @@ inline double warm_start(Problem<D> const &p) noexcept {
 // β1 = tr(adj(Q1)·Q2)), so f = s·t·(ν0·s + ν1·t)/det Q(λ) and f′ has the
 // sign of the quartic
 //   P = ν0β0·s⁴ + 2ν1β0·s³t + ((ν1 − ν0)β1 + ν1β0 − ν0β2)·s²t²
-//       − 2ν0β2·st³ − ν1β2·t⁴,
-// (eq. (5.9b)), P(0) > 0 > P(1). Halley's steps on P, safeguarded by the
-// bracket of its signs, from λ0 cost a few dozen flops each, against a
+//       − 2ν0β2·st³ − ν1β2·t⁴
+// (eq. (5.9b)), P(0) > 0 > P(1). Halley's steps on P from λ0, safeguarded
+// by the bracket of its signs, cost a few dozen flops each, against a
 // factorisation, a solve and four products per plain point. The
 // coefficients are rounded (det Qᵢ cancels as cond(Qᵢ) grows): the root is
 // a start only, which the certified stages do not rely on. Returns λ0
-// where a coefficient is not finite or P fails to change sign between the
-// ends; always a λ in (0, 1) when λ0 is.
+// where the coefficients are not finite or do not show P(0) > 0 > P(1), or
+// where no step is accepted within rational_start_steps; always a λ in
+// (0, 1) when λ0 is.
 inline double rational_start(Problem<2> const &p, double lambda0) noexcept {
   double const *a = p.q1, *b = p.q2, *r = p.r;
   double const r00 = r[0] * r[0], r01 = 2.0 * (r[0] * r[1]), r11 = r[1] * r[1];
@@ -65,16 +66,22 @@ inline double rational_start(Problem<2> const &p, double lambda0) noexcept {
   double const beta0 = a[0] * a[2] - a[1] * a[1];
   double const beta2 = b[0] * b[2] - b[1] * b[1];
   double const beta1 = a[2] * b[0] + a[0] * b[2] - 2.0 * (a[1] * b[1]);
-  double const c0 = nu0 * beta0, c1 = 2.0 * (nu1 * beta0),
-               c2 = (nu1 - nu0) * beta1 + (nu1 * beta0 - nu0 * beta2),
-               c3 = -2.0 * (nu0 * beta2), c4 = -(nu1 * beta2);
+  double c0 = nu0 * beta0, c1 = 2.0 * (nu1 * beta0),
+         c2 = (nu1 - nu0) * beta1 + (nu1 * beta0 - nu0 * beta2),
+         c3 = -2.0 * (nu0 * beta2), c4 = -(nu1 * beta2);
+  if (!(c0 > 0.0 && c4 < 0.0 && std::isfinite(c1 + c2 + c3))) return lambda0;
+  // P divided by its largest coefficient (the root is the same), so that
+  // Halley's products stay in range however far apart the forms' sizes.
+  double cmax = c0 > -c4 ? c0 : -c4;
+  for (double const ck : {c1, c2, c3})
+    cmax = std::fabs(ck) > cmax ? std::fabs(ck) : cmax;
+  double const scale = 1.0 / cmax;
+  if (!(scale > 0.0 && scale < HUGE_VAL)) return lambda0;  // also NaN
+  c0 *= scale, c1 *= scale, c2 *= scale, c3 *= scale, c4 *= scale;
   // P = Σ cⱼ·s^(4−j)·t^j, P′ = Σ dⱼ·s^(3−j)·t^j, P″ = Σ eⱼ·s^(2−j)·t^j.
   double const d0 = c1 - 4.0 * c0, d1 = 2.0 * c2 - 3.0 * c1,
                d2 = 3.0 * c3 - 2.0 * c2, d3 = 4.0 * c4 - c3;
   double const e0 = d1 - 3.0 * d0, e1 = 2.0 * (d2 - d1), e2 = 3.0 * d3 - d2;
-  if (!(c0 > 0.0 && c4 < 0.0 && std::isfinite(c2) && std::isfinite(d0) &&
-        std::isfinite(d1) && std::isfinite(d2) && std::isfinite(d3)))
-    return lambda0;
   double lo = 0.0, hi = 1.0, lambda = lambda0;
   for (int k = 0; k < rational_start_steps; ++k) {
     double const t = lambda, s = 1.0 - lambda;
@@ -84,26 +91,34 @@ inline double rational_start(Problem<2> const &p, double lambda0) noexcept {
     double const dp = ss * (d0 * s + d1 * t) + tt * (d2 * s + d3 * t);
     if (pv == 0.0) return lambda;
     (pv > 0.0 ? lo : hi) = lambda;
-    double const ddp = ss * e0 + st * e1 + tt * e2;
-    // Halley's step where P decreases (as at its root); a NaN, a step out
-    // of the bracket, or a point where P does not decrease (P may rise
-    // from λ = 0 before it falls, and Halley's step is then small where
-    // P′ vanishes, far from the root) bisects.
-    double next = lambda - 2.0 * pv * dp / (2.0 * dp * dp - pv * ddp);
-    if (!(dp < 0.0 && next > lo && next < hi)) {
-      next = lo == 0.0   ? 0.0625 * hi
-             : hi == 1.0 ? 1.0 - 0.0625 * (1.0 - lo)
-                         : 0.5 * (lo + hi);
-      if (!(next > lo && next < hi)) return lambda;
-    } else if (std::fabs(pv) <= rational_start_accept *
-                                    std::min(lambda, 1.0 - lambda) *
-                                    std::fabs(dp)) {
-      // Newton's step P/P′ at most rational_start_accept (relative).
-      return next;
+    double const near = std::min(lambda, 1.0 - lambda);
+    if (dp < 0.0) {  // P decreases, as at its root
+      // Accepted where Newton's step P/P′ is at most rational_start_accept
+      // (relative): Halley's step from there, or λ itself where that step
+      // leaves the bracket (it rounds onto λ, now one of its ends).
+      bool const accept = std::fabs(pv) <= rational_start_accept * near * -dp;
+      double const ddp = ss * e0 + st * e1 + tt * e2;
+      double const next = lambda - 2.0 * pv * dp / (2.0 * dp * dp - pv * ddp);
+      if (next > lo && next < hi) {
+        if (accept) return next;
+        lambda = next;
+        continue;
+      }
+      if (accept) return lambda;
     }
+    // P rises here (it may rise from λ = 0 before it falls, and Halley's
+    // step is then small where P′ vanishes, far from the root), or the
+    // step left the bracket: towards the root by a factor 16 relative to
+    // the nearer end of [0, 1] while the bracket reaches one, else to its
+    // middle.
+    double const next = lo == 0.0 ? 0.0625 * hi
+                        : hi == 1.0
+                            ? std::min(16.0 * lo, 1.0 - 0.0625 * (1.0 - lo))
+                            : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) return lambda;
     lambda = next;
   }
-  return lambda;
+  return lambda0;
 }
 
 // Newton's step on ω from an end of [0, 1]. At λ = 0, ω = −1 and
