@@ -16,10 +16,8 @@ int batch_threads(int requested, std::size_t n) noexcept {
 #if defined(PW85_OPENMP)
   // One thread beyond 2^56 pairs (run_batch packs an index in 56 bits).
   if (n >= (std::size_t{1} << 56)) return 1;
-  std::size_t const wanted = static_cast<std::size_t>(
-      requested == 0 ? omp_get_max_threads() : requested);
-  return static_cast<int>(
-      std::max<std::size_t>(1, std::min(wanted, n / batch_grain)));
+  return team_size(requested == 0 ? omp_get_max_threads() : requested,
+                   n / batch_grain);
 #else
   (void)requested;
   (void)n;

@@ -7,9 +7,29 @@
 #ifndef PW85_SRC_BATCH_HPP
 #define PW85_SRC_BATCH_HPP
 
+#include <algorithm>
 #include <cstddef>
 
 namespace pw85::detail {
+
+// The most threads any parallel region of libpw85 starts; a larger count
+// runs on this many (every threaded result is the same for any count).
+// libgomp reserves the start data of a team's threads on the caller's
+// stack (gcc 12's: about 100 bytes a thread): pw85_pack() with 100 000
+// threads died of SIGSEGV in GOMP_parallel, and libgomp exits the process
+// where a thread cannot be created.
+constexpr int max_threads = 1024;
+
+// The threads a parallel region over `work` units runs on: the count asked
+// (≥ 1), at most one per unit and at most max_threads, at least 1.
+inline int team_size(int requested, std::size_t work) noexcept {
+  std::size_t const most =
+      std::min(work, static_cast<std::size_t>(max_threads));
+  return requested < 1 ? 1
+         : static_cast<std::size_t>(requested) < most
+             ? requested
+             : std::max(1, static_cast<int>(most));
+}
 
 // The consecutive indices handed to one call of a BatchRange, and the
 // least number of them per thread: no thread is started for fewer than

@@ -6,6 +6,7 @@
  * the call itself; n = 0; the thread policy; no thread without asking. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
+#include <limits.h>
 #include <math.h>
 #include <pw85.h>
 #include <stdint.h>
@@ -355,6 +356,11 @@ static void test_thread_policy(void) {
   g_assert_cmpint(pw85_batch_threads(2, 100000), ==, 2);
   g_assert_cmpint(pw85_batch_threads(0, 100000), ==, 3); /* OMP_NUM_THREADS */
   g_assert_cmpint(pw85_batch_threads(0, 600), ==, 2);
+  /* At most 1024 (pw85.h), however many pairs. */
+  g_assert_cmpint(pw85_batch_threads(100000, (size_t)1 << 40), ==, 1024);
+  g_assert_cmpint(pw85_batch_threads(INT_MAX, (size_t)1 << 40), ==, 1024);
+  g_assert_cmpint(pw85_batch_threads(1024, (size_t)1 << 40), ==, 1024);
+  g_assert_cmpint(pw85_batch_threads(1000, (size_t)1 << 40), ==, 1000);
 #else
   g_assert_cmpint(pw85_batch_threads(8, 100000), ==, 1);
   g_assert_cmpint(pw85_batch_threads(0, 100000), ==, 1);

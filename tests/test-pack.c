@@ -3,6 +3,7 @@
  * image (pw85_overlap(), no index); determinism (twice, and on 1 and 2
  * threads); the outcomes; the aligned rule; the forms; every bad input. */
 #include <glib.h>
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -368,6 +369,32 @@ static void test_determinism_threads(void) {
   g_free(a);
 }
 
+/* Thread counts far above the work and above the cap of 1024
+ * (pw85_index.h): the packing of 1 thread. 100 000 threads asked of OpenMP
+ * overflowed libgomp's stack (SIGSEGV in GOMP_parallel), INT_MAX gave
+ * PW85_ENOMEM. */
+static void test_many_threads(void) {
+  size_t const n = 40;
+  double *a = triaxial(n, 0.5, 0.2, 0);
+  pw85_pack_options o;
+  pw85_pack_options_init(&o);
+  o.seed = 3;
+  o.step_limit = 2000;
+  Packing s1 = run(n, a, &o);
+  g_assert_cmpint(s1.status, ==, PW85_SUCCESS);
+  int const counts[] = {100000, INT_MAX};
+  for (size_t k = 0; k < G_N_ELEMENTS(counts); k++) {
+    o.threads = counts[k];
+    Packing s = run(n, a, &o);
+    g_assert_cmpint(s.status, ==, PW85_SUCCESS);
+    assert_same_packing(&s1, &s, counts[k] == INT_MAX ? "INT_MAX threads"
+                                                      : "100000 threads");
+    free_packing(&s);
+  }
+  free_packing(&s1);
+  g_free(a);
+}
+
 /* The aspect gives only the proportions of the box, and the axis only a
  * direction (pw85_pack.h): scaled by a power of two, the packing is the
  * same, bit for bit. (The product of the aspects overflowed or underflowed:
@@ -519,6 +546,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/pack/targets", test_targets);
   g_test_add_func("/pw85/pack/determinism", test_determinism);
   g_test_add_func("/pw85/pack/determinism-threads", test_determinism_threads);
+  g_test_add_func("/pw85/pack/many-threads", test_many_threads);
   g_test_add_func("/pw85/pack/outcomes", test_outcomes);
   g_test_add_func("/pw85/pack/aligned", test_aligned);
   g_test_add_func("/pw85/pack/errors", test_errors);

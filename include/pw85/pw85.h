@@ -673,7 +673,8 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
  *  Threads. `threads` = 1: the calling thread only; 0: OpenMP's default
  *  count (omp_get_max_threads(): OMP_NUM_THREADS if set, else one per
  *  processor); k > 1: up to k. A batch of n pairs uses at most n/256
- *  threads (rounded down): no thread is started for n < 512, nor for
+ *  threads (rounded down), and never more than 1024 (as every threaded
+ *  call of libpw85): no thread is started for n < 512, nor for
  *  threads = 1. pw85_batch_threads() gives the count a call would use.
  *  Pairs are handed to threads, as they become free, in chunks of
  *  consecutive indices: about 32 per thread, of at least 256 pairs. The results do not depend on the count, bit for
@@ -689,8 +690,8 @@ PW85_API int pw85_contact_derivatives(double const r12[PW85_DIM],
  *
  * @param[in] threads the count requested: 0 for OpenMP's default, k ≥ 1.
  * @param[in] n the number of pairs.
- * @return the count, ≥ 1: min(k, n/256) and at least 1 (k = OpenMP's
- *         default for threads = 0); 1 for n ≥ 2⁵⁶ (a batch that large
+ * @return the count, ≥ 1: min(k, n/256, 1024) and at least 1 (k =
+ *         OpenMP's default for threads = 0); 1 for n ≥ 2⁵⁶ (a batch that large
  *         runs in the calling thread) and when libpw85 was built without
  *         OpenMP; 0 if threads < 0 (the batch calls reject it).
  * @since 2.2.0

@@ -68,9 +68,10 @@
  * need exclusive access to it; queries only read it and may run
  * concurrently with each other from several threads. The all-pairs
  * queries, pw85_2d_index_overlap_any_batch() and
- * pw85_2d_index_insert_many_threads() start `threads` OpenMP threads when
- * libpw85 was built with OpenMP (see pw85_index_openmp()), and run
- * serially otherwise; their output (the index they leave, for the last) is
+ * pw85_2d_index_insert_many_threads() start up to `threads` OpenMP
+ * threads when libpw85 was built with OpenMP (see pw85_index_openmp()),
+ * and run serially otherwise, with the limits of pw85_index.h (at most
+ * 1024); their output (the index they leave, for the last) is
  * the same, bit for bit, for any number of threads. No other function
  * starts a thread.
  *

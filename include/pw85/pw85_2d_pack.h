@@ -47,8 +47,8 @@
  *
  * Determinism: the outputs are a function of the inputs (including the
  * seed), bit for bit, whatever the thread count; a time limit makes them
- * depend on the speed of the machine. Threads: `threads` OpenMP threads
- * (see pw85_index_openmp()). Thread safety: reentrant; the callback is
+ * depend on the speed of the machine. Threads: up to `threads` OpenMP
+ * threads, at most 1024 (see pw85_index_openmp() and pw85_index.h). Thread safety: reentrant; the callback is
  * called from the calling thread.
  *
  * The command-line tool packs ellipses with it (pw85-pack --2d); the

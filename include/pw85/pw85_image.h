@@ -44,8 +44,8 @@
  * the image); nothing is allocated: the memory is the caller's
  * image (4 bytes per voxel). Threads: `threads` OpenMP threads when
  * libpw85 was built with OpenMP (pw85_index_openmp()), 1 runs in the
- * calling thread, 0 is OpenMP's default; at most dims[0] threads, and
- * one per 4096 voxels, are started (none for an image of fewer than 4096
+ * calling thread, 0 is OpenMP's default; at most dims[0] threads, one
+ * per 4096 voxels, and 1024, are started (none for an image of fewer than 4096
  * voxels); the image is the same, bit for bit, for any number. Reentrant: concurrent calls on different images are
  * safe.
  *

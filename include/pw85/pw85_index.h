@@ -63,8 +63,11 @@
  * queries only read it and may run concurrently with each other from
  * several threads. The all-pairs queries,
  * pw85_index_overlap_any_batch() and pw85_index_insert_many_threads()
- * start `threads` OpenMP threads when libpw85 was built with OpenMP (see
- * pw85_index_openmp()), and run serially otherwise; their output (the
+ * start up to `threads` OpenMP threads when libpw85 was built with OpenMP
+ * (see pw85_index_openmp()), and run serially otherwise: no more than
+ * their work is worth (one per 256 ellipsoids or candidates), and
+ * never more than 1024, a larger count running as 1024 (libgomp takes the
+ * start data of its threads from the caller's stack); their output (the
  * index they leave, for the last) is the same, bit for bit, for any
  * number of threads. No other function starts a thread.
  *

@@ -40,7 +40,8 @@
  * counter-based generator per ellipsoid. A time limit makes the outputs
  * depend on the speed of the machine (where the run stops).
  *
- * Threads: `threads` OpenMP threads (see pw85_index_openmp()). Thread
+ * Threads: up to `threads` OpenMP threads, at most 1024 (see
+ * pw85_index_openmp() and pw85_index.h). Thread
  * safety: reentrant; the callback is called from the calling thread.
  *
  * @since 2.4.0

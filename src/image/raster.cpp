@@ -47,6 +47,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "batch.hpp"
 #include "checks.hpp"
 #include "compiler.hpp"
 #include "image/exact.hpp"
@@ -496,6 +497,7 @@ void voxel_image(Grid const &grid, std::size_t n, double const *centres,
   std::int64_t const voxels = n0 * grid.dims[1] * grid.dims[2];
   std::int64_t const most = std::min(n0, voxels / 4096 + 1);
   if (threads > most) threads = static_cast<int>(most);
+  if (threads > max_threads) threads = max_threads;
   // Chunks of planes: about 16 per thread, for the dynamic schedule.
   std::int64_t per = n0 / (16 * (threads > 0 ? threads : 1));
   if (per < 1) per = 1;

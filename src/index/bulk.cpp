@@ -30,6 +30,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "batch.hpp"
 #include "checks.hpp"
 #include "index.hpp"
 
@@ -162,7 +163,7 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
   threads = 1;
 #endif
   std::size_t const chunks = (n + bulk_chunk - 1) / bulk_chunk;
-  int const nt = int(std::min<std::size_t>(std::size_t(threads), n / bulk_per_thread + 1));
+  int const nt = team_size(threads, n / bulk_per_thread + 1);
   auto items_of = [&](std::size_t k, std::size_t end) {
     return std::pair<std::size_t, std::size_t>{k * bulk_chunk,
                                                std::min(end, (k + 1) * bulk_chunk)};

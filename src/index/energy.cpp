@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "batch.hpp"
 #include "broad.hpp"
 #include "geometry.hpp"
 #include "ldl.hpp"
@@ -254,7 +255,7 @@ Status assembly_energy(spatial::Index<D> const &index,
                   : pair_term(index, all.data(), pairs[p], spec.param, 0.0,
                               0.0, &terms[k]);
     };
-    int const nt = int(std::min<std::size_t>(std::size_t(threads), m / 256 + 1));
+    int const nt = team_size(threads, m / 256 + 1);
     if (nt <= 1) {
       for (std::size_t k = 0; k < m && failed == m; ++k) {
         Status const s = one(k);

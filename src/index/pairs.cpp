@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "batch.hpp"
 #include "broad.hpp"
 #include "index.hpp"
 
@@ -86,8 +87,7 @@ std::size_t cell_of(Grid<D> const &g, double const *c,
 // The number of threads a loop of n iterations is worth (a thread per
 // 4096 iterations at least).
 int threads_for(int threads, std::size_t n) noexcept {
-  std::size_t const most = n / 4096 + 1;
-  return std::size_t(threads) < most ? threads : int(most);
+  return team_size(threads, n / 4096 + 1);
 }
 
 // The snapshot's counting sort keeps a histogram of the grid's cells per
@@ -682,12 +682,14 @@ Status Index<D>::pairs(bool within, double t, int threads,
 #endif
   Snapshot<D> snap;
   if (!take_snapshot(*this, threads, &snap)) return Status::no_memory;
-  Buffer<Share<D>> shares;
-  if (!shares.resize(std::size_t(threads))) return Status::no_memory;
-  Search<D> const search(*this, snap, within, within ? t : 1.0);
   std::size_t const n = snap.hot.size();
   constexpr std::size_t chunk = 256;
   std::size_t const chunks = (n + chunk - 1) / chunk;
+  // A share per thread: no more threads than chunks, nor than max_threads.
+  threads = team_size(threads, chunks);
+  Buffer<Share<D>> shares;
+  if (!shares.resize(std::size_t(threads))) return Status::no_memory;
+  Search<D> const search(*this, snap, within, within ? t : 1.0);
   auto run = [&](std::size_t k, Share<D> *share) {
     if (share->status == Status::no_memory) return;
     std::size_t const end = std::min(n, (k + 1) * chunk);

@@ -39,8 +39,9 @@ q1 and q2 of shape (..., 6), whose leading axes broadcast as NumPy's do
 one result: ``contact_function(r12, q1, q2)`` with r12 of shape (N, 3)
 returns an array of shape (N, 2). One call of the library's batch
 function computes every pair, each exactly as alone (bit for bit), with
-the GIL released; ``threads=k`` spreads the pairs over k OpenMP threads
-(0: OpenMP's default, ``OMP_NUM_THREADS`` if set), with the same results
+the GIL released; ``threads=k`` spreads the pairs over up to k OpenMP
+threads, at most 1024 (0: OpenMP's default, ``OMP_NUM_THREADS`` if set),
+with the same results
 for any count. If a pair fails, `Error` names the first one (its index in
 the broadcast shape, its inputs); its ``index`` and ``statuses``
 attributes give that index and every pair's status, and a preallocated
