@@ -377,9 +377,13 @@ function contactDerivatives(r12, q1, q2) {
 // Batches.
 
 function threadCount(threads) {
-  if (!Number.isInteger(threads) || threads < 0 || threads > 2 ** 31 - 1) {
+  if (!Number.isInteger(threads) || threads < 0) {
     throw new RangeError('pw85: threads must be 0 (OpenMP\'s default) or a ' +
       `positive integer, got ${threads}`);
+  }
+  if (threads > 2 ** 31 - 1) {
+    throw new RangeError('pw85: threads must be at most 2³¹ − 1 (a C int), ' +
+      `got ${threads}`);
   }
   return threads;
 }
@@ -1067,6 +1071,10 @@ class IndexBase {
     if (!Number.isInteger(threads) || threads < 1) {
       throw new Pw85Error(status.PW85_EINVAL, name,
         `threads = ${threads} is not an integer ≥ 1`);
+    }
+    if (threads > 2 ** 31 - 1) {
+      throw new Pw85Error(status.PW85_EINVAL, name,
+        `threads = ${threads} is above 2³¹ − 1 (a C int)`);
     }
     return threads;
   }

@@ -231,6 +231,12 @@ def test_bad_arrays(name, pairs):
                            (None, TypeError)]:
         with pytest.raises(error, match="^threads: expected"):
             function(r12, q1, q2, threads=threads)
+    # Each message names the bound that the count breaks.
+    with pytest.raises(ValueError, match="positive count, got -1$"):
+        function(r12, q1, q2, threads=-1)
+    with pytest.raises(ValueError, match=r"at most 2³¹ − 1 \(a C int\), "
+                       "got 2147483648$"):
+        function(r12, q1, q2, threads=2**31)
 
 
 def test_batch_threads():

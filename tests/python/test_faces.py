@@ -193,6 +193,9 @@ def test_index_errors_name_the_cause():
         assert e.status == pypw85.EINVAL and "t = 0 is not > 0" in str(e)
         e = raised(lambda: index.overlapping_pairs(threads=0))
         assert "threads = 0 is not ≥ 1" in str(e)
+        e = raised(lambda: index.overlapping_pairs(threads=2**31))
+        assert e.status == pypw85.EINVAL and \
+            "threads = 2147483648 is above 2³¹ − 1 (a C int)" in str(e)
         assert len(index) == 2  # every failed call left it unchanged
     e = raised(lambda: pypw85.Index([1.0, -2.0, 1.0]))
     assert e.status == pypw85.EINVAL and "box side L_1 = -2 is not > 0" \

@@ -122,6 +122,11 @@ test('batches: one record for all (stride 0), each pair as alone, the item named
     return true;
   });
   assert.throws(() => pw85.overlapBatch(r12.subarray(1), q1, q2), RangeError);
+  // Each message names the bound that the count breaks.
+  assert.throws(() => pw85.overlapBatch(r12, q1, q2, { threads: -1 }),
+    { name: 'RangeError', message: /positive integer, got -1$/ });
+  assert.throws(() => pw85.overlapBatch(r12, q1, q2, { threads: 2 ** 31 }),
+    { name: 'RangeError', message: /at most 2³¹ − 1 \(a C int\), got 2147483648$/ });
   assert.ok(pw85.batchThreads() >= 1);
   assert.equal(pw85.batchThreads(1), 1);
 });
@@ -181,6 +186,8 @@ test('Index errors name the rule, the id, the item and the numbers', () => {
   throwsWith(() => index.overlapAny([0, -1e10, 0], q), 'PW85_EINVAL', '|c_1| = 10000000000');
   throwsWith(() => index.within([0, 0, 0], q, 0), 'PW85_EINVAL', 't = 0 is not > 0');
   throwsWith(() => index.overlappingPairs({ threads: 0 }), 'PW85_EINVAL', 'threads = 0');
+  throwsWith(() => index.overlappingPairs({ threads: 2 ** 31 }), 'PW85_EINVAL',
+    'threads = 2147483648 is above 2³¹ − 1 (a C int)');
   throwsWith(() => index.overlapAnyBatch([0, 0, 0, 0, 0, 0], [...q, 1, 2, 0, 1, 0, 1]),
     'PW85_ENOTPOSDEF', 'candidate 1 of 2');
   assert.throws(() => index.insert(2.5, [0, 0, 0], q), TypeError);

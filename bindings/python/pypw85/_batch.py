@@ -55,9 +55,12 @@ def threads_count(threads):
             not isinstance(threads, (int, np.integer)):
         raise TypeError("threads: expected an int, got %s"
                         % type(threads).__name__)
-    if not 0 <= threads <= 2**31 - 1:
+    if threads < 0:
         raise ValueError("threads: expected 0 (OpenMP's default) or a "
                          "positive count, got %d" % threads)
+    if threads > 2**31 - 1:
+        raise ValueError("threads: expected at most 2³¹ − 1 (a C int), "
+                         "got %d" % threads)
     return int(threads)
 
 

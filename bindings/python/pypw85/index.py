@@ -773,6 +773,9 @@ def _pair_threads(where, threads):
             not isinstance(threads, (int, np.integer)):
         raise TypeError("threads: expected an int, got %s"
                         % type(threads).__name__)
-    if threads < 1 or threads > 2**31 - 1:
+    if threads < 1:
         raise Error(EINVAL, where, "threads = %d is not ≥ 1" % threads)
+    if threads > 2**31 - 1:
+        raise Error(EINVAL, where,
+                    "threads = %d is above 2³¹ − 1 (a C int)" % threads)
     return int(threads)
