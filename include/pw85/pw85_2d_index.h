@@ -67,7 +67,7 @@
  * reported. Calls that modify an index (insert, update, remove, destroy)
  * need exclusive access to it; queries only read it and may run
  * concurrently with each other from several threads. The all-pairs
- * queries, pw85_2d_index_overlap_any_batch() and
+ * queries, pw85_2d_index_energy(), pw85_2d_index_overlap_any_batch() and
  * pw85_2d_index_insert_many_threads() start up to `threads` OpenMP
  * threads when libpw85 was built with OpenMP (see pw85_index_openmp()),
  * and run serially otherwise, with the limits of pw85_index.h (at most

@@ -61,7 +61,7 @@
  * that changes nothing but speed). Calls that modify
  * an index (insert, update, remove, destroy) need exclusive access to it;
  * queries only read it and may run concurrently with each other from
- * several threads. The all-pairs queries,
+ * several threads. The all-pairs queries, pw85_index_energy(),
  * pw85_index_overlap_any_batch() and pw85_index_insert_many_threads()
  * start up to `threads` OpenMP threads when libpw85 was built with OpenMP
  * (see pw85_index_openmp()), and run serially otherwise: no more than
