@@ -211,3 +211,38 @@ def test_energy_callback_and_threads():
         index.energy(u=overlap, t=0.0)
     with pytest.raises(pypw85.Error, match="largest stored id"):
         index.energy(n=10)
+
+
+def test_energy_callback_cannot_modify():
+    """u may query the index, not modify or close it: closing it from u
+    made the library read freed memory (valgrind), and returned ENOTPOSDEF
+    or a result."""
+    index, _, _ = overlapping_index(n=60, side=4.0)
+    ids = list(index)
+    centre, q = index.get(ids[0])
+    e1, f1, t1 = index.energy(u=lambda mu2: (1.0 - mu2, -1.0), t=1.0)
+    calls = {
+        "close": lambda: index.close(),
+        "insert": lambda: index.insert(max(ids) + 1, centre, q),
+        "update": lambda: index.update(ids[0], centre, q),
+        "remove": lambda: index.remove(ids[0]),
+    }
+    for name, call in calls.items():
+        def u(mu2):
+            call()
+            return 1.0 - mu2, -1.0
+        with pytest.raises(RuntimeError, match="^%s: the index is in use "
+                           "by energy\\(\\)" % name):
+            index.energy(u=u, t=1.0)
+        # unchanged, and usable
+        assert list(index) == ids
+        e, f, t = index.energy(u=lambda mu2: (1.0 - mu2, -1.0), t=1.0)
+        assert e == e1 and np.array_equal(f, f1) and np.array_equal(t, t1)
+
+    # queries are allowed
+    def query(mu2):
+        assert len(index.overlapping_pairs()[0]) > 0
+        return 1.0 - mu2, -1.0
+    e, f, t = index.energy(u=query, t=1.0)
+    assert e == e1 and np.array_equal(f, f1)
+    index.close()

@@ -249,6 +249,10 @@ class _Index:
         d = self._dim
         self._handle = None
         self._stored = set()
+        # Set while energy() calls u: the library then reads the index, so
+        # u must not modify nor free it (valgrind: u closing it made the
+        # library read freed memory).
+        self._in_energy = False
         b = None if box is None else _array("box", box, np.float64, (d.dim,))
         handle = _P()
         code = d.fn("create")(None if b is None else _ptr(b),
@@ -265,6 +269,7 @@ class _Index:
 
     def close(self) -> None:
         """Free the library's memory; the index is unusable afterwards."""
+        self._modifiable("close")
         if self._handle is not None:
             self._dim.fn("destroy")(self._handle)
             self._handle = None
@@ -282,6 +287,14 @@ class _Index:
         if self._handle is None:
             raise ValueError("the index is closed")
         return self._handle
+
+    def _modifiable(self, where):
+        """Raise RuntimeError inside energy()'s u, which must not modify
+        or close the index that the library is reading."""
+        if getattr(self, "_in_energy", False):
+            raise RuntimeError("%s: the index is in use by energy(), whose "
+                               "function u may query it but not modify or "
+                               "close it" % where)
 
     def __len__(self) -> int:
         n = _SIZE()
@@ -389,6 +402,7 @@ class _Index:
         centre beyond 2²⁹ sides; `ENOTPOSDEF`; `EDOM`), naming the first
         failing item, its id and the rule; the index is then unchanged.
         """
+        self._modifiable("insert")
         one = np.ndim(ids) == 0
         i = _ids("ids", ids)
         d = self._dim
@@ -416,6 +430,7 @@ class _Index:
         Raises `Error` as `insert` (`EINVAL` also for an id not stored),
         naming the rule; the index is then unchanged.
         """
+        self._modifiable("update")
         ident = _id("id", id)
         c, f = self._one(centre, q)
         code = self._dim.fn("update")(self._h(), ident, _ptr(c), _ptr(f))
@@ -425,6 +440,7 @@ class _Index:
     def remove(self, id: IdLike) -> None:
         """Remove the stored {shape} ``id`` (`Error` `EINVAL` if it is
         not stored)."""
+        self._modifiable("remove")
         ident = _id("id", id)
         code = self._dim.fn("remove")(self._h(), ident)
         if code != 0:
@@ -642,6 +658,7 @@ class _Index:
         called from Python once per pair, in the order of the pairs (about
         a microsecond each: slow for many pairs, where the overlap energy
         is not); an exception it raises stops the call and is raised again.
+        ``u`` may query the index, not modify or close it (`RuntimeError`).
 
         ``n``: the rows of the outputs (default: the largest stored id
         plus one). Returns ``(energy, forces, torques)``, forces of shape
@@ -703,9 +720,14 @@ class _Index:
                     raised.append(exc)
                     return 1
             fn = _PAIR_ENERGY(call)
-            code = d.fn("energy")(self._h(), 1, t, fn, None, threads, n,
-                                  ctypes.byref(e), _ptr(forces),
-                                  _ptr(torques))
+            handle = self._h()
+            self._in_energy = True
+            try:
+                code = d.fn("energy")(handle, 1, t, fn, None, threads, n,
+                                      ctypes.byref(e), _ptr(forces),
+                                      _ptr(torques))
+            finally:
+                self._in_energy = False
         if raised:
             raise raised[0]
         if code == EDOM and u is not None:
