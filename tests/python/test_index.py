@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import pypw85
+import pypw85.d2  # noqa: F401 (pypw85.d2.Index, when run alone)
 from pypw85.index import NO_ID, OPENMP
 
 
@@ -206,6 +207,15 @@ def check_overlap_any_many(index, c, q):
         index.overlap_any_many(cc[:5], qq[:5], threads=-1)
     with pytest.raises(TypeError):
         index.overlap_any_many(cc[:5], qq[:5], exclude=np.zeros(5))
+    # ids above MAX_ID: ValueError, as overlap_any's exclude (they were
+    # taken for "no exclusion")
+    for bad in (pypw85.index.MAX_ID + 1, 2**40, np.uint64(2**63)):
+        ex = np.zeros(5, dtype=np.uint64 if bad == 2**63 else np.int64)
+        ex[3] = bad
+        with pytest.raises(ValueError, match="candidate 3 has %d$" % bad):
+            index.overlap_any_many(cc[:5], qq[:5], exclude=ex)
+        with pytest.raises(ValueError):
+            index.overlap_any(cc[3], qq[3], exclude=int(bad))
     r, i = index.overlap_any_many(np.empty((0, 3)), np.empty((0, 6)))
     assert r.shape == (0,) and i.shape == (0,)
 

@@ -558,6 +558,14 @@ class _Index:
             if (e < -1).any():
                 raise ValueError("exclude: ids are non-negative integers "
                                  "(-1 for none)")
+            # As overlap_any's exclude (the library would take an id above
+            # MAX_ID for one not stored, and skip nothing).
+            above = np.flatnonzero(e > MAX_ID)
+            if above.size:
+                raise ValueError("exclude: an id is an integer from 0 to "
+                                 "MAX_ID = %d, or -1 for none; candidate %d "
+                                 "has %d" % (MAX_ID, above[0],
+                                             int(e[above[0]])))
             ex = e.astype(np.int64).astype(np.uintp)
             ex[e == -1] = NO_ID
         results = np.empty(n, dtype=np.intc)
