@@ -221,6 +221,22 @@ def test_hdf5_round_trip(tmp_path):
     bad.image = np.zeros((2, 2), dtype=np.int32)
     with pytest.raises(ValueError, match="image"):
         micro.write_hdf5(path, bad)
+    # values that a cast to int32 would change: refused, not truncated (a
+    # voxel of 2⁴⁰ + 5 was stored as 5, of 0.7 as 0; a seed of -1 as 2⁶⁴ − 1)
+    bad.image = np.full((2, 2, 2), 2**40 + 5)
+    with pytest.raises(ValueError, match="^image: a voxel value 1099511627781 "
+                       "is outside int32$"):
+        micro.write_hdf5(path, bad)
+    bad.image = np.full((2, 2, 2), 0.7)
+    with pytest.raises(TypeError, match="^image: expected integer voxel "
+                       "values"):
+        micro.write_hdf5(path, bad)
+    bad = configuration()
+    for seed, error in ((-1, ValueError), (2**64, ValueError),
+                        (1.0, TypeError), (True, TypeError)):
+        bad.seed = seed
+        with pytest.raises(error, match="^seed: expected an int"):
+            micro.write_hdf5(path, bad)
     assert path.read_bytes() == before
     assert sorted(os.listdir(tmp_path)) == ["m.h5"]
     # another layout

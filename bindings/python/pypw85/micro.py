@@ -423,6 +423,31 @@ _OWN_ATTRS = ("packing_fraction", "seed", "pw85_version", "method",
               "image_fraction", "dimension")
 
 
+def _image_int32(image):
+    """The image as int32, or raise: TypeError for values that are not
+    integers, ValueError for one outside int32 (a cast would wrap it)."""
+    a = np.asarray(image)
+    if a.dtype.kind not in "iu":
+        raise TypeError("image: expected integer voxel values (int32), got "
+                        "dtype %s" % a.dtype)
+    if a.size and a.dtype.itemsize >= 4 and \
+            not (a.min() >= -2**31 and a.max() <= 2**31 - 1):
+        bad = a.max() if a.max() > 2**31 - 1 else a.min()
+        raise ValueError("image: a voxel value %d is outside int32" % bad)
+    return np.ascontiguousarray(a, dtype=np.int32)
+
+
+def _seed_uint64(seed):
+    """The seed as numpy.uint64, or raise (TypeError, ValueError)."""
+    if isinstance(seed, (bool, np.bool_)) or \
+            not isinstance(seed, (int, np.integer)):
+        raise TypeError("seed: expected an int, got %s" % type(seed).__name__)
+    if not 0 <= int(seed) <= 2**64 - 1:
+        raise ValueError("seed: expected an int from 0 to 2⁶⁴ − 1, got %d"
+                         % int(seed))
+    return np.uint64(int(seed))
+
+
 def write_hdf5(path, m: Microstructure) -> None:
     """Write m in the HDF5 layout of the documentation (3D, or 2D for
     ellipses: /angles instead of /quaternions, and the root attribute
@@ -432,14 +457,15 @@ def write_hdf5(path, m: Microstructure) -> None:
     if "dimension" in m.extra and m.extra["dimension"] != layout.dim:
         raise ValueError("extra: dimension = %r, but the box has %d sides"
                          % (m.extra["dimension"], layout.dim))
+    img = None if m.image is None else _image_int32(m.image)
+    seed = _seed_uint64(m.seed)
 
     def write(tmp):
         with h5py.File(tmp, "w") as f:
             f["box"] = box
             for name, a in arrays.items():
                 f[name] = a
-            if m.image is not None:
-                img = np.ascontiguousarray(m.image, dtype=np.int32)
+            if img is not None:
                 if img.ndim != layout.dim:
                     raise ValueError("image: expected %d dimensions, got %d"
                                      % (layout.dim, img.ndim))
@@ -448,7 +474,7 @@ def write_hdf5(path, m: Microstructure) -> None:
             for key, value in m.extra.items():
                 f.attrs[key] = value
             f.attrs["packing_fraction"] = np.float64(m.packing_fraction)
-            f.attrs["seed"] = np.uint64(m.seed)
+            f.attrs["seed"] = seed
             f.attrs["pw85_version"] = str(m.pw85_version)
             f.attrs["method"] = str(m.method)
             if layout.dim != 3:  # 3D files: as before the 2D layout
