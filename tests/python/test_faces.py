@@ -263,6 +263,27 @@ def test_spheroid_preconditions():
     axes = np.array([n, n, [1.0, 1.0, 0.0]])
     e = raised(lambda: pypw85.spheroid(1.0, 2.0, axes))
     assert e.index == (2,) and "not a unit vector" in str(e)
+    # Every item's status, whichever fails first; an item that breaks a
+    # rule is never computed. (The statuses said 0 for items after the
+    # first EINVAL, and after a non-finite one the items breaking a rule
+    # were computed and reported 0.)
+    q = np.full((4, 6), -7.0)
+    a = np.array([-1.0, 1e200, np.nan, 1.0])
+    e = raised(lambda: pypw85.spheroid(a, 1.0, n, q=q))
+    assert e.status == pypw85.EINVAL and e.index == (0,)
+    assert e.statuses.tolist() == [pypw85.EINVAL, pypw85.ERANGE,
+                                   pypw85.EDOM, 0]
+    assert "(3 of 4 failed): a = -1.0 is not > 0" in str(e)
+    assert (q == -7.0).all()  # none computed
+    a = np.array([np.nan, -1.0, 1e200, 1.0])
+    e = raised(lambda: pypw85.spheroid(a, 1.0, n, q=q))
+    assert e.status == pypw85.EDOM and e.index == (0,)
+    assert e.statuses.tolist() == [pypw85.EDOM, pypw85.EINVAL,
+                                   pypw85.ERANGE, 0]
+    assert (q[:2] == -7.0).all()  # EDOM and EINVAL: untouched
+    # ERANGE: written, as pw85_spheroid() writes it (a² = inf: inf and NaN)
+    assert not np.isfinite(q[2]).any()
+    assert np.array_equal(q[3], pypw85.spheroid(1.0, 1.0, n))
 
 
 # ---------------------------------------------------------------------------

@@ -348,8 +348,11 @@ def spheroid(a: ArrayLike, c: ArrayLike, n: ArrayLike,
         `EDOM` if a, c or an entry of n is not finite; `EINVAL` if a ≤ 0,
         c ≤ 0 or n is not a unit vector (the message names the rule);
         `ERANGE` if a² or c² overflows or underflows (q untouched). On
-        arrays, for the first failing item (`index`, `statuses`; for
-        `EDOM` and `ERANGE` the other items computed, for `EINVAL` none).
+        arrays, for the first failing item (`index`, and `statuses`, every
+        item's; if it fails with `EDOM` or `ERANGE`, the items that do not
+        fail are computed, and the items with `ERANGE`, as
+        ``pw85_spheroid_batch`` writes them; if with `EINVAL`, none; an
+        item with `EINVAL` is never computed).
     """
     if _batch.is_batch_of((a, 0), (c, 0), (n, 1)):
         return _batch.spheroid(a, c, n, q, threads)

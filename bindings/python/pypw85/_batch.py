@@ -26,8 +26,8 @@ import numpy as np
 if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
     from typing import Optional
 
-from ._constants import (DERIV_SIZE, DIM, EINVAL, GEOM_SIZE, SUCCESS, SYM,
-                         UNIT_TOL)
+from ._constants import (DERIV_SIZE, DIM, EDOM, EINVAL, GEOM_SIZE, SUCCESS,
+                         SYM, UNIT_TOL)
 from ._errors import Error
 from ._libpw85 import lib
 
@@ -264,17 +264,34 @@ def spheroid(a, c, n, q, threads):
     items = Items("spheroid", [("a", a, ()), ("c", c, ()), ("n", n, (DIM,))],
                   "item")
     q = output("q", q, items.shape + (SYM,))
-    _spheroid_preconditions(items)
     _unaliased(items, q)
-    _call(items, lib.pw85_spheroid_batch, [q], threads)
-    return q
+    bad, first = _spheroid_preconditions(items)
+    if bad is None:
+        _call(items, lib.pw85_spheroid_batch, [q], threads)
+        return q
+    # Items that break a rule (which pw85_spheroid_batch does not check):
+    # every status, from a call into scratch memory, theirs EINVAL. If one
+    # of them fails first, no item is computed; else the batch's outputs,
+    # but theirs (q untouched there, as for EDOM).
+    threads = threads_count(threads)
+    scratch = np.empty_like(q)
+    status = np.empty(items.n, dtype=np.intc)
+    lib.pw85_spheroid_batch(*items.arguments(), scratch.ctypes.data,
+                            status.ctypes.data, threads)
+    status[bad] = EINVAL
+    i = int(np.flatnonzero(status)[0])
+    if status[i] != EINVAL:
+        written = (status != EINVAL) & (status != EDOM)
+        q.reshape(-1, SYM)[written] = scratch.reshape(-1, SYM)[written]
+        items.raise_first(int(status[i]), status)
+    items.raise_first(EINVAL, status, first)
 
 
 def _spheroid_preconditions(items):
-    """Raise Error(EINVAL) for the first item with a ≤ 0, c ≤ 0 or
-    |‖n‖² − 1| > UNIT_TOL (what pw85_spheroid_checked() refuses and
-    pw85_spheroid_batch() does not check), unless an earlier item has a
-    non-finite input (then the batch reports EDOM for it)."""
+    """The items with a ≤ 0, c ≤ 0 or |‖n‖² − 1| > UNIT_TOL (what
+    pw85_spheroid_checked() refuses and pw85_spheroid_batch() does not
+    check), as a mask, with the rule the first breaks; (None, None) if
+    none."""
     (a, sa), (c, sc), (n, sn) = items.inputs
     count = items.n
     a = np.broadcast_to(a if sa == 0 else a.reshape(count), (count,))
@@ -285,12 +302,9 @@ def _spheroid_preconditions(items):
         finite = np.isfinite(a) & np.isfinite(c) & np.isfinite(n).all(axis=1)
         bad = finite & ~((a > 0) & (c > 0) & (np.abs(nn - 1.0) <= UNIT_TOL))
     if not bad.any():
-        return
-    i = int(np.flatnonzero(bad | ~finite)[0])
-    if not finite[i]:
-        return  # the batch names the non-finite item
-    status = np.where(bad, EINVAL, 0).astype(np.intc)
-    items.raise_first(EINVAL, status, spheroid_rule(a[i], c[i], n[i]))
+        return None, None
+    i = int(np.flatnonzero(bad)[0])
+    return bad, spheroid_rule(a[i], c[i], n[i])
 
 
 def spheroid_rule(a, c, n):
