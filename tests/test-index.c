@@ -893,6 +893,37 @@ static void test_bad_input(void) {
   pw85_index_destroy(open);
 }
 
+/* A candidate wider than the box by 2¹⁸ (below the limit of 2²⁰ boxes of
+ * reach), in a unit box holding one small ball: the images of the ball
+ * nearest the candidate's centre lie inside it. overlap_any visited the
+ * images in lexicographic order of their shifts, from a corner of the
+ * reach, through (2¹⁹)² images of its first face before one inside the
+ * candidate (time quadratic in the reach: 1.8 s at 2¹², about a day
+ * here); it tries the nearest image of each ellipsoid first. */
+static void test_wide_candidate(void) {
+  double const box[3] = {1., 1., 1.};
+  double const ball[6] = {0.01, 0., 0., 0.01, 0., 0.01};
+  double const centre[3] = {0.5, 0.5, 0.5};
+  pw85_index *ix = NULL;
+  g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, 7, centre, ball), ==, PW85_SUCCESS);
+  double const r = 0x1p18, r2 = r * r;
+  double const wide[6] = {r2, 0., 0., r2, 0., r2};
+  double const at[3] = {0.25, -3., 1e3};
+  int result = 2;
+  size_t id = 0;
+  g_assert_cmpint(pw85_index_overlap_any(ix, at, wide, PW85_INDEX_NO_ID,
+                                         &result, &id), ==, PW85_SUCCESS);
+  g_assert_cmpint(result, ==, -1);
+  g_assert_cmpuint(id, ==, 7);
+  /* excluded: no other ellipsoid */
+  g_assert_cmpint(pw85_index_overlap_any(ix, at, wide, 7, &result, &id), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpint(result, ==, 1);
+  g_assert_cmpuint(id, ==, PW85_INDEX_NO_ID);
+  pw85_index_destroy(ix);
+}
+
 /* A stored ellipsoid meets other ellipsoids through several images when
  * the box is small: a box barely wider than the ellipsoids. */
 static void test_several_images(void) {
@@ -1424,6 +1455,7 @@ int main(int argc, char **argv) {
   install_failing_gsl_handler();
   g_test_add_func("/pw85/index/bad-input", test_bad_input);
   g_test_add_func("/pw85/index/several-images", test_several_images);
+  g_test_add_func("/pw85/index/wide-candidate", test_wide_candidate);
   g_test_add_func("/pw85/index/concurrent-queries", test_concurrent_queries);
   g_test_add_func("/pw85/index/near-contact", test_near_contact);
   g_test_add_func("/pw85/index/length-scales", test_length_scales);

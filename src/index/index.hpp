@@ -247,11 +247,14 @@ class Index {
   Status visit_level(Level<D> const &lv, double const *c, double const *h,
                      double sqrt_t, std::uint32_t exclude,
                      bool nearest_first, bool *go_on, F &f) const noexcept;
-  // A level wider than the reach: every entry, with its shifts in reach.
+  // A level wider than the reach: every entry, with its shifts in reach
+  // (nearest_first: first each entry's image nearest to c, which is then
+  // visited twice).
   template <typename Test>
   Status visit_every_entry(Level<D> const &lv, double const *c,
                            Reach<D> const &rc, std::uint32_t exclude,
-                           bool *go_on, Test &test) const noexcept;
+                           bool nearest_first, bool *go_on,
+                           Test &test) const noexcept;
 
   bool periodic_;
   double box_[D] = {};
