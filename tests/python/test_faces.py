@@ -385,3 +385,48 @@ def test_public_names_are_the_api():
         assert public - set(module.__all__) - allowed == set(), module
     assert "not a bool" in pypw85.overlap.__doc__
     assert "result < 0" in pypw85.Index.overlap_any.__doc__
+
+
+# ---------------------------------------------------------------------------
+# Scalars: an integer beyond a double's range is a ValueError naming the
+# argument (OverflowError escaped), a string or a container a TypeError
+# (strings were parsed: aspect='123' read as [1, 2, 3]).
+
+def test_scalar_conversions():
+    q = pypw85.spheroid(1.0, 2.0, [0.0, 0.0, 1.0])
+    r = [3.0, 0.0, 0.0]
+    huge = 10**400
+    with pytest.raises(ValueError, match="^lambda_: expected a real number "
+                       "in the range of a double, got an integer of 401 "
+                       "digits$"):
+        pypw85.f(huge, r, q, q)
+    with pytest.raises(ValueError, match="^a: expected a real number in "
+                       "the range"):
+        pypw85.spheroid(2**2000, 1.0, [0.0, 0.0, 1.0])
+    a = np.ones((4, 3))
+    for options, error, text in [
+            ({"target": huge}, ValueError, "pack: target: expected a real "
+             "number in the range"),
+            ({"time_limit": huge}, ValueError, "pack: time_limit: expected"),
+            ({"aspect": [huge, 1, 1]}, ValueError, "pack: aspect: expected"),
+            ({"target": "0.1"}, TypeError, "pack: target must be a real"),
+            ({"time_limit": "1"}, TypeError, "pack: time_limit must be"),
+            ({"aspect": "123"}, TypeError, "pack: aspect must be 3 real"),
+            ({"aspect": {1: 1, 2: 2, 3: 3}}, TypeError, "pack: aspect must"),
+            ({"axis": "001"}, TypeError, "pack: axis must be 3 real")]:
+        with pytest.raises(error, match="^" + text):
+            pypw85.pack(a, **options)
+    index = pypw85.Index([1.0, 1.0, 1.0])
+    index.insert(0, [0.5, 0.5, 0.5], [0.01, 0, 0, 0.01, 0, 0.01])
+    for t, error in [("1", TypeError), (None, TypeError), ([1.0], TypeError),
+                     (huge, ValueError)]:
+        with pytest.raises(error, match="^t: expected a real number"):
+            index.within([0.0, 0.0, 0.0], [0.01, 0, 0, 0.01, 0, 0.01], t)
+        with pytest.raises(error, match="^t: expected a real number"):
+            index.pairs_within(t)
+        with pytest.raises(error, match="^t: expected a real number" if t
+                           is not None else "^energy: u needs its threshold"):
+            index.energy(u=lambda mu2: (0.0, 0.0), t=t)
+        with pytest.raises(error, match="^eps: expected a real number"):
+            index.energy(t)
+    index.close()

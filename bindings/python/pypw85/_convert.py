@@ -65,11 +65,17 @@ def unaliased(out, *inputs):
 
 
 def real(name, x):
-    """x as a Python float, if x is a real scalar; else raise TypeError."""
-    if isinstance(x, numbers.Real):
-        return float(x)
-    if isinstance(x, np.ndarray) and x.ndim == 0 and x.dtype.kind in "iuf":
-        return float(x)
+    """x as a Python float, if x is a real scalar; else raise TypeError
+    (ValueError for an integer beyond the range of a double)."""
+    if isinstance(x, numbers.Real) or (
+            isinstance(x, np.ndarray) and x.ndim == 0 and
+            x.dtype.kind in "iuf"):
+        try:
+            return float(x)
+        except OverflowError:
+            raise ValueError("%s: expected a real number in the range of a "
+                             "double, got an integer of %d digits"
+                             % (name, len(str(abs(int(x)))))) from None
     raise TypeError("%s: expected a real number, got %s"
                     % (name, type(x).__name__))
 

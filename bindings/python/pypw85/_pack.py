@@ -17,6 +17,7 @@ if typing.TYPE_CHECKING:
     from numpy.typing import ArrayLike
 
 from ._constants import EDOM, EINVAL, ERANGE
+from ._convert import real as _real
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -118,10 +119,12 @@ class Packing(typing.NamedTuple):
 
 def _positive(name, value, allow_zero=False):
     try:
-        v = float(value)
-    except (TypeError, ValueError):
+        v = _real(name, value)
+    except TypeError:
         raise TypeError("pack: %s must be a real number, got %r"
                         % (name, value)) from None
+    except ValueError as e:
+        raise ValueError("pack: %s" % e) from None
     if not math.isfinite(v):
         raise Error(EDOM, "pack", "%s = %r is not finite" % (name, v))
     if not (v >= 0 if allow_zero else v > 0):
@@ -345,10 +348,14 @@ def _count(name, x, lo, hi):
 def _reals(name, x, d):
     """x as a list of d floats, or raise naming it."""
     try:
-        v = [float(y) for y in x]
-    except (TypeError, ValueError):
+        if isinstance(x, (str, bytes, dict, set)):  # iterable, not numbers
+            raise TypeError(name)
+        v = [_real(name, y) for y in x]
+    except TypeError:
         raise TypeError("pack: %s must be %d real numbers, got %r"
                         % (name, d, x)) from None
+    except ValueError as e:
+        raise ValueError("pack: %s" % e) from None
     if len(v) != d:
         raise ValueError("pack: %s must be %d real numbers, got %d"
                          % (name, d, len(v)))

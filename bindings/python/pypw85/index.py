@@ -48,6 +48,7 @@ if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
 
 from ._batch import threads_count as _threads_count
 from ._constants import EDOM, EINVAL, ENOTPOSDEF, ERANGE
+from ._convert import real as _real
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -600,7 +601,7 @@ class _Index:
         """
         c, f = self._one(centre, q)
         ex = NO_ID if exclude is None else _id("exclude", exclude)
-        t = float(t)
+        t = _real("t", t)
         if not t > 0:
             raise Error(EDOM if math.isnan(t) else EINVAL, "within",
                         "t = %s is not > 0" % _fmt(t))
@@ -640,7 +641,7 @@ class _Index:
         ``(m, 2)``, ``(m, {D})``, ``(m, 2)``, sorted by i, j, shift.
         """
         threads = _pair_threads("pairs_within", threads)
-        t = float(t)
+        t = _real("t", t)
         if not t > 0:
             raise Error(EDOM if math.isnan(t) else EINVAL, "pairs_within",
                         "t = %s is not > 0" % _fmt(t))
@@ -698,7 +699,7 @@ class _Index:
             if t is not None:
                 raise TypeError("energy: t is the threshold of a function "
                                 "u; the overlap energy takes eps only")
-            eps = float(eps)
+            eps = _real("eps", eps)
             if not eps > 0 or math.isinf(eps):
                 raise Error(EDOM if not math.isfinite(eps) else EINVAL,
                             "energy", "eps = %s is not finite and > 0"
@@ -712,7 +713,7 @@ class _Index:
                                 % type(u).__name__)
             if t is None:
                 raise TypeError("energy: u needs its threshold t on mu2")
-            t = float(t)
+            t = _real("t", t)
             if not t > 0 or math.isinf(t):
                 raise Error(EDOM if not math.isfinite(t) else EINVAL,
                             "energy", "t = %s is not finite and > 0"
