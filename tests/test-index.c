@@ -898,8 +898,9 @@ static void test_bad_input(void) {
  * nearest the candidate's centre lie inside it. overlap_any visited the
  * images in lexicographic order of their shifts, from a corner of the
  * reach, through (2¹⁹)² images of its first face before one inside the
- * candidate (time quadratic in the reach: 1.8 s at 2¹², about a day
- * here); it tries the nearest image of each ellipsoid first. */
+ * candidate (time quadratic in the reach: 1.8 s at 2¹², about two hours
+ * here, extrapolated); it tries the nearest image of each ellipsoid
+ * first. */
 static void test_wide_candidate(void) {
   double const box[3] = {1., 1., 1.};
   double const ball[6] = {0.01, 0., 0., 0.01, 0., 0.01};
