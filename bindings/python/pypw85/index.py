@@ -19,10 +19,10 @@ Errors name their cause: an input the library rejects raises `Error`
 whose message says which rule failed, for which id (and which item of a
 batch), with the numbers (``insert: ... ellipsoid 12 (item 3 of 5):
 2·√Q_00·(1 + 2⁻²⁰) = 3.1 ≥ L_0 = 3``); its attributes ``status``, ``id``
-and ``item`` give them to programs. The all-pairs queries and `Index.overlap_any_many`
-run on up to ``threads`` OpenMP threads, at most 1024 (`OPENMP` says
-whether this libpw85 has them), with the GIL released, and give the same arrays for any number of
-threads.
+and ``item`` give them to programs. The all-pairs queries and
+`Index.overlap_any_many` run on up to ``threads`` OpenMP threads, at most
+1024 (`OPENMP` says whether this libpw85 has them), with the GIL
+released, and give the same arrays for any number of threads.
 
 `pypw85.d2.Index` is the same class for ellipses (``pw85_2d_index.h``),
 but for the sizes: centres ``(n, 2)``, forms ``(n, 3)`` (Q00, Q01, Q11),
