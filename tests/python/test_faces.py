@@ -430,3 +430,32 @@ def test_scalar_conversions():
         with pytest.raises(error, match="^eps: expected a real number"):
             index.energy(t)
     index.close()
+
+
+# Arrays of the index and of micro: real numbers only, named (complex
+# entries lost their imaginary parts with a warning, bools were read as 0
+# and 1, strings failed with NumPy's message).
+def test_real_arrays_named():
+    from pypw85 import micro
+    s = [0.01, 0.0, 0.0, 0.01, 0.0, 0.01]
+    with pytest.raises(TypeError, match="^box: expected real numbers, got "
+                       "an array of dtype bool"):
+        pypw85.Index([True, True, True])
+    with pytest.raises(TypeError, match="^box: expected real numbers"):
+        pypw85.Index("abc")
+    index = pypw85.Index([1.0, 1.0, 1.0])
+    index.insert(0, [0.5, 0.5, 0.5], s)
+    with pytest.raises(TypeError, match="^centres: expected real numbers, "
+                       "got an array of dtype complex128"):
+        index.overlap_any_many(np.zeros((1, 3)) + 1j, s)
+    with pytest.raises(TypeError, match="^centre: expected real numbers"):
+        index.overlap_any(np.array([0.5, 0.5, 0.5 + 1j]), s)
+    index.close()
+    with pytest.raises(TypeError, match="^centres: expected real numbers, "
+                       "got an array of dtype complex128"):
+        micro.voxel_image(np.zeros((1, 3)) + 1j, [s], [1.0, 1.0, 1.0], 4)
+    with pytest.raises(TypeError, match="^q: expected real numbers"):
+        micro.voxel_image(np.zeros((1, 3)), np.array([s]) + 0j,
+                          [1.0, 1.0, 1.0], 4)
+    with pytest.raises(TypeError, match="^sides: expected real numbers"):
+        micro.voxel_image(np.zeros((1, 3)), [s], [1j, 1.0, 1.0], 4)

@@ -80,6 +80,18 @@ def real(name, x):
                     % (name, type(x).__name__))
 
 
+def real_array(name, x):
+    """x as a C-contiguous float64 array, if its entries are real numbers
+    (integers or floats); else raise TypeError (a cast would drop the
+    imaginary parts of complex numbers, read bools as 0 and 1, or fail on
+    strings with a message that does not name x)."""
+    a = np.asarray(x)
+    if a.dtype.kind not in "iuf":
+        raise TypeError("%s: expected real numbers, got an array of dtype %s"
+                        % (name, a.dtype))
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
 def check_finite(where, **named):
     """Raise Error(EDOM) naming the first non-finite argument."""
     for name, value in named.items():

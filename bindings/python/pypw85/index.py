@@ -49,6 +49,7 @@ if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
 from ._batch import threads_count as _threads_count
 from ._constants import EDOM, EINVAL, ENOTPOSDEF, ERANGE
 from ._convert import real as _real
+from ._convert import real_array as _real_array
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -145,8 +146,10 @@ _D3 = _Dimension(3, 6, 3, "pw85_index_", (0, 3, 5), _posdef_3d, "ellipsoid",
 
 
 def _array(name, x, dtype, shape):
-    """x as a C-contiguous array of dtype and shape (-1: any length)."""
-    a = np.ascontiguousarray(x, dtype=dtype)
+    """x as a C-contiguous array of dtype and shape (-1: any length);
+    real numbers only for float64 (TypeError)."""
+    a = (_real_array(name, x) if dtype is np.float64
+         else np.ascontiguousarray(x, dtype=dtype))
     if a.ndim != len(shape) or any(s != -1 and s != n
                                    for s, n in zip(shape, a.shape)):
         raise ValueError("%s: expected shape %s, got %s"

@@ -57,6 +57,7 @@ import numpy as np
 
 from ._batch import threads_count as _threads_count
 from ._constants import EDOM, EINVAL, ENOTPOSDEF
+from ._convert import real_array as _real_array
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 from ._symbols import declare as _declare
@@ -86,7 +87,7 @@ _REACH = 2.0**29
 
 
 def _vec(name, x, dim=3):
-    a = np.ascontiguousarray(x, dtype=np.float64)
+    a = _real_array(name, x)
     if a.shape != (dim,):
         raise ValueError("%s: expected shape (%d,), got %s" % (name, dim, a.shape))
     return a
@@ -162,13 +163,13 @@ def voxel_image(centres: ArrayLike, q: ArrayLike, sides: ArrayLike,
         rule of pw85_image.h, named).
     """
     where = "voxel_image"
-    c = np.ascontiguousarray(centres, dtype=np.float64)
+    c = _real_array("centres", centres)
     if c.ndim != 2 or c.shape[1] not in (2, 3):
         raise ValueError("centres: expected shape (n, 3), or (n, 2) for "
                          "ellipses, got %s" % (c.shape,))
     n, dim = c.shape
     sym = dim * (dim + 1) // 2
-    qa = np.ascontiguousarray(q, dtype=np.float64)
+    qa = _real_array("q", q)
     if qa.shape != (n, sym):
         raise ValueError("q: expected shape (%d, %d), got %s" % (n, sym, qa.shape))
     L = _vec("sides", sides, dim)
