@@ -83,6 +83,11 @@ def test_quaternion_scalar_first_and_last():
     assert np.abs(wrong - refs).max() > 1.0
     with pytest.raises(TypeError):
         pypw85.ellipsoid_quaternion(A, p[0], scalar_first="no")
+    # the same for principal_axes_quaternion (None, "no", [] and 0 were
+    # taken as false or true)
+    for flag in (None, "no", [], 0):
+        with pytest.raises(TypeError, match="^scalar_first: expected a bool"):
+            pypw85.principal_axes_quaternion(refs[0], scalar_first=flag)
     for f in (pypw85.ellipsoid_quaternion, pypw85.principal_axes_quaternion):
         assert "OVITO" in f.__doc__ and "SciPy" in f.__doc__
         assert "(x, y, z, w)" in f.__doc__

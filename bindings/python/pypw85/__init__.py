@@ -904,10 +904,13 @@ def principal_axes_quaternion(q: ArrayLike, *, scalar_first: bool = True,
     Raises
     ------
     ValueError, TypeError
-        If q has the wrong shape or type.
+        If q has the wrong shape or type (or scalar_first is not a bool).
     Error
         As `principal_axes`.
     """
+    if not isinstance(scalar_first, (bool, np.bool_)):
+        raise TypeError("scalar_first: expected a bool, got %s"
+                        % type(scalar_first).__name__)
     if _batch.is_batch_of((q, 1)):
         a, p = _batch.principal_axes_quaternion(q, threads)
     else:
