@@ -464,3 +464,8 @@ def test_real_arrays_named():
                           [1.0, 1.0, 1.0], 4)
     with pytest.raises(TypeError, match="^sides: expected real numbers"):
         micro.voxel_image(np.zeros((1, 3)), [s], [1j, 1.0, 1.0], 4)
+    # a bool flag ('no' was taken for periodic)
+    with pytest.raises(TypeError, match="^periodic: expected a bool, got "
+                       "str"):
+        micro.voxel_image(np.zeros((1, 3)), [s], [1.0, 1.0, 1.0], 4,
+                          periodic="no")

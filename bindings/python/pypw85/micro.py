@@ -163,6 +163,9 @@ def voxel_image(centres: ArrayLike, q: ArrayLike, sides: ArrayLike,
         rule of pw85_image.h, named).
     """
     where = "voxel_image"
+    if not isinstance(periodic, (bool, np.bool_)):
+        raise TypeError("periodic: expected a bool, got %s"
+                        % type(periodic).__name__)
     c = _real_array("centres", centres)
     if c.ndim != 2 or c.shape[1] not in (2, 3):
         raise ValueError("centres: expected shape (n, 3), or (n, 2) for "
