@@ -185,11 +185,9 @@ Status Index<D>::visit_every_entry(Level<D> const &lv, double const *c,
                                    Reach<D> const &rc, std::uint32_t exclude,
                                    bool nearest_first, bool *go_on,
                                    Test &test) const noexcept {
-  if (nearest_first && periodic_) {
-    // First each entry's image nearest to c: a candidate wider than the
-    // box holds it, and the shifts' lexicographic order below reached it
-    // only after a face of its reach, (2·reach)² images in 3D (1.8 s for
-    // a candidate 2¹² sides wide; about two hours, extrapolated, at 2¹⁸).
+  // Every entry but `exclude`, with the shifts [lo, hi] of its images in
+  // reach: visit(e, lo, hi), false to stop the visit.
+  auto entries = [&](auto &&visit) {
     for (std::size_t ci = 0; ci < lv.cells.size(); ++ci) {
       Cell<D> const &cell = lv.cells[ci];
       for (std::size_t ei = 0; ei < cell.size(); ++ei) {
@@ -199,36 +197,37 @@ Status Index<D>::visit_every_entry(Level<D> const &lv, double const *c,
         if (!shift_range<D>(periodic_, c, rc.reach, rc.slack, e.c, box_, lo,
                             hi))
           return Status::out_of_range;
-        std::int32_t shift[D];
-        for (int k = 0; k < D; ++k) {
-          double const n = std::round((c[k] - e.c[k]) / box_[k]);
-          shift[k] = std::int32_t(std::min<double>(
-              std::max<double>(n, double(lo[k])), double(hi[k])));
-        }
-        if (!test(e, static_cast<std::int32_t const *>(shift))) {
+        if (!visit(e, static_cast<std::int64_t const *>(lo),
+                   static_cast<std::int64_t const *>(hi))) {
           *go_on = false;
           return Status::success;
         }
       }
     }
-  }
-  for (std::size_t ci = 0; ci < lv.cells.size(); ++ci) {
-    Cell<D> const &cell = lv.cells[ci];
-    for (std::size_t ei = 0; ei < cell.size(); ++ei) {
-      Entry<D> const &e = cell[ei];
-      if (e.id == exclude) continue;
-      std::int64_t lo[D], hi[D];
-      if (!shift_range<D>(periodic_, c, rc.reach, rc.slack, e.c, box_, lo, hi))
-        return Status::out_of_range;
-      if (!for_each_shift<D>(lo, hi, [&](std::int32_t const *shift) {
-            return test(e, shift);
-          })) {
-        *go_on = false;
-        return Status::success;
+    return Status::success;
+  };
+  if (nearest_first && periodic_) {
+    // First each entry's image nearest to c: a candidate wider than the
+    // box holds it, and the shifts' lexicographic order below reached it
+    // only after a face of its reach, (2·reach)² images in 3D (1.8 s for
+    // a candidate 2¹² sides wide; about two hours, extrapolated, at 2¹⁸).
+    Status const s = entries([&](Entry<D> const &e, std::int64_t const *lo,
+                                 std::int64_t const *hi) {
+      std::int32_t shift[D];
+      for (int k = 0; k < D; ++k) {
+        double const n = std::round((c[k] - e.c[k]) / box_[k]);
+        shift[k] = std::int32_t(std::min<double>(
+            std::max<double>(n, double(lo[k])), double(hi[k])));
       }
-    }
+      return test(e, static_cast<std::int32_t const *>(shift));
+    });
+    if (s != Status::success || !*go_on) return s;
   }
-  return Status::success;
+  return entries([&](Entry<D> const &e, std::int64_t const *lo,
+                     std::int64_t const *hi) {
+    return for_each_shift<D>(
+        lo, hi, [&](std::int32_t const *shift) { return test(e, shift); });
+  });
 }
 
 template <int D>
