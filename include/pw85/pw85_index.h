@@ -65,9 +65,11 @@
  * pw85_index_overlap_any_batch() and pw85_index_insert_many_threads()
  * start up to `threads` OpenMP threads when libpw85 was built with OpenMP
  * (see pw85_index_openmp()), and run serially otherwise: no more than
- * their work is worth (one per 256 ellipsoids or candidates), and
- * never more than 1024, a larger count running as 1024 (libgomp takes the
- * start data of its threads from the caller's stack); their output (the
+ * their work is worth (the all-pairs queries: one per 256 ellipsoids;
+ * overlap_any_batch: one per 256 candidates; insert_many_threads: one per
+ * 4096 items), and never more than 1024, a larger count running as 1024
+ * (libgomp takes the start data of its threads from the caller's stack);
+ * their output (the
  * index they leave, for the last) is the same, bit for bit, for any
  * number of threads. No other function starts a thread.
  *
