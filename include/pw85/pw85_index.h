@@ -69,9 +69,8 @@
  * overlap_any_batch: one per 256 candidates; insert_many_threads: one per
  * 4096 items), and never more than 1024, a larger count running as 1024
  * (libgomp takes the start data of its threads from the caller's stack);
- * their output (the
- * index they leave, for the last) is the same, bit for bit, for any
- * number of threads. No other function starts a thread.
+ * their output (the index they leave, for the last) is the same, bit for
+ * bit, for any number of threads. No other function starts a thread.
  *
  * PW85_EINVAL, the status of a finite argument outside its domain, has
  * these causes, each documented with its function: a box side not > 0
