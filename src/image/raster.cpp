@@ -493,13 +493,13 @@ void voxel_image(Grid const &grid, std::size_t n, double const *centres,
   if (threads == 0) threads = omp_get_max_threads();
 #endif
   // No more threads than there is work for: one per 4096 voxels at
-  // least (as the index's queries), and per plane along x.
+  // least (as the index's queries), and per plane along x; at most
+  // max_threads (batch.hpp). (0 without OpenMP: 1, as the loop below.)
   std::int64_t const voxels = n0 * grid.dims[1] * grid.dims[2];
   std::int64_t const most = std::min(n0, voxels / 4096 + 1);
-  if (threads > most) threads = static_cast<int>(most);
-  if (threads > max_threads) threads = max_threads;
+  threads = team_size(threads, static_cast<std::size_t>(most));
   // Chunks of planes: about 16 per thread, for the dynamic schedule.
-  std::int64_t per = n0 / (16 * (threads > 0 ? threads : 1));
+  std::int64_t per = n0 / (16 * threads);
   if (per < 1) per = 1;
   std::int64_t const chunks = (n0 + per - 1) / per;
 #if defined(PW85_OPENMP)
