@@ -161,10 +161,7 @@ def _array(name, x, dtype, shape):
 def _records(name, x, n, size):
     """x as a C-contiguous (n, size) float64 array: one record of shape
     (size,) is repeated over the n items (broadcast), else (n, size)."""
-    a = np.asarray(x)
-    if a.dtype.kind not in "iuf":
-        raise TypeError("%s: expected real numbers, got an array of dtype %s"
-                        % (name, a.dtype))
+    a = _real_array(name, x)
     if a.shape == (size,):
         a = np.broadcast_to(a, (n, size))
     elif a.shape != (n, size):
