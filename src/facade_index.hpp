@@ -54,7 +54,8 @@ int create(double const *box, Handle **index) noexcept {
   if (box != nullptr) {
     if (!pw85::detail::all_finite<D>(box)) return PW85_EDOM;
     for (int k = 0; k < D; ++k)
-      if (!(box[k] > 0.0)) return PW85_EINVAL;
+      if (!(box[k] > 0.0 && box[k] <= pw85::detail::max_side))
+        return PW85_EINVAL;
   }
   Handle *p = new (std::nothrow) Handle(box);
   if (p == nullptr) return PW85_ENOMEM;

@@ -15,6 +15,7 @@
 
 #include "checks.hpp"
 #include "facade.hpp"
+#include "index/margins.hpp"
 #include "pack/pack.hpp"
 
 namespace core = pw85::detail;
@@ -45,14 +46,15 @@ void scale_to_unit(double const *v, double *out) noexcept {
 
 // The side rule at the target for semi-axes a (D·n, scaled by 2^−e for
 // the packer): PW85_EINVAL if 2·a_max·(1 + 2⁻⁹) ≥ L_k for some k,
-// PW85_ERANGE if the box is beyond the range of a double (at scale 2^e).
+// PW85_ERANGE if a side is beyond the index's bound (at scale 2^e).
 template <int D>
 int side_rule(size_t n, double const *a, core::PackParams const &p,
               double amax, int e) noexcept {
   double box[D];
   if (!core::pack_box<D>(n, a, p.aspect, p.target, box)) return PW85_ERANGE;
   for (int k = 0; k < D; ++k)
-    if (!std::isfinite(std::scalbn(box[k], e))) return PW85_ERANGE;
+    if (!(std::scalbn(box[k], e) <= pw85::detail::max_side))
+      return PW85_ERANGE;
   for (int k = 0; k < D; ++k)
     if (!(2.0 * amax * core::pack_side_margin < box[k])) return PW85_EINVAL;
   return PW85_SUCCESS;
@@ -172,6 +174,7 @@ int pack_facade(size_t n, double const *semi_axes,
     code = side_rule<D>(n, a, params, amax, e);
     if (code != PW85_SUCCESS) return code;
   }
+  params.side_limit = std::scalbn(pw85::detail::max_side, -e);
   core::PackOutcome result = core::PackOutcome::limit;
   Status const s = core::pack<D>(n, a, params, box, centres, orientations, q,
                                  phi, &result);

@@ -23,10 +23,12 @@
  * 128 bytes per stored ellipse): use small ids, such as the positions of
  * the ellipses in the caller's arrays.
  *
- * Domain. Open: any finite centre. Periodic: a rectangle of sides
- * L = (L0, L1); an ellipse stands for all its images c + n∘L, n ∈ ℤ²
- * (n∘L = (n0·L0, n1·L1)); centres need not be wrapped into the
- * rectangle, but |c_k| ≤ 2²⁹·L_k. Each stored ellipse must be narrower
+ * Domain. Open: centres with |c_k| ≤ 2¹⁰²¹ (about 2.2e307). Periodic: a
+ * rectangle of sides L = (L0, L1), each at most 2⁹⁹² (about 4.2e298); an
+ * ellipse stands for all its images c + n∘L, n ∈ ℤ² (n∘L = (n0·L0,
+ * n1·L1)); centres need not be wrapped into the rectangle, but
+ * |c_k| ≤ 2²⁹·L_k. (These bounds keep every difference of centres and
+ * every image vector within the range of a double.) Each stored ellipse must be narrower
  * than the rectangle along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that
  * it cannot meet its own images; the queries consider every image of
  * every stored ellipse (not only the nearest), so the rectangle may be as
@@ -76,13 +78,14 @@
  * starts a thread.
  *
  * PW85_EINVAL, the status of a finite argument outside its domain, has
- * these causes, each documented with its function: a side not > 0
- * (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
- * call (insert, insert_many, insert_many_threads); an id not stored
- * (update, remove, get); in a periodic rectangle, an ellipse not narrower
- * than the rectangle, 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k, or a centre with
- * |c_k| > 2²⁹·L_k (insert, insert_many, update; the centre rule also for
- * the queries on a candidate); t ≤ 0 (within, pairs_within); threads < 1
+ * these causes, each documented with its function: a side not > 0 or
+ * above 2⁹⁹² (create); an id above PW85_INDEX_MAX_ID, or in use, or
+ * repeated in one call (insert, insert_many, insert_many_threads); an id
+ * not stored (update, remove, get); a centre with |c_k| > 2¹⁰²¹ in an
+ * open plane, or with |c_k| > 2²⁹·L_k in a periodic rectangle, and there
+ * an ellipse not narrower than the rectangle, 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k
+ * (insert, insert_many, update; the centre rules also for the queries on
+ * a candidate); t ≤ 0 (within, pairs_within); threads < 1
  * (the all-pairs queries, insert_many_threads) or < 0, or a stride
  * between 1 and its record's size − 1 (overlap_any_batch).
  *
@@ -113,12 +116,12 @@ typedef struct pw85_2d_index pw85_2d_index;
  * @brief Create an empty index, for an open plane or a periodic rectangle.
  *
  * @param[in] box NULL for an open plane; else the sides L0, L1 of the
- *            periodic rectangle (lengths, each > 0 and finite).
+ *            periodic rectangle (lengths, each > 0 and at most 2⁹⁹²).
  * @param[out] index the new index, to be freed with
  *             pw85_2d_index_destroy().
  * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EDOM if a side
- *         is not finite; PW85_EINVAL if a side is not > 0; PW85_ENOMEM.
- *         *index is written on success only.
+ *         is not finite; PW85_EINVAL if a side is not > 0 or is above
+ *         2⁹⁹²; PW85_ENOMEM. *index is written on success only.
  * @since 2.5.0
  */
 PW85_API int pw85_2d_index_create(double const box[PW85_2D_DIM],
@@ -152,9 +155,10 @@ PW85_API int pw85_2d_index_count(pw85_2d_index const *index,
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
  *         positive definite (the rule of pw85_2d.h); PW85_EINVAL if id is
- *         in use or above PW85_INDEX_MAX_ID, or, in a periodic rectangle,
- *         if 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k for some k;
- *         PW85_ENOMEM. The index is unchanged on error.
+ *         in use or above PW85_INDEX_MAX_ID, or if, for some k,
+ *         |c_k| > 2¹⁰²¹ in an open plane, or in a periodic rectangle
+ *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k; PW85_ENOMEM. The
+ *         index is unchanged on error.
  * @since 2.5.0
  */
 PW85_API int pw85_2d_index_insert(pw85_2d_index *index, size_t id,
@@ -263,8 +267,8 @@ PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
  * pw85_2d_overlap(r, q, q_j) decides it, r the exact image vector of the
  * file description ("Images").
  * @param[in] index the index.
- * @param[in] centre the candidate's centre c (in a periodic rectangle,
- *            |c_k| ≤ 2²⁹·L_k).
+ * @param[in] centre the candidate's centre c (|c_k| ≤ 2¹⁰²¹ in an open
+ *            plane, |c_k| ≤ 2²⁹·L_k in a periodic rectangle).
  * @param[in] q the candidate's quadratic form Q.
  * @param[in] exclude the id of a stored ellipse to skip (the one the
  *            candidate would replace, in a Monte Carlo move), or
@@ -278,8 +282,8 @@ PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
  *             PW85_INDEX_NO_ID for +1.
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
- *         positive definite; PW85_EINVAL if |c_k| > 2²⁹·L_k in a periodic
- *         rectangle; PW85_ERANGE if a pair's forms span more than the
+ *         positive definite; PW85_EINVAL if |c_k| > 2¹⁰²¹ in an open
+ *         plane or |c_k| > 2²⁹·L_k in a periodic rectangle; PW85_ERANGE if a pair's forms span more than the
  *         range of a double (as pw85_2d_overlap()), or if, in a periodic
  *         rectangle, the images of a stored ellipse within reach of the
  *         candidate span more than 2²⁰ rectangles along an axis (a

@@ -100,11 +100,13 @@ extern "C" {
  *         the rectangle at the target cannot hold the largest ellipse (the
  *         side rule of pw85_2d_index.h with the largest semi-axis:
  *         2·a_max·(1 + 2⁻⁹) ≥ L_k for some k); PW85_ERANGE if the
- *         semi-axes span more than 2⁴⁰, or the sides of the rectangle at
- *         the target are beyond the range of a double, or the area
- *         Σa0·a1 is while a semi-axis is outside [2⁻⁵⁰⁰, 2⁵⁰¹) (inside,
- *         they are packed scaled by a power of two, and the outputs scaled
- *         back: exactly the packing of the scaled semi-axes, scaled);
+ *         semi-axes span more than 2⁴⁰, or a side of the rectangle at
+ *         the target, or of the rectangle of the packing returned, is
+ *         above 2⁹⁹² (the bound of pw85_2d_index_create()), or the area
+ *         Σa0·a1 is beyond the range of a double while a semi-axis is
+ *         outside [2⁻⁵⁰⁰, 2⁵⁰¹) (inside, they are packed scaled by a
+ *         power of two, and the outputs scaled back: exactly the packing
+ *         of the scaled semi-axes, scaled);
  *         PW85_ENOMEM (also if 3·n doubles would not fit a size_t).
  *         Nothing is written on error.
  * @since 2.5.0

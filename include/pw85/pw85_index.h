@@ -16,10 +16,12 @@
  * stored ellipsoid): use small ids, such as the positions of the
  * ellipsoids in the caller's arrays.
  *
- * Domain. Open: any finite centre. Periodic: an orthorhombic box of sides
- * L = (L0, L1, L2); an ellipsoid stands for all its images c + n∘L,
- * n ∈ ℤ³ (n∘L = (n0·L0, n1·L1, n2·L2)); centres need not be wrapped into
- * the box, but |c_k| ≤ 2²⁹·L_k. Each stored ellipsoid must be narrower
+ * Domain. Open: centres with |c_k| ≤ 2¹⁰²¹ (about 2.2e307). Periodic: an
+ * orthorhombic box of sides L = (L0, L1, L2), each at most 2⁹⁹² (about
+ * 4.2e298); an ellipsoid stands for all its images c + n∘L, n ∈ ℤ³
+ * (n∘L = (n0·L0, n1·L1, n2·L2)); centres need not be wrapped into the
+ * box, but |c_k| ≤ 2²⁹·L_k. (These bounds keep every difference of
+ * centres and every image vector within the range of a double.) Each stored ellipsoid must be narrower
  * than the box along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that it
  * cannot meet its own images; the queries consider every image of every
  * stored ellipsoid (not only the nearest), so the box may be as small as
@@ -74,12 +76,12 @@
  *
  * PW85_EINVAL, the status of a finite argument outside its domain, has
  * these causes, each documented with its function: a box side not > 0
- * (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
- * call (insert, insert_many, insert_many_threads); an id not stored (update, remove, get); in
- * a periodic box, an ellipsoid not narrower than the box,
- * 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k, or a centre with |c_k| > 2²⁹·L_k (insert,
- * insert_many, update; the centre rule also for the queries on a
- * candidate); t ≤ 0 (within, pairs_within); threads < 1 (the all-pairs
+ * or above 2⁹⁹² (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
+ * call (insert, insert_many, insert_many_threads); an id not stored
+ * (update, remove, get); a centre with |c_k| > 2¹⁰²¹ in an open domain,
+ * or with |c_k| > 2²⁹·L_k in a periodic box, and there an ellipsoid not
+ * narrower than the box, 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k (insert, insert_many,
+ * update; the centre rules also for the queries on a candidate); t ≤ 0 (within, pairs_within); threads < 1 (the all-pairs
  * queries) or < 0, or a stride between 1 and its record's size − 1
  * (overlap_any_batch). The status alone does not say which: a binding
  * that reports errors to people checks these rules to name the one
@@ -120,10 +122,11 @@ typedef struct pw85_index pw85_index;
  * @brief Create an empty index, for an open domain or a periodic box.
  *
  * @param[in] box NULL for an open domain; else the sides L0, L1, L2 of the
- *            periodic box (lengths, each > 0 and finite).
+ *            periodic box (lengths, each > 0 and at most 2⁹⁹²).
  * @param[out] index the new index, to be freed with pw85_index_destroy().
  * @return PW85_SUCCESS; PW85_EFAULT if index is NULL; PW85_EDOM if a side
- *         is not finite; PW85_EINVAL if a side is not > 0; PW85_ENOMEM.
+ *         is not finite; PW85_EINVAL if a side is not > 0 or is above
+ *         2⁹⁹²; PW85_ENOMEM.
  *         *index is written on success only.
  * @since 2.2.0
  */
@@ -166,9 +169,10 @@ PW85_API int pw85_index_count(pw85_index const *index,
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
  *         positive definite (the rule of pw85.h); PW85_EINVAL if id is in
- *         use or above PW85_INDEX_MAX_ID, or, in a periodic box, if
- *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k for some k;
- *         PW85_ENOMEM. The index is unchanged on error.
+ *         use or above PW85_INDEX_MAX_ID, or if, for some k,
+ *         |c_k| > 2¹⁰²¹ in an open domain, or in a periodic box
+ *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k; PW85_ENOMEM. The
+ *         index is unchanged on error.
  * @since 2.2.0
  */
 PW85_API int pw85_index_insert(pw85_index *index, size_t id,
@@ -274,8 +278,8 @@ PW85_API int pw85_index_get(pw85_index const *index, size_t id,
  * pw85_overlap(r, q, q_j) decides it, r the exact image vector of the file
  * description ("Images").
  * @param[in] index the index.
- * @param[in] centre the candidate's centre c (in a periodic box,
- *            |c_k| ≤ 2²⁹·L_k).
+ * @param[in] centre the candidate's centre c (|c_k| ≤ 2¹⁰²¹ in an open
+ *            domain, |c_k| ≤ 2²⁹·L_k in a periodic box).
  * @param[in] q the candidate's quadratic form Q.
  * @param[in] exclude the id of a stored ellipsoid to skip (the one the
  *            candidate would replace, in a Monte Carlo move), or
@@ -289,9 +293,10 @@ PW85_API int pw85_index_get(pw85_index const *index, size_t id,
  *             PW85_INDEX_NO_ID for +1.
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
- *         positive definite; PW85_EINVAL if |c_k| > 2²⁹·L_k in a periodic
- *         box; PW85_ERANGE if a pair's forms span more than the range of
- *         a double (as pw85_overlap()), or if, in a periodic box, the
+ *         positive definite; PW85_EINVAL if |c_k| > 2¹⁰²¹ in an open
+ *         domain or |c_k| > 2²⁹·L_k in a periodic box; PW85_ERANGE if a
+ *         pair's forms span more than the range of a double (as
+ *         pw85_overlap()), or if, in a periodic box, the
  *         images of a stored ellipsoid within reach of the candidate span
  *         more than 2²⁰ boxes along an axis (a candidate whose half-length
  *         is about 2¹⁹ sides: the queries enumerate every image);

@@ -189,11 +189,11 @@ class BasicIndex {
   /**
    * @brief Creates an empty index for a periodic box (a rectangle in 2D)
    *        into `out` (pw85_index_create(), pw85_2d_index_create()).
-   * @param[in] box the sides L_k (`dim` lengths, > 0 and finite).
+   * @param[in] box the sides L_k (`dim` lengths, > 0 and at most 2⁹⁹²).
    * @param[out] out as open().
    * @return PW85_SUCCESS; PW85_EFAULT if box is nullptr; PW85_EDOM if a
-   *         side is not finite; PW85_EINVAL if a side is not > 0;
-   *         PW85_ENOMEM. `out` is unchanged on error.
+   *         side is not finite; PW85_EINVAL if a side is not > 0 or is
+   *         above 2⁹⁹²; PW85_ENOMEM. `out` is unchanged on error.
    */
   static int periodic(double const box[Api::dim], Derived &out) noexcept {
     return box == nullptr ? PW85_EFAULT : create(box, out);
@@ -227,8 +227,9 @@ class BasicIndex {
    * @return PW85_SUCCESS; PW85_EFAULT if no index is held or a pointer is
    *         nullptr; PW85_EDOM if an entry is not finite; PW85_ENOTPOSDEF
    *         if q is not positive definite; PW85_EINVAL if id is in use or
-   *         above index_max_id, or, in a periodic box, if
-   *         2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or |c_k| > 2²⁹·L_k; PW85_ENOMEM.
+   *         above index_max_id, or if |c_k| > 2¹⁰²¹ in an open domain,
+   *         or, in a periodic box, if 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k or
+   *         |c_k| > 2²⁹·L_k; PW85_ENOMEM.
    */
   int insert(std::size_t id, double const centre[Api::dim],
              double const q[Api::sym]) noexcept {
@@ -308,8 +309,8 @@ class BasicIndex {
   /**
    * @brief Does a candidate overlap a stored shape? Stops at the first
    *        overlap (pw85_index_overlap_any(), pw85_2d_index_overlap_any()).
-   * @param[in] centre the candidate's centre (in a periodic box,
-   *            |c_k| ≤ 2²⁹·L_k).
+   * @param[in] centre the candidate's centre (|c_k| ≤ 2¹⁰²¹ in an open
+   *            domain, |c_k| ≤ 2²⁹·L_k in a periodic box).
    * @param[in] q the candidate's quadratic form.
    * @param[in] exclude the id of a stored shape to skip, or index_no_id.
    * @param[out] result −1 if some stored shape overlaps the candidate,

@@ -168,12 +168,13 @@ PW85_API void pw85_pack_options_init(pw85_pack_options *options) PW85_NOEXCEPT;
  *         options->size too small, or if the box at the target cannot
  *         hold the largest ellipsoid (the side rule of pw85_index.h with
  *         the largest semi-axis: 2·a_max·(1 + 2⁻⁹) ≥ L_k for some k);
- *         PW85_ERANGE if the semi-axes span more than 2⁴⁰, or the sides
- *         of the box at the target are beyond the range of a double, or
- *         the volume Σa0·a1·a2 is while a semi-axis is outside
- *         [2⁻⁵⁰⁰, 2⁵⁰¹) (inside, they are packed scaled by a power of
- *         two, and the outputs scaled back: exactly the packing of the
- *         scaled semi-axes, scaled); PW85_ENOMEM (also if 6·n doubles
+ *         PW85_ERANGE if the semi-axes span more than 2⁴⁰, or a side of
+ *         the box at the target, or of the box of the packing returned,
+ *         is above 2⁹⁹² (the bound of pw85_index_create()), or the
+ *         volume Σa0·a1·a2 is beyond the range of a double while a
+ *         semi-axis is outside [2⁻⁵⁰⁰, 2⁵⁰¹) (inside, they are packed
+ *         scaled by a power of two, and the outputs scaled back: exactly
+ *         the packing of the scaled semi-axes, scaled); PW85_ENOMEM (also if 6·n doubles
  *         would not fit a size_t). Nothing is written on error.
  * @since 2.4.0
  */

@@ -20,10 +20,9 @@ Index<D>::Index(double const *box) noexcept : periodic_(box != nullptr) {
 template <int D>
 Status Index<D>::check_centre(double const *c) const noexcept {
   if (!all_finite<D>(c)) return Status::not_finite;
-  if (periodic_)
-    for (int k = 0; k < D; ++k)
-      if (!(std::fabs(c[k]) <= max_wraps * box_[k]))
-        return Status::invalid_argument;
+  for (int k = 0; k < D; ++k)
+    if (!(std::fabs(c[k]) <= (periodic_ ? max_wraps * box_[k] : max_centre)))
+      return Status::invalid_argument;
   return Status::success;
 }
 

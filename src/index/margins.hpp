@@ -131,6 +131,15 @@ constexpr double deep_slack = (deep_shrink / 2) * (deep_shrink / 2);  // 2⁻⁴
 // Centres: |c_k| ≤ max_wraps·L_k (periodic), so that wraps and shifts fit
 // an int32.
 constexpr double max_wraps = 0x1p29;
+// Sides L_k ≤ max_side (periodic) and centres |c_k| ≤ max_centre (open;
+// periodic: max_wraps·max_side, the same), so that no sum that the
+// queries form overflows: |c_k − c'_k| ≤ 2¹⁰²², an image vector
+// c'_k + n_k·L_k − c_k (|n_k| ≤ max_span) below 2¹⁰²³, and the slack of
+// margins (cmax + |c| + L, before the reach) below 2¹⁰²³. A reach beyond
+// that covers more than max_span sides, or, in an open domain, the
+// whole grid: +∞ there is handled as such.
+constexpr double max_side = 0x1p992;
+constexpr double max_centre = max_wraps * max_side;  // 2¹⁰²¹
 // The most cells (or image shifts) a query visits along an axis.
 constexpr double max_span = 0x1p20;
 // The most cells of a dense level (16 MiB of positions).

@@ -682,6 +682,11 @@ Status Packer<D>::run(double *box, double *c, double *p, double *q,
   s = check(best_, &ok);
   if (s != Status::success) return s;
   if (!ok) return Status::out_of_range;  // not reached: checked when kept
+  // The index's bound on sides (pw85_pack.h). The box at the target is
+  // far below it (side_rule() in pw85_pack.cpp), but the growth of a
+  // configuration to contact has no bound of its own.
+  for (int k = 0; k < D; ++k)
+    if (!(best_.box[k] <= prm_.side_limit)) return Status::out_of_range;
   std::memcpy(box, best_.box, sizeof best_.box);
   std::memcpy(c, best_.c.data(), D * n_ * sizeof(double));
   if (p != nullptr) std::memcpy(p, best_.p.data(), O * n_ * sizeof(double));

@@ -45,6 +45,7 @@ struct PackParams {
   std::size_t progress_every;
   PackCallback callback;
   void *data;
+  double side_limit;  // the largest side of a box returned (else ERANGE)
 };
 
 // The largest semi-axis times the margin of the side rule the packer
