@@ -707,6 +707,8 @@ const INDEX_2D = Object.freeze({
 
 const SIDE_MARGIN = 1 + 2 ** -20;
 const CENTRE_REACH = 2 ** 29;
+const MAX_SIDE = 2 ** 992;
+const MAX_CENTRE = 2 ** 1021;
 const IMAGE_SPAN = 2 ** 20;
 
 // The threshold t of within and pairsWithin: finite (PW85_EDOM) and > 0
@@ -745,9 +747,13 @@ class IndexBase {
     const h = [null];
     const code = this._d.c.create(b, h);
     check(code, this._call('create'), () => {
-      const k = b.findIndex((x) => !(Number.isFinite(x) && x > 0));
-      return `${d.domain} side L_${k} = ${fmt(b[k])} ` +
-        `${Number.isFinite(b[k]) ? 'is not > 0' : 'is not finite'}`;
+      const k = b.findIndex((x) => !(Number.isFinite(x) && x > 0 &&
+        x <= MAX_SIDE));
+      let rule = 'is not finite';
+      if (Number.isFinite(b[k])) {
+        rule = b[k] > 0 ? `is above 2⁹⁹² = ${fmt(MAX_SIDE)}` : 'is not > 0';
+      }
+      return `${d.domain} side L_${k} = ${fmt(b[k])} ${rule}`;
     });
     this._h = h[0];
     this._ids = new Set();
@@ -796,7 +802,12 @@ class IndexBase {
   }
 
   _placement(centre, q) {
-    if (this.box == null) return undefined;
+    if (this.box == null) {
+      const k = centre.findIndex((x) => !(Math.abs(x) <= MAX_CENTRE));
+      return k < 0 ? undefined : `|c_${k}| = ${fmt(Math.abs(centre[k]))} ` +
+        `> 2¹⁰²¹ = ${fmt(MAX_CENTRE)} (a centre must lie within 2¹⁰²¹ of ` +
+        'the origin)';
+    }
     const { dim, diagonal, shape, domain } = this._d;
     for (let k = 0; k < dim; ++k) {
       const qkk = q[diagonal[k]];

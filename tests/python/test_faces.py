@@ -22,6 +22,7 @@ import numpy as np
 import pytest
 
 import pypw85
+import pypw85.d2
 import pypw85.index
 
 mpmath.mp.dps = 40
@@ -207,6 +208,25 @@ def test_index_errors_name_the_cause():
         in str(e)
     e = raised(lambda: pypw85.Index([1.0, 2.0, np.inf]))
     assert e.status == pypw85.EDOM and "L_2 = inf is not finite" in str(e)
+    # The bounds that keep sums of centres and sides finite (pw85_index.h).
+    e = raised(lambda: pypw85.Index([1.0, 1e299, 1.0]))
+    assert e.status == pypw85.EINVAL and \
+        "box side L_1 = 1.0000000000000001e+299 is above 2⁹⁹² = " \
+        "4.1855804968213567e+298" in str(e)
+    e = raised(lambda: pypw85.d2.Index([2.0**993, 1.0]))
+    assert e.status == pypw85.EINVAL and "rectangle side L_0 = " in str(e) \
+        and "is above 2⁹⁹²" in str(e)
+    for index in (pypw85.Index(), pypw85.d2.Index()):
+        with index:
+            dim = index._dim.dim
+            centre, form = np.zeros(dim), np.eye(dim)[np.triu_indices(dim)]
+            centre[-1] = -1e308
+            e = raised(lambda: index.insert(0, centre, form))
+            assert e.status == pypw85.EINVAL and "|c_%d| = 1e+308 > 2¹⁰²¹ = " \
+                "2.2471164185778949e+307" % (dim - 1) in str(e)
+            e = raised(lambda: index.overlap_any(centre, form))
+            assert e.status == pypw85.EINVAL and "> 2¹⁰²¹" in str(e)
+            assert len(index) == 0
 
 
 def test_index_is_pythonic():

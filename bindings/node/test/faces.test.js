@@ -196,6 +196,22 @@ test('Index errors name the rule, the id, the item and the numbers', () => {
   index.close();
   throwsWith(() => new pw85.Index([1, -2, 1]), 'PW85_EINVAL', 'box side L_1 = -2 is not > 0');
   throwsWith(() => new pw85.Index([1, 2, Infinity]), 'PW85_EDOM', 'L_2 = Infinity is not finite');
+  // The bounds that keep sums of centres and sides finite (pw85_index.h).
+  throwsWith(() => new pw85.Index([1, 1e299, 1]), 'PW85_EINVAL',
+    'box side L_1 = 1e+299 is above 2⁹⁹² = 4.185580496821357e+298');
+  throwsWith(() => new pw85.d2.Index([2 ** 993, 1]), 'PW85_EINVAL',
+    'rectangle side L_0 = 8.371160993642713e+298 is above 2⁹⁹²');
+  for (const open of [new pw85.Index(), new pw85.d2.Index()]) {
+    const dim = open instanceof pw85.Index ? 3 : 2;
+    const centre = new Array(dim).fill(0);
+    centre[dim - 1] = -1e308;
+    const form = dim === 3 ? [1, 0, 0, 1, 0, 1] : [1, 0, 1];
+    throwsWith(() => open.insert(0, centre, form), 'PW85_EINVAL',
+      `|c_${dim - 1}| = 1e+308 > 2¹⁰²¹ = 2.247116418577895e+307`);
+    throwsWith(() => open.overlapAny(centre, form), 'PW85_EINVAL', '> 2¹⁰²¹');
+    assert.equal(open.size, 0);
+    open.close();
+  }
 });
 
 test('within and pairsWithin name t when it is not finite, not the candidate', () => {

@@ -557,13 +557,14 @@ class Index(_Index):
     Parameters
     ----------
     box : array_like of 2 floats, optional
-        The sides of a periodic rectangle (each > 0 and finite); None
+        The sides of a periodic rectangle (each > 0 and at most 2⁹⁹²); None
         (default) for an open plane.
 
     Raises
     ------
     Error
-        `EDOM` if a side is not finite, `EINVAL` if one is not > 0.
+        `EDOM` if a side is not finite, `EINVAL` if one is not > 0 or is
+        above 2⁹⁹².
     """
 
     _dim = _Dimension(2, 3, 1, "pw85_2d_index_", (0, 2), _posdef,

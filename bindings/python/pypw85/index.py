@@ -106,10 +106,13 @@ NO_ID = ctypes.c_size_t(-1).value
 #: The largest id (PW85_INDEX_MAX_ID, 2³² − 2).
 MAX_ID = 0xFFFFFFFE
 
-# The rules of pw85_index.h, for the messages: an ellipsoid narrower than
-# the box, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, and a centre within 2²⁹·L_k.
+# The rules of pw85_index.h, for the messages: sides at most 2⁹⁹², an
+# ellipsoid narrower than the box, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, and a centre
+# within 2²⁹·L_k (periodic) or 2¹⁰²¹ (open).
 _SIDE_MARGIN = 1.0 + 2.0**-20
 _CENTRE_REACH = 2.0**29
+_MAX_SIDE = 2.0**992
+_MAX_CENTRE = 2.0**1021
 # The queries enumerate every image within reach of a candidate, at most
 # 2²⁰ along an axis (PW85_ERANGE beyond: pw85_index_overlap_any()).
 _IMAGE_SPAN = 2.0**20
@@ -259,9 +262,11 @@ class _Index:
         code = d.fn("create")(None if b is None else _ptr(b),
                               ctypes.byref(handle))
         if code != 0:
-            k = int(np.flatnonzero(~(np.isfinite(b) & (b > 0)))[0])
+            k = int(np.flatnonzero(~(np.isfinite(b) & (b > 0)
+                                     & (b <= _MAX_SIDE)))[0])
             rule = ("is not finite" if not math.isfinite(b[k])
-                    else "is not > 0")
+                    else "is not > 0" if not b[k] > 0
+                    else "is above 2⁹⁹² = %s" % _fmt(_MAX_SIDE))
             raise Error(code, "Index", "%s side L_%d = %s %s"
                         % (d.domain, k, _fmt(b[k]), rule))
         self._handle = handle
@@ -330,8 +335,13 @@ class _Index:
     # -- the causes of EINVAL and friends (pw85_index.h), for messages --
 
     def _placement(self, c, f):
-        """The rule of the box that (c, f) breaks, or None."""
+        """The rule of the domain that (c, f) breaks, or None."""
         if self.box is None:
+            for k, x in enumerate(c):
+                if not abs(x) <= _MAX_CENTRE:
+                    return ("|c_%d| = %s > 2¹⁰²¹ = %s (a centre must lie "
+                            "within 2¹⁰²¹ of the origin)"
+                            % (k, _fmt(abs(x)), _fmt(_MAX_CENTRE)))
             return None
         d = self._dim
         for k, (q, side) in enumerate(zip(f[list(d.diagonal)], self.box)):
@@ -398,9 +408,10 @@ class _Index:
         one ``({D},)`` centre for all), ``q`` ``(n, {S})`` (or one ``({S},)``
         form for all). Raises `TypeError` for ids that are not integers,
         `ValueError` for a negative one or a bad shape, `Error` for an
-        input the library rejects (`EINVAL`: an id in use, or repeated, or
-        in a periodic {domain} an {shape} not narrower than the {domain} or a
-        centre beyond 2²⁹ sides; `ENOTPOSDEF`; `EDOM`), naming the first
+        input the library rejects (`EINVAL`: an id in use, or repeated, a
+        centre beyond 2¹⁰²¹ in an open domain, or in a periodic {domain} an
+        {shape} not narrower than the {domain} or a centre beyond 2²⁹
+        sides; `ENOTPOSDEF`; `EDOM`), naming the first
         failing item, its id and the rule; the index is then unchanged.
         """
         self._modifiable("insert")
@@ -773,8 +784,8 @@ class Index(_Index):
     Parameters
     ----------
     box : array_like of 3 floats, optional
-        The sides of a periodic orthorhombic box (each > 0 and finite);
-        None (default) for an open domain.
+        The sides of a periodic orthorhombic box (each > 0 and at most
+        2⁹⁹²); None (default) for an open domain.
 
     An `Index` holds library memory: it is freed by `close` (or by the
     ``with`` statement, or when the object is collected). Modifying calls
@@ -793,8 +804,8 @@ class Index(_Index):
     Raises
     ------
     Error
-        `EDOM` if a side is not finite, `EINVAL` if one is not > 0 (the
-        message names the side).
+        `EDOM` if a side is not finite, `EINVAL` if one is not > 0 or is
+        above 2⁹⁹² (the message names the side).
     """
 
 
