@@ -49,43 +49,41 @@ static int insert(Index *x, size_t id, double const *c) {
 }
 
 static int overlap_any(Index *x, double const *c, int *result, size_t *id) {
-  return x->dim == 3 ? pw85_index_overlap_any(x->i3, c, unit3,
-                                              PW85_INDEX_NO_ID, result, id)
+  return x->dim == 3 ? pw85_index_overlap_any(x->i3, c, unit3, PW85_INDEX_NO_ID,
+                                              result, id)
                      : pw85_2d_index_overlap_any(x->i2, c, unit2,
                                                  PW85_INDEX_NO_ID, result, id);
 }
 
-static int within(Index *x, double const *c, double t, size_t cap,
-                  size_t *ids, int *shifts, double *ml, size_t *count) {
+static int within(Index *x, double const *c, double t, size_t cap, size_t *ids,
+                  int *shifts, double *ml, size_t *count) {
   return x->dim == 3
-             ? pw85_index_within(x->i3, c, unit3, t, PW85_INDEX_NO_ID, cap,
-                                 ids, shifts, ml, count)
-             : pw85_2d_index_within(x->i2, c, unit2, t, PW85_INDEX_NO_ID,
-                                    cap, ids, shifts, ml, count);
+             ? pw85_index_within(x->i3, c, unit3, t, PW85_INDEX_NO_ID, cap, ids,
+                                 shifts, ml, count)
+             : pw85_2d_index_within(x->i2, c, unit2, t, PW85_INDEX_NO_ID, cap,
+                                    ids, shifts, ml, count);
 }
 
-static int pairs(Index *x, int threads, size_t cap, size_t *ids,
-                 int *shifts, int *results, size_t *count) {
+static int pairs(Index *x, int threads, size_t cap, size_t *ids, int *shifts,
+                 int *results, size_t *count) {
   return x->dim == 3 ? pw85_index_overlapping_pairs(x->i3, threads, cap, ids,
-                                                     shifts, results, count)
-                     : pw85_2d_index_overlapping_pairs(x->i2, threads, cap,
-                                                        ids, shifts, results,
-                                                        count);
+                                                    shifts, results, count)
+                     : pw85_2d_index_overlapping_pairs(x->i2, threads, cap, ids,
+                                                       shifts, results, count);
 }
 
 static int pairs_within(Index *x, double t, size_t *count) {
-  return x->dim == 3 ? pw85_index_pairs_within(x->i3, t, 2, 0, NULL, NULL,
-                                               NULL, count)
-                     : pw85_2d_index_pairs_within(x->i2, t, 2, 0, NULL, NULL,
-                                                  NULL, count);
+  return x->dim == 3
+             ? pw85_index_pairs_within(x->i3, t, 2, 0, NULL, NULL, NULL, count)
+             : pw85_2d_index_pairs_within(x->i2, t, 2, 0, NULL, NULL, NULL,
+                                          count);
 }
 
 static int energy(Index *x, double *e) {
-  return x->dim == 3
-             ? pw85_index_energy(x->i3, PW85_ENERGY_OVERLAP, 1., NULL, NULL,
-                                 2, 2, e, NULL, NULL)
-             : pw85_2d_index_energy(x->i2, PW85_ENERGY_OVERLAP, 1., NULL,
-                                    NULL, 2, 2, e, NULL, NULL);
+  return x->dim == 3 ? pw85_index_energy(x->i3, PW85_ENERGY_OVERLAP, 1., NULL,
+                                         NULL, 2, 2, e, NULL, NULL)
+                     : pw85_2d_index_energy(x->i2, PW85_ENERGY_OVERLAP, 1.,
+                                            NULL, NULL, 2, 2, e, NULL, NULL);
 }
 
 /* A centre (x0, 0[, 0]). */
@@ -95,8 +93,7 @@ static void at(double x0, double *c) { c[0] = x0, c[1] = c[2] = 0.; }
 static void test_sides(gconstpointer data) {
   int const dim = GPOINTER_TO_INT(data);
   double const good[] = {MAX_SIDE, 1.0, DBL_MIN};
-  double const bad[] = {nextafter(MAX_SIDE, HUGE_VAL), 0x1p994, 1e300,
-                        DBL_MAX};
+  double const bad[] = {nextafter(MAX_SIDE, HUGE_VAL), 0x1p994, 1e300, DBL_MAX};
   for (size_t i = 0; i < G_N_ELEMENTS(good); ++i) {
     double box[3] = {1., 1., 1.};
     box[dim - 1] = good[i];
@@ -161,8 +158,7 @@ static void test_extreme_queries(gconstpointer data) {
   for (int periodic = 0; periodic <= 1; ++periodic) {
     double const box[3] = {MAX_SIDE, MAX_SIDE, MAX_SIDE};
     Index x;
-    g_assert_cmpint(create(dim, periodic ? box : NULL, &x), ==,
-                    PW85_SUCCESS);
+    g_assert_cmpint(create(dim, periodic ? box : NULL, &x), ==, PW85_SUCCESS);
     double c0[3], c1[3];
     at(MAX_CENTRE, c0);
     at(-MAX_CENTRE, c1);
@@ -177,7 +173,7 @@ static void test_extreme_queries(gconstpointer data) {
       if (periodic) {
         g_assert_cmpuint(ids[0], ==, 0);
         g_assert_cmpuint(ids[1], ==, 1);
-        g_assert_cmpint(shifts[0], ==, 1 << 30);  /* c1 + 2³⁰·L − c0 = 0 */
+        g_assert_cmpint(shifts[0], ==, 1 << 30); /* c1 + 2³⁰·L − c0 = 0 */
         for (int k = 1; k < dim; ++k) g_assert_cmpint(shifts[k], ==, 0);
         g_assert_cmpint(results[0], ==, -1);
       }
