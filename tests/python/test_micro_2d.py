@@ -480,3 +480,22 @@ def test_bad_files(tmp_path):
         [lines[0], lines[1].replace("dimension=2", "dimension=4")] + lines[2:]))
     with pytest.raises(ValueError, match="dimension=4, not 2 or 3"):
         micro.read_xyz(tmp_path / "d4.xyz")
+    # a header or a line that is not of write_xyz: the file and the cause
+    # named (a KeyError or a bare conversion message escaped)
+    for name, text, match in (
+            ("nolat.xyz", [lines[0], lines[1].replace("Lattice=", "Cell=")],
+             "no Lattice= in the header line"),
+            ("noprop.xyz", [lines[0], lines[1].replace("Properties=", "P=")],
+             "no Properties= in the header line"),
+            ("badlat.xyz", [lines[0], lines[1].replace('Lattice="', 'Lattice="x ')],
+             "Lattice is not 9 numbers of an orthorhombic box"),
+            ("count.xyz", ["two", lines[1]], "the first line, 'two', is not a "
+             "count of particles"),
+            ("neg.xyz", ["-2", lines[1]], "the first line, '-2', is not a"),
+            ("width.xyz", [lines[0], lines[1].replace("pos:R:3", "pos:R:x")],
+             "column pos has no width"),
+            ("word.xyz", [lines[0], lines[1], "X abc" + lines[2][
+                lines[2].index(" ", 2):]], "column pos: could not convert")):
+        (tmp_path / name).write_text("\n".join(text + lines[len(text):]) + "\n")
+        with pytest.raises(ValueError, match=match):
+            micro.read_xyz(tmp_path / name)

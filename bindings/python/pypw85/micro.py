@@ -681,7 +681,14 @@ def read_xyz(path) -> Microstructure:
     (pw85_2d_ellipse)."""
     from . import ellipsoid_quaternion
     with open(path) as f:
-        n = int(f.readline())
+        first = f.readline()
+        try:
+            n = int(first)
+        except ValueError:
+            n = -1
+        if n < 0:
+            raise ValueError("%s: the first line, %r, is not a count of "
+                             "particles" % (path, first.strip()))
         header = f.readline()
         fields = dict(re.findall(r'(\w+)=("[^"]*"|\S+)', header))
         fields = {k: v.strip('"') for k, v in fields.items()}
@@ -689,12 +696,23 @@ def read_xyz(path) -> Microstructure:
         if text not in ("2", "3"):
             raise ValueError("%s: dimension=%s, not 2 or 3" % (path, text))
         dim = int(text)
-        lattice = [float(x) for x in fields["Lattice"].split()]
+        for key in ("Lattice", "Properties"):
+            if key not in fields:
+                raise ValueError("%s: no %s= in the header line (a file of "
+                                 "write_xyz has it)" % (path, key))
+        try:
+            lattice = [float(x) for x in fields["Lattice"].split()]
+        except ValueError:
+            lattice = []
         if len(lattice) != 9 or any(lattice[i] != 0 for i in (1, 2, 3, 5, 6, 7)):
-            raise ValueError("%s: Lattice is not orthorhombic: %s" % (path, lattice))
+            raise ValueError("%s: Lattice is not 9 numbers of an orthorhombic "
+                             "box: %r" % (path, fields["Lattice"]))
         spec = fields["Properties"].split(":")
         columns, at = {}, 0
         for name, _kind, width in zip(spec[0::3], spec[1::3], spec[2::3]):
+            if not width.isdigit():
+                raise ValueError("%s: Properties=%s: column %s has no width"
+                                 % (path, fields["Properties"], name))
             columns[name] = (at, at + int(width))
             at += int(width)
         needed = (("pos", "aspherical_shape", "orientation") if dim == 3
@@ -709,8 +727,11 @@ def read_xyz(path) -> Microstructure:
 
     def block(name):
         lo, hi = columns[name]
-        return np.array([[float(x) for x in r[lo:hi]] for r in rows],
-                        dtype=np.float64).reshape(n, hi - lo)
+        try:
+            return np.array([[float(x) for x in r[lo:hi]] for r in rows],
+                            dtype=np.float64).reshape(n, hi - lo)
+        except ValueError as e:
+            raise ValueError("%s: column %s: %s" % (path, name, e)) from None
     extra = {k: v for k, v in fields.items()
              if k not in ("Lattice", "pbc", "Properties", "seed", "method",
                           "pw85_version", "packing_fraction", "dimension")}
