@@ -293,6 +293,22 @@ def test_xyz_round_trip(tmp_path):
     np.testing.assert_array_equal(atoms.arrays["aspherical_shape"], m.axes)
 
 
+def test_xyz_species_one_word(tmp_path):
+    """The species is a column: a space or a quote in it, or an empty one,
+    shifted every column of the line (read_xyz, OVITO, ASE misread the
+    file); refused before anything is written."""
+    m = configuration()
+    for bad in ("A B", "", "C\n", 'say"', "it's", "\tX"):
+        with pytest.raises(ValueError, match="is not one word"):
+            micro.write_xyz(tmp_path / "s.xyz", m, species=bad)
+    with pytest.raises(TypeError, match="is not a str"):
+        micro.write_xyz(tmp_path / "s.xyz", m, species=3)
+    assert not (tmp_path / "s.xyz").exists()
+    micro.write_xyz(tmp_path / "s.xyz", m, species="Ellipsoid_1")
+    r = micro.read_xyz(tmp_path / "s.xyz")
+    np.testing.assert_array_equal(r.centres, m.centres)
+
+
 def test_xyz_method_quoted(tmp_path):
     """The method (any text) quoted in the header: a space no longer cuts it
     nor starts a key of its own; a double quote or a line break, which no

@@ -634,7 +634,15 @@ def write_xyz(path, m: Microstructure, species: str = "X") -> None:
     without ellipses), is not periodic (pbc "T T F"); each ellipse as the
     ellipsoid of semi-axes (a0, a1, min(a0, a1)) turned by θ about z
     (orientation (0, 0, sin θ/2, cos θ/2)), θ itself in a last column
-    ``angle``, and ``dimension=2`` in the header."""
+    ``angle``, and ``dimension=2`` in the header. ``species``, the first
+    column of every line, is one word: a non-empty str without white
+    space or quotes (ValueError, TypeError, before anything is written)."""
+    if not isinstance(species, str):
+        raise TypeError("species = %r is not a str" % (species,))
+    if not species or re.search(r'[\s"\']', species):
+        raise ValueError("species = %r is not one word (no white space or "
+                         "quotes: it is a column of extended XYZ)"
+                         % (species,))
     layout, box, arrays = _checked(m, ("centres", "axes"))
     n = len(m)
     c, a = arrays["centres"], arrays["axes"]
