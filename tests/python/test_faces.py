@@ -428,6 +428,15 @@ def test_scalar_conversions():
     with pytest.raises(ValueError, match="^a: expected a real number in "
                        "the range"):
         pypw85.spheroid(2**2000, 1.0, [0.0, 0.0, 1.0])
+    # a bool, refused in the arrays, is refused as a scalar too (True was
+    # read as λ = 1, as a radius of 1)
+    for flag in (True, np.bool_(False)):
+        with pytest.raises(TypeError, match="^lambda_: expected a real "
+                           "number, got a bool"):
+            pypw85.f(flag, r, q, q)
+        with pytest.raises(TypeError, match="^c: expected a real number, "
+                           "got a bool"):
+            pypw85.spheroid(1.0, flag, [0.0, 0.0, 1.0])
     a = np.ones((4, 3))
     for options, error, text in [
             ({"target": huge}, ValueError, "pack: target: expected a real "

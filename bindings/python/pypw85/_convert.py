@@ -66,7 +66,11 @@ def unaliased(out, *inputs):
 
 def real(name, x):
     """x as a Python float, if x is a real scalar; else raise TypeError
-    (ValueError for an integer beyond the range of a double)."""
+    (ValueError for an integer beyond the range of a double). A bool is
+    refused, as in the arrays (vector()): True is no length."""
+    if isinstance(x, (bool, np.bool_)):
+        raise TypeError("%s: expected a real number, got a bool (%r)"
+                        % (name, x))
     if isinstance(x, numbers.Real) or (
             isinstance(x, np.ndarray) and x.ndim == 0 and
             x.dtype.kind in "iuf"):
