@@ -1,13 +1,15 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /* The indexes (pw85_index.h, pw85_2d_index.h) at the ends of their
- * domain: periodic sides up to 2⁹⁹², open-domain centres up to
- * 2¹⁰²¹, and every query on ellipsoids placed there. Beyond these bounds,
- * sums of centres and sides overflowed: an all-pairs query in an open
- * domain with centres ±DBL_MAX read outside its grid (AddressSanitizer: a
+ * domain: periodic sides up to 2⁹⁹², open-domain centres up to 2¹⁰²¹,
+ * and every query on ellipsoids placed there. Beyond these bounds, sums
+ * of centres and sides overflowed: an all-pairs query in an open domain
+ * with centres ±DBL_MAX read outside its grid (AddressSanitizer: a
  * heap-buffer-overflow), and boxes of sides 2⁹⁹⁴ to DBL_MAX, accepted,
- * answered PW85_ERANGE with a single ellipsoid. The expected answers are
- * those of the geometry: unit disks or balls whose centres differ by
- * exactly 0 (overlap, μ² = 0) or by at least 2⁹⁹² (far apart). */
+ * answered PW85_ERANGE with a single ellipsoid. Also the all-pairs
+ * snapshot's grid at the end of its range (grid-cells). The expected
+ * answers are those of the geometry: unit disks or balls whose centres
+ * differ by exactly 0 (overlap, μ² = 0) or by at least 2⁹⁹² (far apart).
+ */
 #include <float.h>
 #include <glib.h>
 #include <math.h>
@@ -208,6 +210,48 @@ static void test_extreme_queries(gconstpointer data) {
   }
 }
 
+/* The all-pairs snapshot's grid of a level: in an open domain, as many
+ * cells per axis as the spread of its centres holds (at most 2²⁰), then
+ * the widest axis halved until the cells are no more than 2·count + 64.
+ * Two unit balls (cells of side 2) whose centres differ by 2·(n_k − 1)
+ * start at n = (1039794, 488814, 724987) and end at (4, 4, 3): 48 cells,
+ * which the product of doubles, divided and multiplied as the axes were
+ * halved, counted 47 (truncated), and the last cell's run was read past
+ * the offsets (AddressSanitizer: heap-buffer-overflow; a SIGSEGV in a
+ * sweep of configurations over 2³⁰ of sizes). Far apart: no pair. */
+static void test_grid_cells(void) {
+  pw85_index *ix;
+  g_assert_cmpint(pw85_index_create(NULL, &ix), ==, PW85_SUCCESS);
+  double const c0[3] = {0., 0., 0.};
+  double const c1[3] = {2. * 1039793., 2. * 488813., 2. * 724986.};
+  g_assert_cmpint(pw85_index_insert(ix, 0, c0, unit3), ==, PW85_SUCCESS);
+  g_assert_cmpint(pw85_index_insert(ix, 1, c1, unit3), ==, PW85_SUCCESS);
+  for (int threads = 1; threads <= 2; ++threads) {
+    size_t n = 9;
+    g_assert_cmpint(
+        pw85_index_overlapping_pairs(ix, threads, 0, NULL, NULL, NULL, &n), ==,
+        PW85_SUCCESS);
+    g_assert_cmpuint(n, ==, 0);
+    g_assert_cmpint(
+        pw85_index_pairs_within(ix, 4., threads, 0, NULL, NULL, NULL, &n), ==,
+        PW85_SUCCESS);
+    g_assert_cmpuint(n, ==, 0);
+  }
+  /* A third ball on the second: one pair, μ² = 0 (it changes the count,
+   * and so the grid: the first query above is the regression). */
+  g_assert_cmpint(pw85_index_insert(ix, 2, c1, unit3), ==, PW85_SUCCESS);
+  size_t ids[2] = {9, 9}, n = 9;
+  int shifts[3] = {9, 9, 9}, results[1] = {9};
+  g_assert_cmpint(
+      pw85_index_overlapping_pairs(ix, 1, 1, ids, shifts, results, &n), ==,
+      PW85_SUCCESS);
+  g_assert_cmpuint(n, ==, 1);
+  g_assert_cmpuint(ids[0], ==, 1);
+  g_assert_cmpuint(ids[1], ==, 2);
+  g_assert_cmpint(results[0], ==, -1);
+  pw85_index_destroy(ix);
+}
+
 int main(int argc, char *argv[]) {
   g_test_init(&argc, &argv, NULL);
   for (int dim = 2; dim <= 3; ++dim) {
@@ -219,5 +263,6 @@ int main(int argc, char *argv[]) {
     g_snprintf(name, sizeof name, "/pw85/index-range/%dd/queries", dim);
     g_test_add_data_func(name, GINT_TO_POINTER(dim), test_extreme_queries);
   }
+  g_test_add_func("/pw85/index-range/grid-cells", test_grid_cells);
   return g_test_run();
 }

@@ -110,7 +110,6 @@ void grid_shape(Level<D> const &lv, double const *box, bool periodic,
           lo[k] = std::min(lo[k], lv.cells[ci][ei].c[k]);
           hi[k] = std::max(hi[k], lv.cells[ci][ei].c[k]);
         }
-  double cells = 1.0;
   for (int k = 0; k < D; ++k) {
     g.hmax[k] = lv.hmax[k];
     double const side = std::ldexp(1.0, lv.exponent + snapshot_cell_octaves);
@@ -125,18 +124,26 @@ void grid_shape(Level<D> const &lv, double const *box, bool periodic,
       g.n[k] = static_cast<std::int64_t>(std::min(
           std::floor((hi[k] - lo[k]) * g.inv[k]) + 1.0, max_span));
     }
-    cells *= double(g.n[k]);
   }
   // Coarsen the widest axis until the grid is no larger than its entries.
-  double const most = 2.0 * double(lv.count) + 64.0;
+  // The number of cells in integers (each n_k ≤ 2²⁰, their product below
+  // 2⁶⁴): a product of doubles, divided and multiplied as the axes were
+  // halved, drifted below the integer and was truncated (3·4·5 cells
+  // counted 59, and the last cell read past the offsets).
+  auto const product = [&g]() {
+    std::uint64_t p = 1;
+    for (int k = 0; k < D; ++k) p *= static_cast<std::uint64_t>(g.n[k]);
+    return p;
+  };
+  std::uint64_t const most = 2 * std::uint64_t(lv.count) + 64;
+  std::uint64_t cells = product();
   while (cells > most) {
     int k = 0;
     for (int a = 1; a < D; ++a)
       if (g.n[a] > g.n[k]) k = a;
-    cells /= double(g.n[k]);
     g.n[k] = (g.n[k] + 1) / 2;
-    cells *= double(g.n[k]);
     g.inv[k] = periodic ? double(g.n[k]) / box[k] : 0.5 * g.inv[k];
+    cells = product();
   }
   g.cells = static_cast<std::size_t>(cells);
 }
