@@ -25,14 +25,14 @@
  *
  * Domain. Open: centres with |c_k| ≤ 2¹⁰²¹ (about 2.2e307). Periodic: a
  * rectangle of sides L = (L0, L1), each at most 2⁹⁹² (about 4.2e298); an
- * ellipse stands for all its images c + n∘L, n ∈ ℤ² (n∘L = (n0·L0,
- * n1·L1)); centres need not be wrapped into the rectangle, but
- * |c_k| ≤ 2²⁹·L_k. (These bounds keep every difference of centres and
- * every image vector within the range of a double.) Each stored ellipse must be narrower
- * than the rectangle along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that
- * it cannot meet its own images; the queries consider every image of
- * every stored ellipse (not only the nearest), so the rectangle may be as
- * small as that rule allows, and a pair may meet through several images.
+ * ellipse stands for all its images c + n∘L, n ∈ ℤ² (n∘L = (n0·L0, n1·L1));
+ * centres need not be wrapped into the rectangle, but |c_k| ≤ 2²⁹·L_k.
+ * (These bounds keep every difference of centres and every image vector
+ * within the range of a double.) Each stored ellipse must be narrower than
+ * the rectangle along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that it
+ * cannot meet its own images; the queries consider every image of every
+ * stored ellipse (not only the nearest), so the rectangle may be as small
+ * as that rule allows, and a pair may meet through several images.
  *
  * Images. A result names a stored ellipse j by its id and an image shift
  * n (two ints; 0 in an open plane); the vector from the query's centre c
@@ -283,8 +283,9 @@ PW85_API int pw85_2d_index_get(pw85_2d_index const *index, size_t id,
  * @return PW85_SUCCESS; PW85_EFAULT if a pointer is NULL; PW85_EDOM if an
  *         entry of centre or q is not finite; PW85_ENOTPOSDEF if q is not
  *         positive definite; PW85_EINVAL if |c_k| > 2¹⁰²¹ in an open
- *         plane or |c_k| > 2²⁹·L_k in a periodic rectangle; PW85_ERANGE if a pair's forms span more than the
- *         range of a double (as pw85_2d_overlap()), or if, in a periodic
+ *         plane or |c_k| > 2²⁹·L_k in a periodic rectangle; PW85_ERANGE
+ *         if a pair's forms span more than the range of a double (as
+ *         pw85_2d_overlap()), or if, in a periodic
  *         rectangle, the images of a stored ellipse within reach of the
  *         candidate span more than 2²⁰ rectangles along an axis (a
  *         candidate whose half-length is about 2¹⁹ sides: the queries

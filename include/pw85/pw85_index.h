@@ -18,12 +18,12 @@
  *
  * Domain. Open: centres with |c_k| ≤ 2¹⁰²¹ (about 2.2e307). Periodic: an
  * orthorhombic box of sides L = (L0, L1, L2), each at most 2⁹⁹² (about
- * 4.2e298); an ellipsoid stands for all its images c + n∘L, n ∈ ℤ³
- * (n∘L = (n0·L0, n1·L1, n2·L2)); centres need not be wrapped into the
- * box, but |c_k| ≤ 2²⁹·L_k. (These bounds keep every difference of
- * centres and every image vector within the range of a double.) Each stored ellipsoid must be narrower
- * than the box along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that it
- * cannot meet its own images; the queries consider every image of every
+ * 4.2e298); an ellipsoid stands for all its images c + n∘L, n ∈ ℤ³ (n∘L =
+ * (n0·L0, n1·L1, n2·L2)); centres need not be wrapped into the box, but
+ * |c_k| ≤ 2²⁹·L_k. (These bounds keep every difference of centres and every
+ * image vector within the range of a double.) Each stored ellipsoid must be
+ * narrower than the box along each axis, 2·√Q_kk·(1 + 2⁻²⁰) < L_k, so that
+ * it cannot meet its own images; the queries consider every image of every
  * stored ellipsoid (not only the nearest), so the box may be as small as
  * that rule allows, and a pair may meet through several images.
  *
@@ -75,17 +75,18 @@
  * bit, for any number of threads. No other function starts a thread.
  *
  * PW85_EINVAL, the status of a finite argument outside its domain, has
- * these causes, each documented with its function: a box side not > 0
- * or above 2⁹⁹² (create); an id above PW85_INDEX_MAX_ID, or in use, or repeated in one
- * call (insert, insert_many, insert_many_threads); an id not stored
- * (update, remove, get); a centre with |c_k| > 2¹⁰²¹ in an open domain,
- * or with |c_k| > 2²⁹·L_k in a periodic box, and there an ellipsoid not
- * narrower than the box, 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k (insert, insert_many,
- * update; the centre rules also for the queries on a candidate); t ≤ 0 (within, pairs_within); threads < 1 (the all-pairs
- * queries) or < 0, or a stride between 1 and its record's size − 1
- * (overlap_any_batch). The status alone does not say which: a binding
- * that reports errors to people checks these rules to name the one
- * broken (pypw85 and the Node.js package do).
+ * these causes, each documented with its function: a box side not > 0 or
+ * above 2⁹⁹² (create); an id above PW85_INDEX_MAX_ID, or in use, or
+ * repeated in one call (insert, insert_many, insert_many_threads); an id
+ * not stored (update, remove, get); a centre with |c_k| > 2¹⁰²¹ in an open
+ * domain, or with |c_k| > 2²⁹·L_k in a periodic box, and there an ellipsoid
+ * not narrower than the box, 2·√Q_kk·(1 + 2⁻²⁰) ≥ L_k (insert, insert_many,
+ * update; the centre rules also for the queries on a candidate); t ≤ 0
+ * (within, pairs_within); threads < 1 (the all-pairs queries) or < 0, or a
+ * stride between 1 and its record's size − 1 (overlap_any_batch). The
+ * status alone does not say which: a binding that reports errors to
+ * people checks these rules to name the one broken (pypw85 and the
+ * Node.js package do).
  *
  * Outputs that may not fit take a capacity (a number of results) and
  * return the number of results in *count, as snprintf does: the first

@@ -174,8 +174,9 @@ PW85_API void pw85_pack_options_init(pw85_pack_options *options) PW85_NOEXCEPT;
  *         volume Σa0·a1·a2 is beyond the range of a double while a
  *         semi-axis is outside [2⁻⁵⁰⁰, 2⁵⁰¹) (inside, they are packed
  *         scaled by a power of two, and the outputs scaled back: exactly
- *         the packing of the scaled semi-axes, scaled); PW85_ENOMEM (also if 6·n doubles
- *         would not fit a size_t). Nothing is written on error.
+ *         the packing of the scaled semi-axes, scaled); PW85_ENOMEM
+ *         (also if 6·n doubles would not fit a size_t). Nothing is
+ *         written on error.
  * @since 2.4.0
  */
 PW85_API int pw85_pack(size_t n, double const *semi_axes,
