@@ -8,6 +8,7 @@
 #ifndef PW85_SRC_EVALUATE_HPP
 #define PW85_SRC_EVALUATE_HPP
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 
@@ -236,6 +237,37 @@ template <int D>
 PW85_INLINE bool plain_cond(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   b->cond = pt.trace_q * ldl_trace_inverse(pt.sol.fac);
   return std::isfinite(b->cond);
+}
+
+// A second upper bound of μ² at a plain point, second order in λ − λ*
+// where max(μ1², μ2²) is first order. At the point x0 = c1 + (1 − λ)·Q1s
+// of the curve (s = Q(λ)⁻¹r), dᵢ² = μᵢ², dᵢ² being the form of ellipsoid i
+// at a point; both ellipsoids scaled by max(d1(x), d2(x)) contain x, so
+// μ² ≤ max(d1², d2²) at any point x (ch. 5, the argument of eq. (1b)). At
+// x = x0 + t·r, since r = (1 − λ)Q1s + λQ2s,
+//   d1² = μ1² + 2t(1 − λ)·sᵀr + t²·a1,   d2² = μ2² − 2tλ·sᵀr + t²·a2,
+// with aᵢ = rᵀQᵢ⁻¹r. For t = g/(2sᵀr), g = μ2² − μ1², the terms of first
+// order meet at λμ1² + (1 − λ)μ2² = f(λ) (f = λ(1 − λ)·sᵀr, and
+// sᵀr = sᵀQs = (1 − λ)P1 + λP2), so that
+//   μ² ≤ f(λ) + g²·max(a1, a2)/(4(sᵀr)²),   sᵀr = f/(λ(1 − λ)),
+// within O(g²) = O((λ − λ*)²) of μ², as f is from below.
+// Certified here with the margins of filter 3 (overlap.cpp): f off by m_f
+// relative, μᵢ² by m_mu, aᵢ by m_a (filter 2's), so g by
+// m_mu·(μ1² + μ2²) plus its rounding; while each margin is at most 1/8,
+// the correction's factors are off by (1 + 1/8)/(1 − 1/8)² < 1.5, which
+// the factor 2 (for ¼) covers. +∞ where a margin exceeds 1/8 (or f ≤ 0).
+// a_max = max(a1, a2) as computed.
+template <int D>
+PW85_INLINE double moved_upper_bound(PlainPoint<D> const &pt,
+                                     PlainBounds const &b, double a_max,
+                                     double m_f, double m_mu,
+                                     double m_a) noexcept {
+  if (!(std::max(m_f, std::max(m_mu, m_a)) <= 0.125 && pt.f > 0.0))
+    return HUGE_VAL;
+  double const g = std::fabs(b.mu2_sq - b.mu1_sq) * (1.0 + DBL_EPSILON) +
+                   m_mu * (b.mu1_sq + b.mu2_sq);
+  double const w = pt.lambda * (1.0 - pt.lambda) / pt.f;  // 1/(sᵀr)
+  return pt.f * (1.0 + m_f) + 0.5 * g * g * a_max * w * w;
 }
 
 // All of *b; returns false when κ̄ is not finite.

@@ -58,6 +58,19 @@ Decision centre_filter(Filtering<D> const &s) noexcept {
   return Decision::undecided;
 }
 
+// Whether the second upper bound of μ² (moved_upper_bound(), evaluate.hpp)
+// lies below 1 in plain double, with no margin: whether filter 3 runs.
+// As (g²/4)·max(aᵢ)·(λ(1 − λ))² < (1 − f)·f², without a division.
+template <int D>
+PW85_INLINE bool moved_bound_below(PlainPoint<D> const &pt,
+                                   PlainBounds const &b,
+                                   Filtering<D> const &s) noexcept {
+  double const g = b.mu2_sq - b.mu1_sq;
+  double const lm = pt.lambda * (1.0 - pt.lambda);
+  return 0.25 * g * g * std::max(s.p.a1, s.p.a2) * lm * lm <
+         (s.one - pt.f) * pt.f * pt.f;
+}
+
 // Filter 3, the bounds valid at every λ (ch. 5, eqs. (1a)–(1b)):
 // f(λ) ≤ μ² because μ² is the maximum of f; μ² ≤ max(μ1², μ2²) because
 // the point x0(λ) lies in both ellipsoids scaled by max(μ1, μ2), which
@@ -75,6 +88,10 @@ PW85_INLINE Decision bounds_filter(PlainPoint<D> const &pt, PlainBounds const &b
   if (m_f < margin_limit && pt.f * (1.0 - m_f) > s.one)
     return Decision::disjoint;
   if (m_mu < margin_limit && std::max(b.mu1_sq, b.mu2_sq) * (1.0 + m_mu) < s.one)
+    return Decision::overlap;
+  if (moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m_f, m_mu,
+                        plain_form_margin * std::max(s.cond1, s.cond2)) <
+      s.one * (1.0 - 5.0 * DBL_EPSILON))
     return Decision::overlap;
   return Decision::undecided;
 }
@@ -130,7 +147,8 @@ PW85_INLINE Decision accurate_bounds(PlainPoint<D> const &pt,
     for (int i = 0; i < D; ++i) abs_low += std::fabs(s.r_lo[i] * sv[i]);
   }
   double const e_sq = tiny * s1 * (r_max + pt.trace_q * s1);
-  double const rs = dd_add(dot_dd<D>(p.r, sv), low).hi;
+  dd const sigma = dot_dd<D>(p.r, sv);  // ŝᵀr, r the double part
+  double const rs = dd_add(sigma, low).hi;
   double const rs_err = 4.0 * eps * abs_low + e_sq;
   dd const mu = two_sum(1.0, -lambda);  // 1 − λ = mu.hi + mu.lo, exactly
   double const margin = 8.0 * eps;
@@ -151,6 +169,34 @@ PW85_INLINE Decision accurate_bounds(PlainPoint<D> const &pt,
                         margin * (lam2_p2 + std::fabs(cross) + rho_q2);
   if (std::max(mu1_sq, mu2_sq) < s.one * (1.0 - 5.0 * eps))
     return Decision::overlap;
+  // The moved point of moved_upper_bound() (evaluate.hpp) for this ŝ:
+  // x = x0 + t·r with
+  // x0 = c1 + (1 − λ)Q1ŝ and r the double part (any direction serves), so
+  // that, as x − c2 = −(λQ2ŝ + ρ) + t·r,
+  //   d1² = μ1² + 2t(1 − λ)·σ + t²·a1,
+  //   d2² = μ2² − 2tλ·σ − 2t·ρᵀQ2⁻¹r + t²·a2,
+  // σ = ŝᵀr, μᵢ² the two forms bounded above (mu1_sq, mu2_sq). With
+  // t = g/(2σ), g = mu2_sq − mu1_sq (2tσ = g(1 + θ), |θ| ≤ ε with g and
+  // t rounded), both lie
+  // below λ·mu1_sq + (1 − λ)·mu2_sq + 2ε|g| + 2|t|·(e_σ + √(ρᵀQ2⁻¹ρ·a2))
+  // + t²·max(aᵢ), |ρᵀQ2⁻¹r| ≤ √(ρᵀQ2⁻¹ρ)·√a2 (Cauchy–Schwarz), e_σ the
+  // error of σ (Dot2: ε/2·|σ| plus the second-order e_sq), aᵢ off by m_a
+  // as in filter 2; 8ε on the sum of non-negative terms for its rounding.
+  double const m_a = plain_form_margin * std::max(s.cond1, s.cond2);
+  double const sig = sigma.hi + sigma.lo;
+  if (m_a <= 0.125 && sig > 0.0) {
+    double const m1 = std::max(mu1_sq, 0.0), m2 = std::max(mu2_sq, 0.0);
+    double const g = m2 - m1;
+    double const t = std::fabs(g / (2.0 * sig));
+    double const a1 = p.a1 * (1.0 + m_a), a2 = p.a2 * (1.0 + m_a);
+    double const e_sigma = eps * std::fabs(sig) + e_sq;
+    double const moved =
+        (lambda * m1 + mu.hi * m2 + 2.0 * eps * std::fabs(g) +
+         2.0 * t * (e_sigma + std::sqrt(rho_q2 * a2)) +
+         t * t * std::max(a1, a2)) *
+        (1.0 + margin);
+    if (moved < s.one * (1.0 - 5.0 * eps)) return Decision::overlap;
+  }
   return Decision::undecided;
 }
 
@@ -244,7 +290,8 @@ PW85_INLINE Decision point_filters(PlainPoint<D> const &pt, double h,
                                    Filtering<D> const &s) noexcept {
   PlainBounds b;
   plain_mu_sq(pt, &b);
-  if (pt.f > s.one || std::max(b.mu1_sq, b.mu2_sq) < s.one) {
+  if (pt.f > s.one || std::max(b.mu1_sq, b.mu2_sq) < s.one ||
+      moved_bound_below(pt, b, s)) {
     Decision const d = plain_cond(pt, &b) ? bounds_filter(pt, b, s)
                                           : Decision::undecided;
     return d != Decision::undecided ? d : accurate_filter(pt, s);

@@ -358,6 +358,67 @@ void test_finish() {
   g_assert_cmpfloat(worst, <=, 2e-11);
 }
 
+// The second upper bound of μ² at a plain point (moved_upper_bound(),
+// evaluate.hpp), with the margins the overlap test gives it, at
+// λ = λ* ± h·min(λ*, 1 − λ*) for h = 1e-2 and 1e-3 on each general pair:
+// - never below μ² (the mpmath reference, correctly rounded: an ulp of
+//   slack);
+// - of second order: its excess over μ² falls at least 25 times from
+//   h = 1e-2 to 1e-3 (100 for the leading term; 10 for a bound of first
+//   order, as max(μ1², μ2²) is), down to the floor its margins set (four
+//   times what they add at h = 1e-3).
+void test_moved_upper_bound() {
+  int checked = 0, second_order = 0;
+  double worst_ratio = HUGE_VAL;
+  for (size_t n = 0; n < pairs.count; n++) {
+    core::Problem<3> const p = problem(n);
+    double const star = star_of(p, n);
+    double const mu2 = core::times_pow2(pairs.MU2[n], -p.shift);
+    double const k1 = core::trace<3>(p.q1) * p.tinv1,
+                 k2 = core::trace<3>(p.q2) * p.tinv2;
+    for (double const side : {-1.0, 1.0}) {
+      double excess[2] = {NAN, NAN}, floor = 0.0;
+      for (int k = 0; k < 2; k++) {
+        double const h = k == 0 ? 1e-2 : 1e-3;
+        double const lambda = star + side * h * std::min(star, 1.0 - star);
+        core::PlainPoint<3> pt;
+        core::PlainBounds b;
+        bool const ok = p.moderate ? core::evaluate_terms<true>(lambda, p, &pt)
+                                   : core::evaluate_terms<false>(lambda, p, &pt);
+        if (!ok || !core::plain_bounds(pt, &b)) continue;
+        double const m_f = core::plain_form_margin * b.cond;
+        double const m_mu = m_f * (1.0 + std::sqrt(std::max(k1, k2)));
+        double const m_a = core::plain_form_margin * std::max(k1, k2);
+        double const upper = core::moved_upper_bound(
+            pt, b, std::max(p.a1, p.a2), m_f, m_mu, m_a);
+        if (!std::isfinite(upper)) continue;
+        checked++;
+        if (!(upper >= mu2 * (1.0 - DBL_EPSILON)))
+          g_test_fail_printf("pair %zu, lambda %.17g: bound %.17g below "
+                             "mu^2 %.17g", n, lambda, upper, mu2);
+        excess[k] = (upper - mu2) / mu2;
+        // What the margins alone add (g's margin in the correction, m_f),
+        // four times.
+        double const gm = m_mu * (b.mu1_sq + b.mu2_sq);
+        double const w = lambda * (1.0 - lambda) / pt.f;
+        floor = 4.0 * (m_f + 0.5 * gm * gm * std::max(p.a1, p.a2) * w * w / mu2);
+      }
+      if (std::isnan(excess[0]) || std::isnan(excess[1])) continue;
+      if (excess[1] <= floor) continue;
+      second_order++;
+      worst_ratio = std::min(worst_ratio, excess[0] / excess[1]);
+      if (!(excess[1] <= excess[0] / 25.0))
+        g_test_fail_printf("pair %zu: excess %.3g at h = 1e-2, %.3g at "
+                           "1e-3", n, excess[0], excess[1]);
+    }
+  }
+  g_test_message("%d bounds checked; %d pairs of steps above the margins' "
+                 "floor, worst ratio of excesses %.3g", checked,
+                 second_order, worst_ratio);
+  g_assert_cmpint(checked, >=, 2000);
+  g_assert_cmpint(second_order, >=, 1000);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -369,6 +430,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/search/brent/invariants", test_brent_invariants);
   g_test_add_func("/pw85/search/finish", test_finish);
   g_test_add_func("/pw85/search/result-bounds-every-f", test_result_bounds_every_f);
+  g_test_add_func("/pw85/search/moved-upper-bound", test_moved_upper_bound);
   int const status = g_test_run();
   general_pairs_clear(&pairs);
   return status;
