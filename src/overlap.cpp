@@ -89,9 +89,14 @@ PW85_INLINE Decision bounds_filter(PlainPoint<D> const &pt, PlainBounds const &b
     return Decision::disjoint;
   if (m_mu < margin_limit && std::max(b.mu1_sq, b.mu2_sq) * (1.0 + m_mu) < s.one)
     return Decision::overlap;
-  if (moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m_f, m_mu,
+  // The second upper bound, for a double r only: its f(λ)·(1 + m_f) stands
+  // for λμ1² + (1 − λ)μ2², and μ2² moves with r_lo by up to
+  // ε·√(κ̄(Q2)·a2)/μ relative, which m_f (of κ̄(Q(λ)), not of Q2) need not
+  // cover (overlap.hpp, overlap_dd()). Filter 4 carries r_lo in ρ.
+  if (s.r_lo == nullptr &&
+      moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m_f, m_mu,
                         plain_form_margin * std::max(s.cond1, s.cond2)) <
-      s.one * (1.0 - 5.0 * DBL_EPSILON))
+          s.one * (1.0 - 5.0 * DBL_EPSILON))
     return Decision::overlap;
   return Decision::undecided;
 }
@@ -399,6 +404,36 @@ PW85_INLINE Status decide_overlap(double const *r, double const *r_lo,
 }  // namespace
 
 template <int D>
+Status overlap_filters_at(double const *r, double const *q1, double const *q2,
+                          double lambda, double one, int decisions[3]) noexcept {
+  Problem<D> p;
+  Status const status = prepare(r, q1, q2, &p);
+  if (status != Status::success) return status;
+  decisions[0] = decisions[1] = decisions[2] = 0;
+  if (p.r_is_zero) return Status::success;
+  quads(&p);
+  Filtering<D> s{p, times_pow2(one, -p.shift), trace<D>(p.q1) * p.tinv1,
+                 trace<D>(p.q2) * p.tinv2, nullptr};
+  orient(&p);
+  if (p.swapped) {
+    std::swap(s.cond1, s.cond2);
+    lambda = 1.0 - lambda;
+  }
+  PlainPoint<D> pt;
+  bool const ok = p.moderate ? evaluate_terms<true>(lambda, p, &pt)
+                             : evaluate_terms<false>(lambda, p, &pt);
+  if (!ok) return Status::success;
+  PlainBounds b;
+  plain_mu_sq(pt, &b);
+  Decision const d[3] = {
+      plain_cond(pt, &b) ? bounds_filter(pt, b, s) : Decision::undecided,
+      accurate_filter(pt, s), point_filters(pt, 0.0, s)};
+  for (int k = 0; k < 3; ++k)
+    decisions[k] = d[k] == Decision::undecided ? 0 : static_cast<int>(d[k]);
+  return Status::success;
+}
+
+template <int D>
 Status overlap(double const *r, double const *q1, double const *q2,
                int *result) noexcept {
   return decide_overlap<D>(r, nullptr, q1, q2, result);
@@ -418,5 +453,11 @@ template Status overlap_dd<2>(double const *, double const *, double const *,
                               double const *, int *) noexcept;
 template Status overlap_dd<3>(double const *, double const *, double const *,
                               double const *, int *) noexcept;
+template Status overlap_filters_at<2>(double const *, double const *,
+                                      double const *, double, double,
+                                      int[3]) noexcept;
+template Status overlap_filters_at<3>(double const *, double const *,
+                                      double const *, double, double,
+                                      int[3]) noexcept;
 
 }  // namespace pw85::detail

@@ -30,6 +30,17 @@ template <int D = dim>
 Status overlap_dd(double const *r, double const *r_lo, double const *q1,
                   double const *q2, int *result) noexcept;
 
+// For the tests: the filters of the search's points, each alone, at λ (of
+// the input's order) against the threshold `one` in place of 1 (μ² < one
+// or > one): decisions[0] from filter 3 (the plain bounds with margins),
+// [1] filter 4 (the accurate bounds), [2] the two as the search chains
+// them near λ* (point_filters() with a step of size 0): −1 (μ² < one), +1
+// (μ² > one), 0 undecided or Q(λ) not factorised. Statuses as overlap();
+// decisions all 0 for r = 0.
+template <int D = dim>
+Status overlap_filters_at(double const *r, double const *q1, double const *q2,
+                          double lambda, double one, int decisions[3]) noexcept;
+
 }  // namespace pw85::detail
 
 #endif  // PW85_SRC_OVERLAP_HPP

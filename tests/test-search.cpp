@@ -18,6 +18,7 @@
 #include "f.hpp"
 #include "finish.hpp"
 #include "newton.hpp"
+#include "overlap.hpp"
 #include "problem.hpp"
 #include "tolerances.hpp"
 #include "warm_start.hpp"
@@ -419,6 +420,59 @@ void test_moved_upper_bound() {
   g_assert_cmpint(second_order, >=, 1000);
 }
 
+// The overlap test's point filters (overlap_filters_at()), each alone, on
+// each general pair at λ* ± h·min(λ*, 1 − λ*) and elsewhere in (0, 1),
+// against thresholds one = μ²·(1 ∓ τ) around the mpmath μ² (τ ≥ 1e-14, far
+// above its half-ulp rounding): no filter may answer "overlap" (μ² < one)
+// below μ², nor "disjoint" above it. The counts of the answers they may
+// give show that the filters decide on both sides, the second upper bound
+// among them.
+void test_overlap_filters() {
+  long bad = 0, decided[2][3] = {{0, 0, 0}, {0, 0, 0}};
+  double const taus[] = {1e-14, 1e-12, 1e-10, 1e-8, 1e-6, 1e-4, 1e-2};
+  double const steps[] = {0.0, 1e-9, 1e-6, 1e-4, 1e-2, 1e-1};
+  for (size_t n = 0; n < pairs.count; n++) {
+    double const *r = pairs.r12 + 3 * n, *q1 = pairs.q1 + 6 * n,
+                 *q2 = pairs.q2 + 6 * n;
+    double const mu2 = pairs.MU2[n], star = pairs.LAMBDA[n];
+    std::vector<double> lambdas = {0.1, 0.5, 0.9};
+    for (double const h : steps)
+      for (double const side : {-1.0, 1.0}) {
+        double const lambda = star + side * h * std::min(star, 1.0 - star);
+        if (lambda > 0.0 && lambda < 1.0) lambdas.push_back(lambda);
+      }
+    for (double const tau : taus)
+      for (int above = 0; above < 2; above++) {
+        double const one = mu2 * (above ? 1.0 + tau : 1.0 - tau);
+        int const forbidden = above ? 1 : -1;  // the answer that is wrong
+        for (double const lambda : lambdas) {
+          int d[3];
+          g_assert_true(core::overlap_filters_at<3>(r, q1, q2, lambda, one,
+                                                    d) ==
+                        core::Status::success);
+          for (int k = 0; k < 3; k++) {
+            if (d[k] == 0) continue;
+            if (d[k] == forbidden) {
+              if (bad++ < 10)
+                g_test_fail_printf("pair %zu, lambda %.17g, one = mu^2 "
+                                   "(1 %c %g): filter %d answers %d", n,
+                                   lambda, above ? '+' : '-', tau, k, d[k]);
+            } else {
+              decided[above][k]++;
+            }
+          }
+        }
+      }
+  }
+  g_test_message("answers below mu^2 (disjoint): %ld %ld %ld; above "
+                 "(overlap): %ld %ld %ld", decided[0][0], decided[0][1],
+                 decided[0][2], decided[1][0], decided[1][1], decided[1][2]);
+  for (int k = 0; k < 3; k++) {
+    g_assert_cmpint(decided[0][k], >=, 10000);
+    g_assert_cmpint(decided[1][k], >=, 10000);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -431,6 +485,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/search/finish", test_finish);
   g_test_add_func("/pw85/search/result-bounds-every-f", test_result_bounds_every_f);
   g_test_add_func("/pw85/search/moved-upper-bound", test_moved_upper_bound);
+  g_test_add_func("/pw85/search/overlap-filters", test_overlap_filters);
   int const status = g_test_run();
   general_pairs_clear(&pairs);
   return status;
