@@ -17,6 +17,7 @@
 #include "problem.hpp"
 #include "scaling.hpp"
 #include "sym.hpp"
+#include "tolerances.hpp"
 
 namespace pw85::detail {
 
@@ -239,6 +240,24 @@ PW85_INLINE bool plain_cond(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   return std::isfinite(b->cond);
 }
 
+// The relative margins of the plain bounds (tolerances.hpp, eq. (5.11))
+// from κ̄(Q(λ)) and κ̄(Qᵢ): f(λ) off by f, μᵢ² by mu (filter 3 of
+// overlap.cpp), aᵢ = rᵀQᵢ⁻¹r by a (filter 2, form_margin()).
+struct PlainMargins {
+  double f, mu, a;
+};
+
+PW85_INLINE double form_margin(double cond1, double cond2) noexcept {
+  return plain_form_margin * std::max(cond1, cond2);
+}
+
+PW85_INLINE PlainMargins plain_margins(double cond, double cond1,
+                                       double cond2) noexcept {
+  double const m_f = plain_form_margin * cond;
+  return {m_f, m_f * (1.0 + std::sqrt(std::max(cond1, cond2))),
+          form_margin(cond1, cond2)};
+}
+
 // A second upper bound of μ² at a plain point, second order in λ − λ*
 // where max(μ1², μ2²) is first order. At the point x0 = c1 + (1 − λ)·Q1s
 // of the curve (s = Q(λ)⁻¹r), dᵢ² = μᵢ², dᵢ² being the form of ellipsoid i
@@ -251,23 +270,22 @@ PW85_INLINE bool plain_cond(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
 // sᵀr = sᵀQs = (1 − λ)P1 + λP2), so that
 //   μ² ≤ f(λ) + g²·max(a1, a2)/(4(sᵀr)²),   sᵀr = f/(λ(1 − λ)),
 // within O(g²) = O((λ − λ*)²) of μ², as f is from below.
-// Certified here with the margins of filter 3 (overlap.cpp): f off by m_f
-// relative, μᵢ² by m_mu, aᵢ by m_a (filter 2's), so g by
-// m_mu·(μ1² + μ2²) plus its rounding; while each margin is at most 1/8,
+// Certified here with the margins m of plain_margins(): f off by m.f
+// relative, μᵢ² by m.mu, aᵢ by m.a, so g by m.mu·(μ1² + μ2²) plus its
+// rounding; while each margin is at most 1/8,
 // the correction's factors are off by (1 + 1/8)/(1 − 1/8)² < 1.5, which
 // the factor 2 (for ¼) covers. +∞ where a margin exceeds 1/8 (or f ≤ 0).
 // a_max = max(a1, a2) as computed.
 template <int D>
 PW85_INLINE double moved_upper_bound(PlainPoint<D> const &pt,
                                      PlainBounds const &b, double a_max,
-                                     double m_f, double m_mu,
-                                     double m_a) noexcept {
-  if (!(std::max(m_f, std::max(m_mu, m_a)) <= 0.125 && pt.f > 0.0))
+                                     PlainMargins const &m) noexcept {
+  if (!(std::max(m.f, std::max(m.mu, m.a)) <= 0.125 && pt.f > 0.0))
     return HUGE_VAL;
   double const g = std::fabs(b.mu2_sq - b.mu1_sq) * (1.0 + DBL_EPSILON) +
-                   m_mu * (b.mu1_sq + b.mu2_sq);
+                   m.mu * (b.mu1_sq + b.mu2_sq);
   double const w = pt.lambda * (1.0 - pt.lambda) / pt.f;  // 1/(sᵀr)
-  return pt.f * (1.0 + m_f) + 0.5 * g * g * a_max * w * w;
+  return pt.f * (1.0 + m.f) + 0.5 * g * g * a_max * w * w;
 }
 
 // All of *b; returns false when κ̄ is not finite.

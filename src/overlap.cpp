@@ -38,6 +38,23 @@ struct Filtering {
   double const *r_lo;   // nullptr, or the low part of p.r (overlap_dd())
 };
 
+// The Filtering of a prepared p with r ≠ 0 against one: p's forms
+// aᵢ = rᵀQᵢ⁻¹r (quads()) and κ̄(Qᵢ) = tr(Qᵢ)·tr(Qᵢ⁻¹) (ldl_cond_bound()).
+template <int D>
+PW85_INLINE Filtering<D> filtering(Problem<D> *p, double one) noexcept {
+  quads(p);
+  return {*p, one, trace<D>(p->q1) * p->tinv1, trace<D>(p->q2) * p->tinv2,
+          nullptr};
+}
+
+// p in its canonical orientation (orient()), κ̄ᵢ following the forms that
+// it may have exchanged.
+template <int D>
+PW85_INLINE void orient_filtering(Problem<D> *p, Filtering<D> *s) noexcept {
+  orient(p);
+  if (p->swapped) std::swap(s->cond1, s->cond2);
+}
+
 // Filter 1, no factorisation needed: the sphere bound μ² ≥
 // |r|²/(√tr Q1 + √tr Q2)², already a certified lower bound, compared
 // times 2^8 (256·one is exact, or +∞ where it does not decide).
@@ -51,8 +68,8 @@ Decision sphere_filter(Problem<D> const &p, double one) noexcept {
 // a centre, so μ² ≤ min(rᵀQ1⁻¹r, rᵀQ2⁻¹r), each off by a few κ̄(Qᵢ)·ε
 // relative (plain_form_margin).
 template <int D>
-Decision centre_filter(Filtering<D> const &s) noexcept {
-  double const m_a = plain_form_margin * std::max(s.cond1, s.cond2);
+PW85_INLINE Decision centre_filter(Filtering<D> const &s) noexcept {
+  double const m_a = form_margin(s.cond1, s.cond2);
   if (m_a < margin_limit && std::min(s.p.a1, s.p.a2) * (1.0 + m_a) < s.one)
     return Decision::overlap;
   return Decision::undecided;
@@ -75,27 +92,25 @@ PW85_INLINE bool moved_bound_below(PlainPoint<D> const &pt,
 // f(λ) ≤ μ² because μ² is the maximum of f; μ² ≤ max(μ1², μ2²) because
 // the point x0(λ) lies in both ellipsoids scaled by max(μ1, μ2), which
 // therefore meet. Margins of eq. (5.11): f is off by a few κ̄(Q(λ))·ε
-// relative, μᵢ² (a quadratic form in s) by that times √κ̄(Qᵢ).
+// relative, μᵢ² (a quadratic form in s) by that times √κ̄(Qᵢ)
+// (plain_margins(), evaluate.hpp).
 // Inline: out of line, its call made the compiler keep more of Newton's
 // point in registers across it (3.7% more instructions in pw85_overlap
 // once the dimension became a template; 1.5% inlined; callgrind).
 template <int D>
 PW85_INLINE Decision bounds_filter(PlainPoint<D> const &pt, PlainBounds const &b,
                        Filtering<D> const &s) noexcept {
-  double const cond_q = std::sqrt(std::max(s.cond1, s.cond2));
-  double const m_f = plain_form_margin * b.cond;
-  double const m_mu = plain_form_margin * b.cond * (1.0 + cond_q);
-  if (m_f < margin_limit && pt.f * (1.0 - m_f) > s.one)
+  PlainMargins const m = plain_margins(b.cond, s.cond1, s.cond2);
+  if (m.f < margin_limit && pt.f * (1.0 - m.f) > s.one)
     return Decision::disjoint;
-  if (m_mu < margin_limit && std::max(b.mu1_sq, b.mu2_sq) * (1.0 + m_mu) < s.one)
+  if (m.mu < margin_limit && std::max(b.mu1_sq, b.mu2_sq) * (1.0 + m.mu) < s.one)
     return Decision::overlap;
-  // The second upper bound, for a double r only: its f(λ)·(1 + m_f) stands
+  // The second upper bound, for a double r only: its f(λ)·(1 + m.f) stands
   // for λμ1² + (1 − λ)μ2², and μ2² moves with r_lo by up to
-  // ε·√(κ̄(Q2)·a2)/μ relative, which m_f (of κ̄(Q(λ)), not of Q2) need not
+  // ε·√(κ̄(Q2)·a2)/μ relative, which m.f (of κ̄(Q(λ)), not of Q2) need not
   // cover (overlap.hpp, overlap_dd()). Filter 4 carries r_lo in ρ.
   if (s.r_lo == nullptr &&
-      moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m_f, m_mu,
-                        plain_form_margin * std::max(s.cond1, s.cond2)) <
+      moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m) <
           s.one * (1.0 - 5.0 * DBL_EPSILON))
     return Decision::overlap;
   return Decision::undecided;
@@ -187,7 +202,7 @@ PW85_INLINE Decision accurate_bounds(PlainPoint<D> const &pt,
   // + t²·max(aᵢ), |ρᵀQ2⁻¹r| ≤ √(ρᵀQ2⁻¹ρ)·√a2 (Cauchy–Schwarz), e_σ the
   // error of σ (Dot2: ε/2·|σ| plus the second-order e_sq), aᵢ off by m_a
   // as in filter 2; 8ε on the sum of non-negative terms for its rounding.
-  double const m_a = plain_form_margin * std::max(s.cond1, s.cond2);
+  double const m_a = form_margin(s.cond1, s.cond2);
   double const sig = sigma.hi + sigma.lo;
   if (m_a <= 0.125 && sig > 0.0) {
     double const m1 = std::max(mu1_sq, 0.0), m2 = std::max(mu2_sq, 0.0);
@@ -374,25 +389,19 @@ PW85_INLINE Status decide_overlap(double const *r, double const *r_lo,
   double const one = pow2(-p.shift);
   Decision d = sphere_filter(p, one);
   if (d == Decision::undecided) {
-    quads(&p);
-    Filtering<D> s{p,
-                   one,
-                   trace<D>(p.q1) * p.tinv1,  // κ̄(Q1) (ldl_cond_bound())
-                   trace<D>(p.q2) * p.tinv2,
-                   nullptr};
+    Filtering<D> s = filtering(&p, one);
     d = centre_filter(s);
     if (d == Decision::undecided) {
       // The remaining stages in the problem's canonical orientation, so
       // that both argument orders take the same steps. (The filters above
       // are symmetric in Q1 and Q2 as they stand.)
-      orient(&p);
+      orient_filtering(&p, &s);
       // r_lo scaled as r (contact.cpp, search()).
       double lo[D];
-      if (r_lo != nullptr)
+      if (r_lo != nullptr) {
         for (int k = 0; k < D; ++k) lo[k] = times_pow2(r_lo[k], -p.r_exp);
-      // (κ̄(Qᵢ) follow the forms: orient() may have exchanged them.)
-      if (p.swapped) std::swap(s.cond1, s.cond2);
-      if (r_lo != nullptr) s.r_lo = lo;
+        s.r_lo = lo;
+      }
       status = p.moderate ? decide<true, D>(s, &d) : decide<false, D>(s, &d);
       if (status != Status::success) return status;
     }
@@ -411,14 +420,9 @@ Status overlap_filters_at(double const *r, double const *q1, double const *q2,
   if (status != Status::success) return status;
   decisions[0] = decisions[1] = decisions[2] = 0;
   if (p.r_is_zero) return Status::success;
-  quads(&p);
-  Filtering<D> s{p, times_pow2(one, -p.shift), trace<D>(p.q1) * p.tinv1,
-                 trace<D>(p.q2) * p.tinv2, nullptr};
-  orient(&p);
-  if (p.swapped) {
-    std::swap(s.cond1, s.cond2);
-    lambda = 1.0 - lambda;
-  }
+  Filtering<D> s = filtering(&p, times_pow2(one, -p.shift));
+  orient_filtering(&p, &s);
+  if (p.swapped) lambda = 1.0 - lambda;
   PlainPoint<D> pt;
   bool const ok = p.moderate ? evaluate_terms<true>(lambda, p, &pt)
                              : evaluate_terms<false>(lambda, p, &pt);

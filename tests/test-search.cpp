@@ -387,22 +387,20 @@ void test_moved_upper_bound() {
         bool const ok = p.moderate ? core::evaluate_terms<true>(lambda, p, &pt)
                                    : core::evaluate_terms<false>(lambda, p, &pt);
         if (!ok || !core::plain_bounds(pt, &b)) continue;
-        double const m_f = core::plain_form_margin * b.cond;
-        double const m_mu = m_f * (1.0 + std::sqrt(std::max(k1, k2)));
-        double const m_a = core::plain_form_margin * std::max(k1, k2);
-        double const upper = core::moved_upper_bound(
-            pt, b, std::max(p.a1, p.a2), m_f, m_mu, m_a);
+        core::PlainMargins const m = core::plain_margins(b.cond, k1, k2);
+        double const upper =
+            core::moved_upper_bound(pt, b, std::max(p.a1, p.a2), m);
         if (!std::isfinite(upper)) continue;
         checked++;
         if (!(upper >= mu2 * (1.0 - DBL_EPSILON)))
           g_test_fail_printf("pair %zu, lambda %.17g: bound %.17g below "
                              "mu^2 %.17g", n, lambda, upper, mu2);
         excess[k] = (upper - mu2) / mu2;
-        // What the margins alone add (g's margin in the correction, m_f),
+        // What the margins alone add (g's margin in the correction, m.f),
         // four times.
-        double const gm = m_mu * (b.mu1_sq + b.mu2_sq);
+        double const gm = m.mu * (b.mu1_sq + b.mu2_sq);
         double const w = lambda * (1.0 - lambda) / pt.f;
-        floor = 4.0 * (m_f + 0.5 * gm * gm * std::max(p.a1, p.a2) * w * w / mu2);
+        floor = 4.0 * (m.f + 0.5 * gm * gm * std::max(p.a1, p.a2) * w * w / mu2);
       }
       if (std::isnan(excess[0]) || std::isnan(excess[1])) continue;
       if (excess[1] <= floor) continue;
