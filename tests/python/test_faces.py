@@ -498,3 +498,60 @@ def test_real_arrays_named():
                        "str"):
         micro.voxel_image(np.zeros((1, 3)), [s], [1.0, 1.0, 1.0], 4,
                           periodic="no")
+
+
+# Masked arrays: NumPy's conversions keep the values under a mask and drop
+# the mask, so that a call used values the caller had set aside. Refused
+# wherever an array enters, naming the argument; a masked array with no
+# masked entry is its data.
+def test_masked_entries_refused():
+    from pypw85 import micro
+    q1 = pypw85.spheroid(1.0, 0.5, [0.0, 0.0, 1.0])
+    q2 = pypw85.spheroid(0.7, 0.2, [1.0, 0.0, 0.0])
+    r = np.array([1.2, 0.3, 0.1])
+    hidden = np.ma.masked_array(r, mask=[False, True, False])
+    match = "^%s: a masked array with 1 masked entries"
+    with pytest.raises(ValueError, match=match % "r12"):
+        pypw85.contact_function(hidden, q1, q2)
+    with pytest.raises(ValueError, match=match % "q2"):
+        pypw85.overlap(r, q1, np.ma.masked_array(q2, mask=[0, 0, 0, 0, 0, 1]))
+    with pytest.raises(ValueError, match=match % "r12"):  # a batch
+        pypw85.contact_function(
+            np.ma.masked_array([r, r], mask=[[0, 0, 0], [0, 1, 0]]), q1, q2)
+    with pytest.raises(ValueError, match=match % "r12"):
+        pypw85.d2.contact_function(
+            np.ma.masked_array([1.0, 2.0], mask=[1, 0]), [1.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0])
+    m = np.ma.masked_array(np.eye(3), mask=np.eye(3, dtype=bool) & False)
+    m[1, 1] = np.ma.masked
+    with pytest.raises(ValueError, match=match % "a"):
+        pypw85.pack_sym(m)
+    with pytest.raises(ValueError, match=match % "rot"):
+        pypw85.ellipsoid_rotation([1.0, 1.0, 1.0], m)
+    with pytest.raises(ValueError, match=match % "p"):
+        pypw85.ellipsoid_quaternion(
+            [1.0, 1.0, 1.0], np.ma.masked_array([0.0, 0.0, 0.0, 1.0],
+                                                mask=[0, 0, 1, 0]),
+            scalar_first=False)
+    index = pypw85.Index([1.0, 1.0, 1.0])
+    with pytest.raises(ValueError, match=match % "centres"):
+        index.insert([0, 1], np.ma.masked_array(np.full((2, 3), 0.5),
+                                                mask=[[0, 0, 0], [1, 0, 0]]),
+                     [0.01, 0.0, 0.0, 0.01, 0.0, 0.01])
+    with pytest.raises(ValueError, match=match % "ids"):
+        index.insert(np.ma.masked_array([0, 1], mask=[0, 1]),
+                     np.full((2, 3), 0.5), [0.01, 0.0, 0.0, 0.01, 0.0, 0.01])
+    assert len(index) == 0  # nothing inserted by the refused calls
+    index.close()
+    image = np.ma.masked_array(np.full((2, 2, 2), -1, dtype=np.int32))
+    image[0, 0, 0] = np.ma.masked
+    with pytest.raises(ValueError, match=match % "image"):
+        micro.phase_fraction(image)
+    with pytest.raises(ValueError, match=match % "pack: semi_axes"):
+        pypw85.pack(np.ma.masked_array(np.full((4, 3), 0.1),
+                                       mask=np.eye(4, 3, dtype=bool) & (
+                                           np.arange(3) == 0)), 0.1)
+    # no masked entry: the data, as a plain array gives it
+    whole = np.ma.masked_array(r, mask=False)
+    assert (pypw85.contact_function(whole, q1, q2)
+            == pypw85.contact_function(r, q1, q2)).all()

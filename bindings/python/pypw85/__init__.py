@@ -24,6 +24,8 @@ vectors vᵢ).
 
 Inputs may be any array-like of real numbers of the right shape (lists,
 integer arrays, ...); they are converted to contiguous ``float64`` arrays.
+A masked array (``numpy.ma``) with masked entries raises `ValueError`:
+NumPy's conversion would pass the values under the mask.
 Outputs are returned as new ``float64`` arrays, or written in place into a
 preallocated array passed by the caller, which must then be a C-contiguous,
 writeable ``numpy.ndarray`` of dtype ``float64`` and of the exact shape
@@ -110,7 +112,7 @@ if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
 from . import _batch, _constants
 from ._convert import (
     check_finite as _check_finite, output as _output, real as _real,
-    unaliased as _unaliased, vector as _vector,
+    reals as _reals, unaliased as _unaliased, vector as _vector,
 )
 from ._batch import batch_threads
 from ._batch import spheroid_rule as _spheroid_rule
@@ -661,10 +663,7 @@ def pack_sym(a: ArrayLike, rtol: float = 1e-12) -> _F64:
     ValueError, TypeError
         If a has the wrong shape or type, or is not symmetric to rtol.
     """
-    m = np.asarray(a)
-    if m.dtype.kind not in "iuf":
-        raise TypeError("a: expected real numbers, got an array of dtype %s"
-                        % m.dtype)
+    m = _reals("a", a, "an array of shape (3, 3)")
     if m.shape != (DIM, DIM):
         raise ValueError("a: expected shape (3, 3), got %s" % (m.shape,))
     m = m.astype(np.float64)
@@ -699,7 +698,7 @@ def unpack_sym(q: ArrayLike) -> _F64:
 def _rotation(name, rot):
     """rot as a C-contiguous float64 array of 9 entries, from (3, 3) or
     (9,)."""
-    m = np.asarray(rot)
+    m = _reals(name, rot, "an array of shape (3, 3) or (9,)")
     if m.shape == (DIM, DIM):
         m = m.reshape(DIM * DIM)
     return _vector(name, m, DIM * DIM)
@@ -948,7 +947,7 @@ def _scalar_first(name, p, scalar_first):
                         % type(scalar_first).__name__)
     if scalar_first:
         return p
-    a = np.asarray(p)
+    a = _reals(name, p, "an array of shape (4,) or (..., 4)")
     if a.ndim < 1 or a.shape[-1] != 4:
         raise ValueError("%s: expected shape (4,) or (..., 4), got %s"
                          % (name, a.shape))

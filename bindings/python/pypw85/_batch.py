@@ -28,6 +28,7 @@ if typing.TYPE_CHECKING:  # annotations only: nothing imported at run time
 
 from ._constants import (DERIV_SIZE, DIM, EDOM, EINVAL, GEOM_SIZE, SUCCESS,
                          SYM, UNIT_TOL)
+from ._convert import reals as _reals
 from ._errors import Error
 from ._libpw85 import lib
 
@@ -66,15 +67,7 @@ def threads_count(threads):
 
 def _real_array(name, x, item):
     """x as a float64 array of shape (...,) + item, or raise."""
-    try:
-        a = np.asarray(x)
-    except (TypeError, ValueError) as exc:
-        raise ValueError("%s: expected an array of shape (...%s), got %s "
-                         "(%s)" % (name, _dims(item), type(x).__name__, exc)) \
-            from None
-    if a.dtype.kind not in "iuf":
-        raise TypeError("%s: expected real numbers (float64), got an array "
-                        "of dtype %s" % (name, a.dtype))
+    a = _reals(name, x, "an array of shape (...%s)" % _dims(item))
     if a.ndim < len(item) or a.shape[a.ndim - len(item):] != item:
         raise ValueError("%s: expected shape %s or (...%s), got %s"
                          % (name, item, _dims(item), a.shape))

@@ -16,19 +16,42 @@ from ._constants import EDOM
 from ._errors import Error
 
 
+def unmasked(name, x):
+    """Raise ValueError if x is a masked array with a masked entry: numpy's
+    conversions (np.asarray) keep the values under the mask and drop the
+    mask, so that the call would use values the caller has set aside."""
+    if isinstance(x, np.ma.MaskedArray) and np.ma.getmaskarray(x).any():
+        raise ValueError("%s: a masked array with %d masked entries (numpy "
+                         "would pass the values under the mask); fill them "
+                         "(x.filled(...)) or leave out the items they "
+                         "belong to" % (name, np.ma.count_masked(x)))
+
+
+def reals(name, x, expected):
+    """np.asarray(x), if x holds real numbers (integers or floats), or
+    raise naming x: ValueError where x is not an array (a ragged list; the
+    message says it expected `expected`) or has masked entries
+    (unmasked()); TypeError for other entries (a cast would drop the
+    imaginary parts of complex numbers, read bools as 0 and 1, or fail on
+    strings with a message that does not name x)."""
+    unmasked(name, x)
+    try:
+        a = np.asarray(x)
+    except (TypeError, ValueError) as exc:
+        raise ValueError("%s: expected %s, got %s (%s)"
+                         % (name, expected, type(x).__name__, exc)) from None
+    if a.dtype.kind not in "iuf":
+        raise TypeError("%s: expected real numbers, got an array of dtype %s"
+                        % (name, a.dtype))
+    return a
+
+
 def vector(name, x, n):
     """x as a C-contiguous float64 array of shape (n,), or raise."""
     if (type(x) is np.ndarray and x.dtype == np.float64 and x.shape == (n,)
             and x.flags.c_contiguous):
         return x
-    try:
-        a = np.asarray(x)
-    except (TypeError, ValueError) as exc:
-        raise ValueError("%s: expected an array of shape (%d,), got %s (%s)"
-                         % (name, n, type(x).__name__, exc)) from None
-    if a.dtype.kind not in "iuf":
-        raise TypeError("%s: expected real numbers (float64), got an array "
-                        "of dtype %s" % (name, a.dtype))
+    a = reals(name, x, "an array of shape (%d,)" % n)
     if a.shape != (n,):
         raise ValueError("%s: expected shape (%d,), got %s"
                          % (name, n, a.shape))
@@ -86,14 +109,8 @@ def real(name, x):
 
 def real_array(name, x):
     """x as a C-contiguous float64 array, if its entries are real numbers
-    (integers or floats); else raise TypeError (a cast would drop the
-    imaginary parts of complex numbers, read bools as 0 and 1, or fail on
-    strings with a message that does not name x)."""
-    a = np.asarray(x)
-    if a.dtype.kind not in "iuf":
-        raise TypeError("%s: expected real numbers, got an array of dtype %s"
-                        % (name, a.dtype))
-    return np.ascontiguousarray(a, dtype=np.float64)
+    (integers or floats); else raise as reals()."""
+    return np.ascontiguousarray(reals(name, x, "an array"), dtype=np.float64)
 
 
 def check_finite(where, **named):

@@ -50,6 +50,7 @@ from ._batch import threads_count as _threads_count
 from ._constants import EDOM, EINVAL, ENOTPOSDEF, ERANGE
 from ._convert import real as _real
 from ._convert import real_array as _real_array
+from ._convert import unmasked as _unmasked
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -151,6 +152,7 @@ _D3 = _Dimension(3, 6, 3, "pw85_index_", (0, 3, 5), _posdef_3d, "ellipsoid",
 def _array(name, x, dtype, shape):
     """x as a C-contiguous array of dtype and shape (-1: any length);
     real numbers only for float64 (TypeError)."""
+    _unmasked(name, x)
     a = (_real_array(name, x) if dtype is np.float64
          else np.ascontiguousarray(x, dtype=dtype))
     if a.ndim != len(shape) or any(s != -1 and s != n
@@ -195,6 +197,7 @@ def _ids(name, values):
     """values (an integer or an array of integers) as (n,) uintp ids."""
     if np.ndim(values) == 0:
         return np.array([_id(name, values)], dtype=np.uintp)
+    _unmasked(name, values)
     a = np.asarray(values)
     if a.dtype.kind not in "iu":
         raise TypeError("%s: ids are integers, got an array of dtype %s"
@@ -560,6 +563,7 @@ class _Index:
         f = _records("q", q, n, d.sym)
         ex = None
         if exclude is not None:
+            _unmasked("exclude", exclude)
             e = np.asarray(exclude)
             if not np.issubdtype(e.dtype, np.integer):
                 raise TypeError("exclude: expected integer ids, got dtype %s"

@@ -57,7 +57,7 @@ import numpy as np
 
 from ._batch import threads_count as _threads_count
 from ._constants import EDOM, EINVAL, ENOTPOSDEF
-from ._convert import real_array as _real_array
+from ._convert import real_array as _real_array, unmasked as _unmasked
 from ._errors import Error
 from ._libpw85 import lib as _lib, version as _library_version
 from ._symbols import declare as _declare
@@ -249,15 +249,7 @@ def phase_fraction(image: ArrayLike) -> float:
     """The fraction of voxels of image (3 dimensions, or 2: pixels) that
     hold an ellipsoid (value ≥ 0), correctly rounded
     (pw85_image_fraction)."""
-    a = np.asarray(image)
-    if a.dtype.kind not in "iu":
-        raise TypeError("image: expected integers (int32), got dtype %s"
-                        % a.dtype)
-    if a.dtype != np.int32 and a.size and (
-            int(a.min()) < -2**31 or int(a.max()) > 2**31 - 1):
-        raise ValueError("image: values from %d to %d do not fit int32"
-                         % (int(a.min()), int(a.max())))
-    a = np.ascontiguousarray(a, dtype=np.int32)
+    a = _image_int32(image)
     if a.ndim not in (2, 3) or a.size == 0:
         raise ValueError("image: expected a non-empty 3-d (or 2-d) array, "
                          "got shape %s" % (a.shape,))
@@ -429,12 +421,14 @@ _OWN_ATTRS = ("packing_fraction", "seed", "pw85_version", "method",
 
 def _image_int32(image):
     """The image as int32, or raise: TypeError for values that are not
-    integers, ValueError for one outside int32 (a cast would wrap it)."""
+    integers, ValueError for one outside int32 (a cast would wrap it) or a
+    masked voxel."""
+    _unmasked("image", image)
     a = np.asarray(image)
     if a.dtype.kind not in "iu":
         raise TypeError("image: expected integer voxel values (int32), got "
                         "dtype %s" % a.dtype)
-    if a.size and a.dtype.itemsize >= 4 and \
+    if a.size and a.dtype != np.int32 and a.dtype.itemsize >= 4 and \
             not (a.min() >= -2**31 and a.max() <= 2**31 - 1):
         bad = a.max() if a.max() > 2**31 - 1 else a.min()
         raise ValueError("image: a voxel value %d is outside int32" % bad)
