@@ -240,22 +240,21 @@ PW85_INLINE bool plain_cond(PlainPoint<D> const &pt, PlainBounds *b) noexcept {
   return std::isfinite(b->cond);
 }
 
-// The relative margins of the plain bounds (tolerances.hpp, eq. (5.11))
-// from κ̄(Q(λ)) and κ̄(Qᵢ): f(λ) off by f, μᵢ² by mu (filter 3 of
-// overlap.cpp), aᵢ = rᵀQᵢ⁻¹r by a (filter 2, form_margin()).
-struct PlainMargins {
-  double f, mu, a;
-};
-
+// The relative margins of the plain bounds (tolerances.hpp, eq. (5.11)):
+// aᵢ = rᵀQᵢ⁻¹r off by form_margin() (filter 2 of overlap.cpp), and at a
+// point f(λ) by f and μᵢ² by mu (filter 3), from κ̄(Q(λ)) and κ̄(Qᵢ).
 PW85_INLINE double form_margin(double cond1, double cond2) noexcept {
   return plain_form_margin * std::max(cond1, cond2);
 }
 
+struct PlainMargins {
+  double f, mu;
+};
+
 PW85_INLINE PlainMargins plain_margins(double cond, double cond1,
                                        double cond2) noexcept {
   double const m_f = plain_form_margin * cond;
-  return {m_f, m_f * (1.0 + std::sqrt(std::max(cond1, cond2))),
-          form_margin(cond1, cond2)};
+  return {m_f, m_f * (1.0 + std::sqrt(std::max(cond1, cond2)))};
 }
 
 // A second upper bound of μ² at a plain point, second order in λ − λ*
@@ -270,17 +269,18 @@ PW85_INLINE PlainMargins plain_margins(double cond, double cond1,
 // sᵀr = sᵀQs = (1 − λ)P1 + λP2), so that
 //   μ² ≤ f(λ) + g²·max(a1, a2)/(4(sᵀr)²),   sᵀr = f/(λ(1 − λ)),
 // within O(g²) = O((λ − λ*)²) of μ², as f is from below.
-// Certified here with the margins m of plain_margins(): f off by m.f
-// relative, μᵢ² by m.mu, aᵢ by m.a, so g by m.mu·(μ1² + μ2²) plus its
-// rounding; while each margin is at most 1/8,
+// Certified here with the margins m of plain_margins() and m_a of
+// form_margin(): f off by m.f relative, μᵢ² by m.mu, aᵢ by m_a, so g by
+// m.mu·(μ1² + μ2²) plus its rounding; while each margin is at most 1/8,
 // the correction's factors are off by (1 + 1/8)/(1 − 1/8)² < 1.5, which
 // the factor 2 (for ¼) covers. +∞ where a margin exceeds 1/8 (or f ≤ 0).
 // a_max = max(a1, a2) as computed.
 template <int D>
 PW85_INLINE double moved_upper_bound(PlainPoint<D> const &pt,
                                      PlainBounds const &b, double a_max,
-                                     PlainMargins const &m) noexcept {
-  if (!(std::max(m.f, std::max(m.mu, m.a)) <= 0.125 && pt.f > 0.0))
+                                     PlainMargins const &m,
+                                     double m_a) noexcept {
+  if (!(std::max(m.f, std::max(m.mu, m_a)) <= 0.125 && pt.f > 0.0))
     return HUGE_VAL;
   double const g = std::fabs(b.mu2_sq - b.mu1_sq) * (1.0 + DBL_EPSILON) +
                    m.mu * (b.mu1_sq + b.mu2_sq);

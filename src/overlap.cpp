@@ -110,7 +110,8 @@ PW85_INLINE Decision bounds_filter(PlainPoint<D> const &pt, PlainBounds const &b
   // ε·√(κ̄(Q2)·a2)/μ relative, which m.f (of κ̄(Q(λ)), not of Q2) need not
   // cover (overlap.hpp, overlap_dd()). Filter 4 carries r_lo in ρ.
   if (s.r_lo == nullptr &&
-      moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m) <
+      moved_upper_bound(pt, b, std::max(s.p.a1, s.p.a2), m,
+                        form_margin(s.cond1, s.cond2)) <
           s.one * (1.0 - 5.0 * DBL_EPSILON))
     return Decision::overlap;
   return Decision::undecided;

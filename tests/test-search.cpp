@@ -388,8 +388,8 @@ void test_moved_upper_bound() {
                                    : core::evaluate_terms<false>(lambda, p, &pt);
         if (!ok || !core::plain_bounds(pt, &b)) continue;
         core::PlainMargins const m = core::plain_margins(b.cond, k1, k2);
-        double const upper =
-            core::moved_upper_bound(pt, b, std::max(p.a1, p.a2), m);
+        double const upper = core::moved_upper_bound(
+            pt, b, std::max(p.a1, p.a2), m, core::form_margin(k1, k2));
         if (!std::isfinite(upper)) continue;
         checked++;
         if (!(upper >= mu2 * (1.0 - DBL_EPSILON)))
