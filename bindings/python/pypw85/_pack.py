@@ -17,7 +17,7 @@ if typing.TYPE_CHECKING:
     from numpy.typing import ArrayLike
 
 from ._constants import EDOM, EINVAL, ERANGE
-from ._convert import real as _real, unmasked as _unmasked
+from ._convert import real as _real, reals as _real_values
 from ._errors import Error
 from ._libpw85 import lib as _lib
 from ._symbols import declare as _declare
@@ -223,11 +223,8 @@ def _pack(sh, semi_axes, target, seed, aspect, orientation, axis, threads,
           time_limit, step_limit, progress, progress_every):
     """`pack` (sh = _D3) and `pypw85.d2.pack`: the fields of the result."""
     d = sh.dim
-    _unmasked("pack: semi_axes", semi_axes)
-    a = np.asarray(semi_axes)
-    if a.dtype.kind not in "iuf":
-        raise TypeError("pack: semi_axes must hold real numbers, got dtype %s"
-                        % a.dtype)
+    a = _real_values("pack: semi_axes", semi_axes,
+                     "an array of shape (n, %d)" % d)
     if a.ndim != 2 or a.shape[1] != d:
         raise ValueError("pack: semi_axes must have shape (n, %d), got %s"
                          % (d, a.shape))

@@ -152,9 +152,11 @@ _D3 = _Dimension(3, 6, 3, "pw85_index_", (0, 3, 5), _posdef_3d, "ellipsoid",
 def _array(name, x, dtype, shape):
     """x as a C-contiguous array of dtype and shape (-1: any length);
     real numbers only for float64 (TypeError)."""
-    _unmasked(name, x)
-    a = (_real_array(name, x) if dtype is np.float64
-         else np.ascontiguousarray(x, dtype=dtype))
+    if dtype is np.float64:
+        a = _real_array(name, x)  # masked entries refused there
+    else:
+        _unmasked(name, x)
+        a = np.ascontiguousarray(x, dtype=dtype)
     if a.ndim != len(shape) or any(s != -1 and s != n
                                    for s, n in zip(shape, a.shape)):
         raise ValueError("%s: expected shape %s, got %s"
