@@ -124,21 +124,32 @@ constexpr double unit_tol = PW85_UNIT_TOL;
 /** Offsets into the output of contact_geometry() (PW85_GEOM_*).
  *  @since 2.2.0 */
 namespace geom {
+/** μ² (PW85_GEOM_MU2). */
 constexpr std::size_t mu2 = PW85_GEOM_MU2;
+/** λ (PW85_GEOM_LAMBDA). */
 constexpr std::size_t lambda = PW85_GEOM_LAMBDA;
+/** 3 doubles: x − c1 (PW85_GEOM_POINT). */
 constexpr std::size_t point = PW85_GEOM_POINT;
+/** 3 doubles: the unit normal from ellipsoid 1 to 2 (PW85_GEOM_NORMAL). */
 constexpr std::size_t normal = PW85_GEOM_NORMAL;
+/** The number of doubles (PW85_GEOM_SIZE). */
 constexpr std::size_t size = PW85_GEOM_SIZE;
 }  // namespace geom
 
 /** Offsets into the derivatives of contact_derivatives() (PW85_DERIV_*).
  *  @since 2.2.0 */
 namespace deriv {
+/** 3 doubles: ∂μ²/∂r12 (PW85_DERIV_R12). */
 constexpr std::size_t r12 = PW85_DERIV_R12;
+/** 3 doubles: ∂μ²/∂ω1, ω1 a rotation vector (PW85_DERIV_ROT1). */
 constexpr std::size_t rot1 = PW85_DERIV_ROT1;
+/** 3 doubles: ∂μ²/∂ω2 (PW85_DERIV_ROT2). */
 constexpr std::size_t rot2 = PW85_DERIV_ROT2;
+/** 6 doubles: ∂μ²/∂q1[k] (PW85_DERIV_Q1). */
 constexpr std::size_t q1 = PW85_DERIV_Q1;
+/** 6 doubles: ∂μ²/∂q2[k] (PW85_DERIV_Q2). */
 constexpr std::size_t q2 = PW85_DERIV_Q2;
+/** The number of doubles (PW85_DERIV_SIZE). */
 constexpr std::size_t size = PW85_DERIV_SIZE;
 }  // namespace deriv
 
