@@ -185,12 +185,36 @@ std::vector<double> read(hid_t file, char const *name) {
   return v;
 }
 
-std::vector<Case> reference_workload(char const *path) {
-  hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+hid_t open_or_exit(char const *path) {
+  hid_t const f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
   if (f < 0) {
     std::fprintf(stderr, "cannot open %s\n", path);
     std::exit(1);
   }
+  return f;
+}
+
+// The pairs of a file with datasets /r12, /q1, /q2 and /MU2 (the general
+// and the hard pairs).
+std::vector<Case> listed_pairs(hid_t f) {
+  auto const r = read(f, "/r12");
+  auto const q1 = read(f, "/q1");
+  auto const q2 = read(f, "/q2");
+  auto const mu2 = read(f, "/MU2");
+  std::vector<Case> cases(mu2.size());
+  for (std::size_t n = 0; n < cases.size(); ++n) {
+    for (int a = 0; a < 3; ++a) cases[n].r[a] = r[3 * n + a];
+    for (int a = 0; a < 6; ++a) {
+      cases[n].q1[a] = q1[6 * n + a];
+      cases[n].q2[a] = q2[6 * n + a];
+    }
+    cases[n].mu2 = mu2[n];
+  }
+  return cases;
+}
+
+std::vector<Case> reference_workload(char const *path) {
+  hid_t const f = open_or_exit(path);
   auto const dirs = read(f, "/directions");
   auto const sph = read(f, "/spheroids");
   auto const dist = read(f, "/distances");
@@ -217,40 +241,17 @@ std::vector<Case> reference_workload(char const *path) {
 }
 
 std::vector<Case> general_pairs(char const *path) {
-  hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) {
-    std::fprintf(stderr, "cannot open %s\n", path);
-    std::exit(1);
-  }
-  auto const r = read(f, "/r12");
-  auto const q1 = read(f, "/q1");
-  auto const q2 = read(f, "/q2");
-  auto const mu2 = read(f, "/MU2");
+  hid_t const f = open_or_exit(path);
+  std::vector<Case> cases = listed_pairs(f);
   H5Fclose(f);
-  std::vector<Case> cases(mu2.size());
-  for (std::size_t n = 0; n < cases.size(); ++n) {
-    for (int a = 0; a < 3; ++a) cases[n].r[a] = r[3 * n + a];
-    for (int a = 0; a < 6; ++a) {
-      cases[n].q1[a] = q1[6 * n + a];
-      cases[n].q2[a] = q2[6 * n + a];
-    }
-    cases[n].mu2 = mu2[n];
-  }
   return cases;
 }
 
 std::vector<Case> hard_pairs(char const *path, std::vector<std::string> *names,
                              std::vector<int> *klass) {
-  hid_t f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (f < 0) {
-    std::fprintf(stderr, "cannot open %s\n", path);
-    std::exit(1);
-  }
-  auto const r = read(f, "/r12");
-  auto const q1 = read(f, "/q1");
-  auto const q2 = read(f, "/q2");
-  auto const mu2 = read(f, "/MU2");
-  klass->assign(mu2.size(), 0);
+  hid_t const f = open_or_exit(path);
+  std::vector<Case> cases = listed_pairs(f);
+  klass->assign(cases.size(), 0);
   hsize_t dims[1] = {0};
   H5T_class_t type_class;
   std::size_t type_size = 0;
@@ -269,15 +270,6 @@ std::vector<Case> hard_pairs(char const *path, std::vector<std::string> *names,
     names->push_back(all.substr(at, comma - at));
     if (comma == std::string::npos) break;
     at = comma + 1;
-  }
-  std::vector<Case> cases(mu2.size());
-  for (std::size_t n = 0; n < cases.size(); ++n) {
-    for (int a = 0; a < 3; ++a) cases[n].r[a] = r[3 * n + a];
-    for (int a = 0; a < 6; ++a) {
-      cases[n].q1[a] = q1[6 * n + a];
-      cases[n].q2[a] = q2[6 * n + a];
-    }
-    cases[n].mu2 = mu2[n];
   }
   return cases;
 }
