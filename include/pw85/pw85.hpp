@@ -25,6 +25,9 @@
 
 #include <cstddef>
 #include <limits>
+#include <new>
+#include <stdexcept>
+#include <vector>
 
 #include "pw85.h"
 #include "pw85_2d.h"
@@ -528,6 +531,32 @@ constexpr std::string_view year{"2026"};
 
 }  // namespace pw85
 #endif  // C++17
+
+/// @cond INTERNAL
+// Shared by the C++ headers of the index, the packer and the image (not
+// part of the API).
+namespace pw85 {
+namespace detail_vector {
+// Resizes v to n: PW85_SUCCESS, or PW85_ENOMEM (v then unchanged) where it
+// cannot grow. Without exceptions, resize() itself ends the program then.
+template <typename T>
+int resize(std::vector<T> &v, std::size_t n) noexcept {
+#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
+  try {
+    v.resize(n);
+  } catch (std::bad_alloc const &) {
+    return PW85_ENOMEM;
+  } catch (std::length_error const &) {
+    return PW85_ENOMEM;
+  }
+#else
+  v.resize(n);
+#endif
+  return PW85_SUCCESS;
+}
+}  // namespace detail_vector
+}  // namespace pw85
+/// @endcond
 
 // pw85::Index (the spatial index, pw85_index.h) belongs to this API; it
 // has its own header, which includes this one.

@@ -19,10 +19,9 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <new>
-#include <stdexcept>
 #include <vector>
 
+#include "pw85.hpp"
 #include "pw85_image.h"
 
 namespace pw85 {
@@ -53,17 +52,8 @@ inline int image_voxels(std::vector<double> const &centres,
     voxels *= d;
   }
   std::vector<std::int32_t> out;
-#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
-  try {
-    out.resize(voxels);
-  } catch (std::bad_alloc const &) {
-    return PW85_ENOMEM;
-  } catch (std::length_error const &) {
-    return PW85_ENOMEM;
-  }
-#else
-  out.resize(voxels);
-#endif
+  int const grown = detail_vector::resize(out, voxels);
+  if (grown != PW85_SUCCESS) return grown;
   int const status = pw85_image_voxels(
       n, centres.data(), q.data(), origin.data(), sides.data(),
       periodic ? 1 : 0, dims.data(), out.data(), threads);

@@ -36,8 +36,6 @@
 
 #include <array>
 #include <cstddef>
-#include <new>
-#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -58,6 +56,8 @@ constexpr std::size_t index_no_id = PW85_INDEX_NO_ID;
 namespace index_detail {
 
 /// @cond INTERNAL
+using detail_vector::resize;  // pw85.hpp
+
 // The table of the C functions of an index header, whose functions are
 // PREFIX_create, PREFIX_destroy, PREFIX_count, ..., for BasicIndex: the
 // struct NAME with the header's handle type and sizes (dim, sym) and a
@@ -496,24 +496,6 @@ class BasicIndex {
     return energy_of(PW85_ENERGY_USER, t, &call_energy<G>,
                      const_cast<void *>(static_cast<void const *>(&held)),
                      threads, n, energy, forces, torques);
-  }
-
- protected:
-  // Resizes v to n, PW85_ENOMEM if it cannot grow (v then unchanged).
-  template <typename T>
-  static int resize(std::vector<T> &v, std::size_t n) noexcept {
-#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
-    try {
-      v.resize(n);
-    } catch (std::bad_alloc const &) {
-      return PW85_ENOMEM;
-    } catch (std::length_error const &) {
-      return PW85_ENOMEM;
-    }
-#else
-    v.resize(n);
-#endif
-    return PW85_SUCCESS;
   }
 
  private:

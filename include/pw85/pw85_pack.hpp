@@ -16,11 +16,10 @@
 
 #include <array>
 #include <cstddef>
-#include <new>
-#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
+#include "pw85.hpp"
 #include "pw85_pack.h"
 
 namespace pw85 {
@@ -51,21 +50,7 @@ struct Packing {
 // The implementation of pack() (not part of the API).
 namespace detail_pack {
 
-template <typename T>
-int resize(std::vector<T> &v, std::size_t n) noexcept {
-#if defined(__cpp_exceptions) || defined(__EXCEPTIONS) || defined(_CPPUNWIND)
-  try {
-    v.resize(n);
-  } catch (std::bad_alloc const &) {
-    return PW85_ENOMEM;
-  } catch (std::length_error const &) {
-    return PW85_ENOMEM;
-  }
-#else
-  v.resize(n);
-#endif
-  return PW85_SUCCESS;
-}
+using detail_vector::resize;  // pw85.hpp
 
 template <typename F>
 int call_progress(pw85_pack_progress const *p, void *data) noexcept {
