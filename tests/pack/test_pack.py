@@ -602,6 +602,17 @@ class Pack(ToolCase):
             del f["centres"]
             f.create_dataset("centres", shape=(2**61 + 1, 3), dtype="f8",
                              chunks=(1, 3))
+        # the attributes: one missing, a number and a string of the wrong
+        # type (both readers of tools/pw85-pack/io.c)
+        for name, edit in (("noseed.h5", lambda a: a.__delitem__("seed")),
+                           ("textseed.h5",
+                            lambda a: a.__setitem__("seed", "five")),
+                           ("intmethod.h5",
+                            lambda a: a.__setitem__("method", np.int32(1)))):
+            path = os.path.join(self.dir, name)
+            shutil.copy(os.path.join(self.dir, "good.h5"), path)
+            with h5py.File(path, "r+") as f:
+                edit(f.attrs)
         for name, value in (("bigtarget.h5", 2**61 + 1),
                             ("smalltarget.h5", 5)):
             path = os.path.join(self.dir, name)
@@ -616,6 +627,10 @@ class Pack(ToolCase):
                               ("cut.h5", "not an HDF5 file"),
                               ("other.h5", "/box has not the documented type and shape"),
                               ("nobox.h5", "no dataset /box"),
+                              ("noseed.h5", "no attribute seed"),
+                              ("textseed.h5",
+                               "attribute seed has not the documented type"),
+                              ("intmethod.h5", "attribute method is not a string"),
                               ("overlap.h5", "pairs of ellipsoids overlap"),
                               ("axes.h5", "/forms[0] is not the form of /axes[0] "
                                "and /quaternions[0]")]:

@@ -258,14 +258,23 @@ static int read_dataset(hid_t file, char const *name, int rank, hsize_t *dims,
   return ok ? 0 : -1;
 }
 
-static int read_attr(hid_t file, char const *name, hid_t mem_type, void *value,
+/* The attribute `name` of file and its type (both to close), or -1 with
+ * why set when there is none. */
+static int open_attr(hid_t file, char const *name, hid_t *attr, hid_t *type,
                      char *why, size_t size) {
   if (H5Aexists(file, name) <= 0) {
     snprintf(why, size, "no attribute %s", name);
     return -1;
   }
-  hid_t const attr = H5Aopen(file, name, H5P_DEFAULT);
-  hid_t const type = H5Aget_type(attr);
+  *attr = H5Aopen(file, name, H5P_DEFAULT);
+  *type = H5Aget_type(*attr);
+  return 0;
+}
+
+static int read_attr(hid_t file, char const *name, hid_t mem_type, void *value,
+                     char *why, size_t size) {
+  hid_t attr, type;
+  if (open_attr(file, name, &attr, &type, why, size) != 0) return -1;
   int ok = H5Tget_class(type) == H5Tget_class(mem_type) &&
            H5Aread(attr, mem_type, value) >= 0;
   H5Tclose(type);
@@ -276,12 +285,8 @@ static int read_attr(hid_t file, char const *name, hid_t mem_type, void *value,
 
 static int read_string_attr(hid_t file, char const *name, char *out, size_t out_size,
                             char *why, size_t size) {
-  if (H5Aexists(file, name) <= 0) {
-    snprintf(why, size, "no attribute %s", name);
-    return -1;
-  }
-  hid_t const attr = H5Aopen(file, name, H5P_DEFAULT);
-  hid_t const type = H5Aget_type(attr);
+  hid_t attr, type;
+  if (open_attr(file, name, &attr, &type, why, size) != 0) return -1;
   int ok = H5Tget_class(type) == H5T_STRING;
   if (ok && H5Tis_variable_str(type) > 0) {
     char *s = NULL;
