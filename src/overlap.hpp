@@ -24,8 +24,9 @@ Status overlap(double const *r, double const *q1, double const *q2,
 // every A = Q(λ) or Qᵢ (|r_lo|_A⁻¹ ≤ √cond(A)·ε/2·|r|_A⁻¹), μ² and every
 // μᵢ² likewise (cond Q(λ) ≤ max cond Qᵢ), and |r|² by 1 ± 1.01ε: inside
 // each filter's margin (tolerances.hpp: 16ε for the sphere bound's 7.5ε;
-// 32ε·κ̄ ≥ 96ε·√κ̄ (κ̄ ≥ 9) for estimates off by 8ε·κ̄), so that a
-// filter's decision holds for r + r_lo.
+// 32ε·κ̄ for estimates off by 8ε·κ̄, which leaves 24ε·κ̄ ≥ 48ε·√κ̄ as
+// κ̄ ≥ D² ≥ 4, ellipses included), so that a filter's decision holds for
+// r + r_lo.
 template <int D = dim>
 Status overlap_dd(double const *r, double const *r_lo, double const *q1,
                   double const *q2, int *result) noexcept;
