@@ -581,44 +581,39 @@ class Pack(ToolCase):
             f["box"] = [1.0, 2.0]
         with h5py.File(os.path.join(self.dir, "nobox.h5"), "w") as f:
             f["positions"] = np.zeros((3, 3))
+        def good_copy(name):
+            """A copy of good.h5 named name, open for editing."""
+            path = os.path.join(self.dir, name)
+            shutil.copy(os.path.join(self.dir, "good.h5"), path)
+            return h5py.File(path, "r+")
+
         # /axes edited, /forms not: the new ellipsoids would not be those
         # of the file (--resume used /axes without checking it)
-        edited = os.path.join(self.dir, "axes.h5")
-        shutil.copy(os.path.join(self.dir, "good.h5"), edited)
-        with h5py.File(edited, "r+") as f:
+        with good_copy("axes.h5") as f:
             f["axes"][...] = 2 * f["axes"][()]
-        overlapping = os.path.join(self.dir, "overlap.h5")
-        shutil.copy(os.path.join(self.dir, "good.h5"), overlapping)
-        with h5py.File(overlapping, "r+") as f:
+        with good_copy("overlap.h5") as f:
             f["centres"][1] = f["centres"][0]
             f["forms"][1] = f["forms"][0]
         # sizes from a corrupted file: a count of rows whose bytes wrap
         # around a size_t, a target count beyond --n's range, or below the
         # count of the file (they were allocated as such: the tool wrote
         # past its buffers, or blamed --n, which was not given)
-        huge = os.path.join(self.dir, "huge.h5")
-        shutil.copy(os.path.join(self.dir, "good.h5"), huge)
-        with h5py.File(huge, "r+") as f:
+        with good_copy("huge.h5") as f:
             del f["centres"]
             f.create_dataset("centres", shape=(2**61 + 1, 3), dtype="f8",
                              chunks=(1, 3))
-        # the attributes: one missing, a number and a string of the wrong
-        # type (both readers of tools/pw85-pack/io.c)
-        for name, edit in (("noseed.h5", lambda a: a.__delitem__("seed")),
-                           ("textseed.h5",
-                            lambda a: a.__setitem__("seed", "five")),
-                           ("intmethod.h5",
-                            lambda a: a.__setitem__("method", np.int32(1)))):
-            path = os.path.join(self.dir, name)
-            shutil.copy(os.path.join(self.dir, "good.h5"), path)
-            with h5py.File(path, "r+") as f:
-                edit(f.attrs)
         for name, value in (("bigtarget.h5", 2**61 + 1),
                             ("smalltarget.h5", 5)):
-            path = os.path.join(self.dir, name)
-            shutil.copy(os.path.join(self.dir, "good.h5"), path)
-            with h5py.File(path, "r+") as f:
+            with good_copy(name) as f:
                 f.attrs["target_count"] = np.uint64(value)
+        # the attributes: one missing, a number and a string of the wrong
+        # type (both readers of tools/pw85-pack/io.c)
+        with good_copy("noseed.h5") as f:
+            del f.attrs["seed"]
+        with good_copy("textseed.h5") as f:
+            f.attrs["seed"] = "five"
+        with good_copy("intmethod.h5") as f:
+            f.attrs["method"] = np.int32(1)
         for name, message in [("huge.h5", "/centres has 2305843009213693953 rows"),
                               ("bigtarget.h5", "target_count 2305843009213693953"),
                               ("smalltarget.h5", "target_count 5"),
