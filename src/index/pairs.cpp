@@ -148,6 +148,10 @@ void grid_shape(Level<D> const &lv, double const *box, bool periodic,
   g.cells = static_cast<std::size_t>(cells);
 }
 
+// The scatter of the counting sort reads the cursor of entry j +
+// sort_ahead, and the places it goes, ahead of entry j.
+constexpr std::size_t sort_ahead = 8;
+
 // The level's entries sorted by the grid's cell into the snapshot, at
 // g.first: a counting sort, in the order of the level's cells. On nt
 // threads, thread t takes the level's cells [split[t], split[t + 1])
@@ -215,11 +219,19 @@ struct LevelSort {
   }
   void scatter(int t) noexcept {
     std::uint32_t *h = hist.data() + std::size_t(t) * g.cells;
+    std::size_t const end = base[split[t + 1]];
     for (std::size_t ci = split[t]; ci < split[t + 1]; ++ci) {
       Cell<D> const &cell = lv.cells[ci];
       for (std::size_t ei = 0; ei < cell.size(); ++ei) {
         Entry<D> const &e = cell[ei];
-        std::size_t const to = g.first + h[where[base[ci] + ei]]++;
+        std::size_t const j = base[ci] + ei;
+        if (j + 2 * sort_ahead < end) PW85_PREFETCH(&h[where[j + 2 * sort_ahead]]);
+        if (j + sort_ahead < end) {
+          std::size_t const ahead = g.first + h[where[j + sort_ahead]];
+          PW85_PREFETCH(&s->hot[ahead]);
+          PW85_PREFETCH(&s->forms[ahead]);
+        }
+        std::size_t const to = g.first + h[where[j]]++;
         Hot<D> &x = s->hot[to];
         for (int k = 0; k < D; ++k) {
           x.c[k] = e.c[k];
@@ -605,6 +617,10 @@ class Search {
   double slack_[D], slack_sum_;  // test()'s
 };
 
+// The merge reads the counters of pair q + merge_ahead, and the place
+// it goes, ahead of pair q (both random accesses into large arrays).
+constexpr std::size_t merge_ahead = 8;
+
 // The pairs of every share into out, sorted by (i, j, shift); ids: the
 // id table's size, total: the number of pairs. False when an allocation
 // fails.
@@ -623,6 +639,8 @@ bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
     for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
       Buffer<PairHit<D>> const &p = shares[k].pairs.block(b);
       for (std::size_t q = 0; q < p.size(); ++q) {
+        if (q + merge_ahead < p.size())
+          PW85_PREFETCH(&first[p[q + merge_ahead].i + 1]);
         std::size_t *c = &first[p[q].i + 1];
         if (atomic)
           __atomic_fetch_add(c, 1, __ATOMIC_RELAXED);
@@ -635,6 +653,13 @@ bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
     for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
       Buffer<PairHit<D>> const &p = shares[k].pairs.block(b);
       for (std::size_t q = 0; q < p.size(); ++q) {
+        if (q + 2 * merge_ahead < p.size())
+          PW85_PREFETCH(&first[p[q + 2 * merge_ahead].i]);
+        if (q + merge_ahead < p.size()) {
+          std::size_t const *c = &first[p[q + merge_ahead].i];
+          PW85_PREFETCH(out->data() +
+                        (atomic ? __atomic_load_n(c, __ATOMIC_RELAXED) : *c));
+        }
         std::size_t *c = &first[p[q].i];
         std::size_t const to =
             atomic ? __atomic_fetch_add(c, 1, __ATOMIC_RELAXED) : (*c)++;
