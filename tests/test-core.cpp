@@ -548,6 +548,78 @@ void test_bulk_insert() {
   g_rand_free(rng);
 }
 
+// Buffers holding parts of a SharedBlock (the cells insert_many()
+// creates): each reads its own part, one that grows moves to memory of
+// its own with its content and leaves the block, and the last to leave
+// frees it (checked by valgrind's and ASan's leak checks of this test).
+void test_shared_block() {
+  using namespace pw85::detail;
+  SharedBlock *block = SharedBlock::make(6 * sizeof(double), 2);
+  g_assert_nonnull(block);
+  double *const part = reinterpret_cast<double *>(block->payload());
+  {
+    Buffer<double> x, y;
+    x.borrow(block, part, 2);
+    y.borrow(block, part + 2, 4);
+    for (int k = 0; k < 2; ++k) g_assert_true(x.push_back(k));
+    for (int k = 0; k < 4; ++k) g_assert_true(y.push_back(10 + k));
+    g_assert_true(x.data() == part && y.data() == part + 2);
+    g_assert_true(x.push_back(2));  // beyond its part: x moves out
+    g_assert_true(x.data() != part);
+    g_assert_cmpuint(block->holders, ==, 1);
+    for (int k = 0; k < 3; ++k) g_assert_cmpfloat(x[std::size_t(k)], ==, k);
+    for (int k = 0; k < 4; ++k) g_assert_cmpfloat(y[std::size_t(k)], ==, 10 + k);
+    Buffer<double> z(static_cast<Buffer<double> &&>(y));  // the part moves with it
+    g_assert_true(z.data() == part + 2 && y.data() == nullptr);
+    g_assert_cmpuint(block->holders, ==, 1);
+  }
+}
+
+// After insert_many() into an empty index (its new cells share a block),
+// the edits that make cells grow (insert, update), shrink (remove) and a
+// second bulk call (new cells and old) leave the state that the same
+// edits leave after a loop of insert(), periodic and open.
+void test_bulk_then_edits() {
+  using namespace pw85::detail;
+  GRand *rng = g_rand_new_with_seed(29);
+  std::size_t const n = 8000, bulk = 4000, moved = 1500;
+  std::vector<double> c(3 * n), q(6 * n), c2(3 * moved);
+  std::vector<std::size_t> ids(n);
+  double const side = 24.;
+  for (std::size_t i = 0; i < n; ++i) {
+    ids[i] = i;
+    double const s = std::pow(10., g_rand_double(rng) * 0.6);
+    double const e[3] = {s * s * .04, s * s * .25, s * s};
+    random_form_with_eigenvalues(rng, e, &q[6 * i]);
+    for (int k = 0; k < 3; ++k) c[3 * i + k] = g_rand_double_range(rng, 0, side);
+  }
+  for (std::size_t i = 0; i < 3 * moved; ++i) c2[i] = g_rand_double_range(rng, -side, 2 * side);
+  double const box[3] = {side, side, side};
+  for (double const *b : {box, static_cast<double const *>(nullptr)}) {
+    Index ref(b), ix(b);
+    for (std::size_t i = 0; i < bulk; ++i)
+      g_assert_true(ref.insert(i, &c[3 * i], &q[6 * i]) == Status::success);
+    g_assert_true(ix.insert_many(bulk, ids.data(), c.data(), q.data(), 2) == Status::success);
+    for (Index *x : {&ref, &ix}) {
+      for (std::size_t i = bulk; i < n - moved; ++i)
+        g_assert_true(x->insert(i, &c[3 * i], &q[6 * i]) == Status::success);
+      for (std::size_t i = 0; i < moved; ++i)
+        g_assert_true(x->update(2 * i, &c2[3 * i], &q[6 * (2 * i)]) == Status::success);
+      for (std::size_t i = 0; i < moved; ++i)
+        g_assert_true(x->remove(2 * i + 1) == Status::success);
+    }
+    for (std::size_t i = n - moved; i < n; ++i)
+      g_assert_true(ref.insert(i, &c[3 * i], &q[6 * i]) == Status::success);
+    g_assert_true(ix.insert_many(moved, &ids[n - moved], &c[3 * (n - moved)],
+                                 &q[6 * (n - moved)], 2) == Status::success);
+    if (!same_state(ref, ix, n)) {
+      g_test_message("%s: not the state of insert()", b ? "periodic" : "open");
+      g_test_fail();
+    }
+  }
+  g_rand_free(rng);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -561,5 +633,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/core/index/inscribed-radius-2d", test_inscribed_radius_2d);
   g_test_add_func("/pw85/core/index/deep-overlap-2d", test_deep_overlap_2d);
   g_test_add_func("/pw85/core/index/bulk-insert", test_bulk_insert);
+  g_test_add_func("/pw85/core/index/shared-block", test_shared_block);
+  g_test_add_func("/pw85/core/index/bulk-then-edits", test_bulk_then_edits);
   return g_test_run();
 }

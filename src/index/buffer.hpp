@@ -42,6 +42,33 @@ inline void *buffer_alloc(std::size_t bytes, std::size_t align) noexcept {
   return std::malloc(bytes);
 }
 
+// A block of memory that several buffers share, each holding a part of it
+// (the cells that insert_many() creates: one allocation, with huge pages
+// when large, instead of one per cell, whose first-touch page faults cost
+// more than the rest of the insertion on a virtual machine). Its header
+// counts the buffers holding a part; the last to leave frees the block.
+// A buffer leaves when it moves to memory of its own (it grows) or is
+// destroyed.
+struct alignas(64) SharedBlock {
+  std::size_t holders;
+
+  // A block of `bytes` bytes after the header (aligned to 64) for
+  // `holders` buffers, or nullptr when the allocation fails.
+  static SharedBlock *make(std::size_t bytes, std::size_t holders) noexcept {
+    if (bytes > std::size_t(-1) - sizeof(SharedBlock)) return nullptr;
+    void *p = buffer_alloc(sizeof(SharedBlock) + bytes, alignof(SharedBlock));
+    if (p == nullptr) return nullptr;
+    return new (p) SharedBlock{holders};
+  }
+  unsigned char *payload() noexcept {
+    return reinterpret_cast<unsigned char *>(this + 1);
+  }
+  // One holder leaves (safe on several threads at once).
+  void leave() noexcept {
+    if (__atomic_sub_fetch(&holders, 1, __ATOMIC_ACQ_REL) == 0) std::free(this);
+  }
+};
+
 template <typename T>
 class Buffer {
   static_assert(std::is_nothrow_move_constructible_v<T>,
@@ -51,9 +78,11 @@ class Buffer {
   Buffer() noexcept = default;
   Buffer(Buffer const &) = delete;
   Buffer &operator=(Buffer const &) = delete;
-  Buffer(Buffer &&o) noexcept : data_(o.data_), size_(o.size_), cap_(o.cap_) {
+  Buffer(Buffer &&o) noexcept
+      : data_(o.data_), size_(o.size_), cap_(o.cap_), block_(o.block_) {
     o.data_ = nullptr;
     o.size_ = o.cap_ = 0;
+    o.block_ = nullptr;
   }
   Buffer &operator=(Buffer &&o) noexcept {
     if (this != &o) {
@@ -61,8 +90,10 @@ class Buffer {
       data_ = o.data_;
       size_ = o.size_;
       cap_ = o.cap_;
+      block_ = o.block_;
       o.data_ = nullptr;
       o.size_ = o.cap_ = 0;
+      o.block_ = nullptr;
     }
     return *this;
   }
@@ -93,10 +124,18 @@ class Buffer {
         data_[i].~T();
       }
     }
-    std::free(data_);
+    free_memory();
     data_ = p;
     cap_ = n;
     return true;
+  }
+  // Takes room for `n` elements at p, inside `block` (SharedBlock, one
+  // of its holders), instead of memory of its own; for an empty buffer
+  // with no memory (size() = capacity() = 0). p must be aligned for T.
+  void borrow(SharedBlock *block, T *p, std::size_t n) noexcept {
+    block_ = block;
+    data_ = p;
+    cap_ = n;
   }
   // Capacity for `extra` more elements, doubling (amortised O(1)).
   [[nodiscard]] bool grow_for(std::size_t extra) noexcept {
@@ -145,14 +184,24 @@ class Buffer {
  private:
   void release() noexcept {
     clear();
-    std::free(data_);
+    free_memory();
     data_ = nullptr;
     cap_ = 0;
+  }
+  // The buffer's memory freed, or its block left.
+  void free_memory() noexcept {
+    if (block_ == nullptr) {
+      std::free(data_);
+    } else {
+      block_->leave();
+      block_ = nullptr;
+    }
   }
 
   T *data_ = nullptr;
   std::size_t size_ = 0;
   std::size_t cap_ = 0;
+  SharedBlock *block_ = nullptr;  // the block data_ lies in, if any
 };
 
 }  // namespace pw85::detail

@@ -138,6 +138,12 @@ class TouchedMap {
   Buffer<Touched> slots_;
 };
 
+// A cell that the call creates: its key and the count of its items.
+struct NewCell {
+  std::uint64_t key;
+  std::size_t count;
+};
+
 // What a pass over a chunk of items found: its first failing item (n if
 // none) and that item's status.
 struct ChunkStatus {
@@ -350,7 +356,9 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
     new_cells[l] = at - levels_[l].cells.size();
     if (at >= no_id) return fail(Status::no_memory);  // as reserve_for()
   }
-  Buffer<Buffer<std::uint64_t>> new_keys;  // per level, by new position
+  // Per level, by new position: the key and the count of items of each
+  // new cell.
+  Buffer<Buffer<NewCell>> new_keys;
   ok = new_keys.resize(nlevels);
   for (std::size_t l = 0; ok && l < nlevels; ++l)
     ok = new_keys[l].resize_uninitialised(new_cells[l]) &&
@@ -365,17 +373,22 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
       std::size_t const l = std::size_t(place[i]);
       std::size_t const p = rank[k * row + l]++;
       Touched &t = maps[l][slot_of[i]];
-      new_keys[l][p - levels_[l].cells.size()] = t.key;
+      new_keys[l][p - levels_[l].cells.size()] = NewCell{t.key, t.count};
       t.cell = std::uint32_t(p);  // read by is_new_founder() of this item only
     }
   });
   // is_new_founder() is false from here on.
 
   // The new cells, registered in order (as reserve_for() registers them).
+  Buffer<std::size_t> first_new;  // per level: the position of its first new cell
+  if (!first_new.resize_uninitialised(nlevels)) {
+    return fail(Status::no_memory);
+  }
   for (std::size_t l = 0; l < nlevels; ++l) {
     Level<D> &lv = levels_[l];
+    first_new[l] = lv.cells.size();
     for (std::size_t p = 0; p < new_cells[l]; ++p) {
-      std::uint64_t const key = new_keys[l][p];
+      std::uint64_t const key = new_keys[l][p].key;
       if (lv.dense.empty() && !lv.map.reserve_one()) {
         return fail(Status::no_memory);
       }
@@ -391,8 +404,31 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
     }
   }
 
-  // Pass 5: room in every touched cell, and the runs of the list of items
-  // by cell (prefix sums of the counts, in the order of the maps' slots).
+  // The new cells' room: parts of one shared block (buffer.hpp,
+  // SharedBlock), in the order of the cells, allocated after the last
+  // failure that could leave a part without its holder.
+  std::size_t entries = 0, holders = 0;
+  for (std::size_t l = 0; l < nlevels; ++l)
+    for (std::size_t p = 0; p < new_cells[l]; ++p) {
+      entries += new_keys[l][p].count;
+      ++holders;
+    }
+  if (holders > 0) {
+    if (entries > std::size_t(-1) / sizeof(Entry<D>)) return fail(Status::no_memory);
+    SharedBlock *const block = SharedBlock::make(entries * sizeof(Entry<D>), holders);
+    if (block == nullptr) return fail(Status::no_memory);
+    Entry<D> *part = reinterpret_cast<Entry<D> *>(block->payload());
+    for (std::size_t l = 0; l < nlevels; ++l)
+      for (std::size_t p = 0; p < new_cells[l]; ++p) {
+        std::size_t const count = new_keys[l][p].count;
+        levels_[l].cells[first_new[l] + p].borrow(block, part, count);
+        part += count;
+      }
+  }
+
+  // Pass 5: room in every touched cell that existed before the call, and
+  // the runs of the list of items by cell (prefix sums of the counts, in
+  // the order of the maps' slots).
   std::size_t most = chunks;  // chunks of items or of a map's slots
   for (std::size_t l = 0; l < nlevels; ++l)
     most = std::max(most, (maps[l].size() + bulk_chunk - 1) / bulk_chunk);
