@@ -212,7 +212,11 @@ PW85_API int pw85_index_insert_many(pw85_index *index, size_t n,
  * calling thread), which allocate, for the time of the call, 12 bytes per
  * ellipsoid and a hash table of 48 to 96 bytes per cell that the
  * ellipsoids of a level may occupy (as many as they are, or, in a
- * periodic box, as the cells of the level's grid if fewer).
+ * periodic box, as the cells of the level's grid if fewer). The cells
+ * that the call creates keep their ellipsoids in one block (marked for
+ * transparent huge pages when large), which is freed when the last of
+ * them has moved out of it (a cell moves to memory of its own when it
+ * grows beyond what the call put in it) or the index is destroyed.
  * @param[in,out] index the index.
  * @param[in] n the number of ellipsoids (0 does nothing).
  * @param[in] ids their ids (n values, distinct, not in use).
