@@ -548,31 +548,37 @@ void test_bulk_insert() {
   g_rand_free(rng);
 }
 
-// Buffers holding parts of a SharedBlock (the cells insert_many()
-// creates): each reads its own part, one that grows moves to memory of
-// its own with its content and leaves the block, and the last to leave
-// frees it (checked by valgrind's and ASan's leak checks of this test).
-void test_shared_block() {
+// Buffers that borrow parts of a block of a BlockList (the cells that
+// insert_many() creates): each reads its own part, one that grows moves
+// to memory of its own with its content, a move takes the part along, and
+// the list frees the block after them (checked by valgrind's and ASan's
+// leak and use-after-free checks of this test).
+void test_borrowed_parts() {
   using namespace pw85::detail;
-  SharedBlock *block = SharedBlock::make(6 * sizeof(double), 2);
-  g_assert_nonnull(block);
-  double *const part = reinterpret_cast<double *>(block->payload());
-  {
-    Buffer<double> x, y;
-    x.borrow(block, part, 2);
-    y.borrow(block, part + 2, 4);
-    for (int k = 0; k < 2; ++k) g_assert_true(x.push_back(k));
-    for (int k = 0; k < 4; ++k) g_assert_true(y.push_back(10 + k));
-    g_assert_true(x.data() == part && y.data() == part + 2);
-    g_assert_true(x.push_back(2));  // beyond its part: x moves out
-    g_assert_true(x.data() != part);
-    g_assert_cmpuint(block->holders, ==, 1);
-    for (int k = 0; k < 3; ++k) g_assert_cmpfloat(x[std::size_t(k)], ==, k);
-    for (int k = 0; k < 4; ++k) g_assert_cmpfloat(y[std::size_t(k)], ==, 10 + k);
-    Buffer<double> z(static_cast<Buffer<double> &&>(y));  // the part moves with it
-    g_assert_true(z.data() == part + 2 && y.data() == nullptr);
-    g_assert_cmpuint(block->holders, ==, 1);
-  }
+  BlockList blocks;
+  double *const part = static_cast<double *>(blocks.allocate(6 * sizeof(double)));
+  g_assert_nonnull(part);
+  Buffer<double> x, y;
+  x.borrow(part, 2);
+  y.borrow(part + 2, 4);
+  g_assert_cmpuint(x.capacity(), ==, 2);
+  g_assert_cmpuint(y.capacity(), ==, 4);
+  for (int k = 0; k < 2; ++k) g_assert_true(x.push_back(k));
+  for (int k = 0; k < 4; ++k) g_assert_true(y.push_back(10 + k));
+  g_assert_true(x.data() == part && y.data() == part + 2);
+  g_assert_true(x.push_back(2));  // beyond its part: x moves out
+  g_assert_true(x.data() != part);
+  g_assert_cmpuint(x.capacity(), >=, 3);
+  for (int k = 0; k < 3; ++k) g_assert_cmpfloat(x[std::size_t(k)], ==, k);
+  for (int k = 0; k < 4; ++k) g_assert_cmpfloat(y[std::size_t(k)], ==, 10 + k);
+  Buffer<double> z(static_cast<Buffer<double> &&>(y));  // the part moves with it
+  g_assert_true(z.data() == part + 2 && y.data() == nullptr);
+  g_assert_cmpuint(z.capacity(), ==, 4);
+  y = static_cast<Buffer<double> &&>(z);  // and back, by assignment
+  g_assert_true(y.data() == part + 2 && z.data() == nullptr);
+  y.reset();  // a borrowed part is not freed (the list frees the block)
+  g_assert_true(y.data() == nullptr && y.capacity() == 0);
+  g_assert_true(y.push_back(1.5) && y[0] == 1.5);
 }
 
 // After insert_many() into an empty index (its new cells share a block),
@@ -633,7 +639,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/core/index/inscribed-radius-2d", test_inscribed_radius_2d);
   g_test_add_func("/pw85/core/index/deep-overlap-2d", test_deep_overlap_2d);
   g_test_add_func("/pw85/core/index/bulk-insert", test_bulk_insert);
-  g_test_add_func("/pw85/core/index/shared-block", test_shared_block);
+  g_test_add_func("/pw85/core/index/borrowed-parts", test_borrowed_parts);
   g_test_add_func("/pw85/core/index/bulk-then-edits", test_bulk_then_edits);
   return g_test_run();
 }

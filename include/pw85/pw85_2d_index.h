@@ -200,9 +200,9 @@ PW85_API int pw85_2d_index_insert_many(pw85_2d_index *index, size_t n,
  * (as many as they are, or, in a periodic rectangle, as the cells of the
  * level's grid if fewer). The cells that the call creates keep their
  * ellipses in one block (marked for transparent huge pages when large),
- * which is freed when the last of them has moved out of it (a cell moves
- * to memory of its own when it grows beyond what the call put in it) or
- * the index is destroyed.
+ * freed with the index; a cell that grows beyond what the call put in it
+ * moves to memory of its own, and its part of the block stays
+ * allocated, unused, until the index is destroyed.
  * @param[in,out] index the index.
  * @param[in] n the number of ellipses (0 does nothing).
  * @param[in] ids their ids (n values, distinct, not in use).

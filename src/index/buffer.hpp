@@ -42,31 +42,38 @@ inline void *buffer_alloc(std::size_t bytes, std::size_t align) noexcept {
   return std::malloc(bytes);
 }
 
-// A block of memory that several buffers share, each holding a part of it
-// (the cells that insert_many() creates: one allocation, with huge pages
-// when large, instead of one per cell, whose first-touch page faults cost
-// more than the rest of the insertion on a virtual machine). Its header
-// counts the buffers holding a part; the last to leave frees the block.
-// A buffer leaves when it moves to memory of its own (it grows) or is
-// destroyed.
-struct alignas(64) SharedBlock {
-  std::size_t holders;
-
-  // A block of `bytes` bytes after the header (aligned to 64) for
-  // `holders` buffers, or nullptr when the allocation fails.
-  static SharedBlock *make(std::size_t bytes, std::size_t holders) noexcept {
-    if (bytes > std::size_t(-1) - sizeof(SharedBlock)) return nullptr;
-    void *p = buffer_alloc(sizeof(SharedBlock) + bytes, alignof(SharedBlock));
+// Blocks of memory whose parts buffers borrow (Buffer::borrow(); the cells
+// that insert_many() creates: one allocation, with huge pages when large,
+// instead of one per cell, whose first-touch page faults cost more than
+// the rest of the insertion on a virtual machine). The buffers never free
+// a part; the list frees its blocks when it is destroyed, after them.
+class BlockList {
+ public:
+  BlockList() noexcept = default;
+  BlockList(BlockList const &) = delete;
+  BlockList &operator=(BlockList const &) = delete;
+  ~BlockList() {
+    while (head_ != nullptr) {
+      Header *const next = head_->next;
+      std::free(head_);
+      head_ = next;
+    }
+  }
+  // A new block of `bytes` bytes aligned to 64, or nullptr when the
+  // allocation fails.
+  void *allocate(std::size_t bytes) noexcept {
+    if (bytes > std::size_t(-1) - sizeof(Header)) return nullptr;
+    void *p = buffer_alloc(sizeof(Header) + bytes, alignof(Header));
     if (p == nullptr) return nullptr;
-    return new (p) SharedBlock{holders};
+    head_ = new (p) Header{head_};
+    return head_ + 1;
   }
-  unsigned char *payload() noexcept {
-    return reinterpret_cast<unsigned char *>(this + 1);
-  }
-  // One holder leaves (safe on several threads at once).
-  void leave() noexcept {
-    if (__atomic_sub_fetch(&holders, 1, __ATOMIC_ACQ_REL) == 0) std::free(this);
-  }
+
+ private:
+  struct alignas(64) Header {
+    Header *next;
+  };
+  Header *head_ = nullptr;
 };
 
 template <typename T>
@@ -78,11 +85,9 @@ class Buffer {
   Buffer() noexcept = default;
   Buffer(Buffer const &) = delete;
   Buffer &operator=(Buffer const &) = delete;
-  Buffer(Buffer &&o) noexcept
-      : data_(o.data_), size_(o.size_), cap_(o.cap_), block_(o.block_) {
+  Buffer(Buffer &&o) noexcept : data_(o.data_), size_(o.size_), cap_(o.cap_) {
     o.data_ = nullptr;
     o.size_ = o.cap_ = 0;
-    o.block_ = nullptr;
   }
   Buffer &operator=(Buffer &&o) noexcept {
     if (this != &o) {
@@ -90,17 +95,15 @@ class Buffer {
       data_ = o.data_;
       size_ = o.size_;
       cap_ = o.cap_;
-      block_ = o.block_;
       o.data_ = nullptr;
       o.size_ = o.cap_ = 0;
-      o.block_ = nullptr;
     }
     return *this;
   }
   ~Buffer() { release(); }
 
   std::size_t size() const noexcept { return size_; }
-  std::size_t capacity() const noexcept { return cap_; }
+  std::size_t capacity() const noexcept { return cap_ & ~borrowed; }
   bool empty() const noexcept { return size_ == 0; }
   T *data() noexcept { return data_; }
   T const *data() const noexcept { return data_; }
@@ -111,8 +114,8 @@ class Buffer {
   // Capacity for at least n elements; false (nothing changed) when the
   // allocation fails.
   [[nodiscard]] bool reserve(std::size_t n) noexcept {
-    if (n <= cap_) return true;
-    if (n > std::size_t(-1) / sizeof(T)) return false;
+    if (n <= capacity()) return true;
+    if (n > std::size_t(-1) / sizeof(T) || n >= borrowed) return false;
     // sizeof(T) is a multiple of alignof(T), as aligned_alloc requires.
     T *p = static_cast<T *>(buffer_alloc(n * sizeof(T), alignof(T)));
     if (p == nullptr) return false;
@@ -129,18 +132,19 @@ class Buffer {
     cap_ = n;
     return true;
   }
-  // Takes room for `n` elements at p, inside `block` (SharedBlock, one
-  // of its holders), instead of memory of its own; for an empty buffer
-  // with no memory (size() = capacity() = 0). p must be aligned for T.
-  void borrow(SharedBlock *block, T *p, std::size_t n) noexcept {
-    block_ = block;
+  // Takes room for n elements at p, a part of a block of a BlockList,
+  // instead of memory of its own, for an empty buffer with no memory
+  // (size() = capacity() = 0); p aligned for T. The buffer never frees
+  // it: it moves to memory of its own when it grows beyond n.
+  void borrow(T *p, std::size_t n) noexcept {
     data_ = p;
-    cap_ = n;
+    cap_ = n | borrowed;
   }
   // Capacity for `extra` more elements, doubling (amortised O(1)).
   [[nodiscard]] bool grow_for(std::size_t extra) noexcept {
-    if (size_ + extra <= cap_) return true;
-    std::size_t n = cap_ < 4 ? 4 : cap_;
+    std::size_t const cap = capacity();
+    if (size_ + extra <= cap) return true;
+    std::size_t n = cap < 4 ? 4 : cap;
     while (n < size_ + extra) {
       if (n > std::size_t(-1) / 2) return false;
       n *= 2;
@@ -188,20 +192,18 @@ class Buffer {
     data_ = nullptr;
     cap_ = 0;
   }
-  // The buffer's memory freed, or its block left.
+  // The buffer's memory freed, unless borrowed.
   void free_memory() noexcept {
-    if (block_ == nullptr) {
-      std::free(data_);
-    } else {
-      block_->leave();
-      block_ = nullptr;
-    }
+    if ((cap_ & borrowed) == 0) std::free(data_);
   }
+
+  // The top bit of cap_: data_ is borrowed (borrow()). No capacity
+  // reaches it (n·sizeof(T) < 2^64).
+  static constexpr std::size_t borrowed = ~(std::size_t(-1) >> 1);
 
   T *data_ = nullptr;
   std::size_t size_ = 0;
   std::size_t cap_ = 0;
-  SharedBlock *block_ = nullptr;  // the block data_ lies in, if any
 };
 
 }  // namespace pw85::detail

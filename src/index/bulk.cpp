@@ -404,24 +404,20 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
     }
   }
 
-  // The new cells' room: parts of one shared block (buffer.hpp,
-  // SharedBlock), in the order of the cells, allocated after the last
-  // failure that could leave a part without its holder.
-  std::size_t entries = 0, holders = 0;
+  // The new cells' room: parts of one block (buffer.hpp, BlockList), in
+  // the order of the cells.
+  std::size_t entries = 0;
   for (std::size_t l = 0; l < nlevels; ++l)
-    for (std::size_t p = 0; p < new_cells[l]; ++p) {
-      entries += new_keys[l][p].count;
-      ++holders;
-    }
-  if (holders > 0) {
+    for (std::size_t p = 0; p < new_cells[l]; ++p) entries += new_keys[l][p].count;
+  if (entries > 0) {
     if (entries > std::size_t(-1) / sizeof(Entry<D>)) return fail(Status::no_memory);
-    SharedBlock *const block = SharedBlock::make(entries * sizeof(Entry<D>), holders);
+    void *const block = blocks_.allocate(entries * sizeof(Entry<D>));
     if (block == nullptr) return fail(Status::no_memory);
-    Entry<D> *part = reinterpret_cast<Entry<D> *>(block->payload());
+    Entry<D> *part = static_cast<Entry<D> *>(block);
     for (std::size_t l = 0; l < nlevels; ++l)
       for (std::size_t p = 0; p < new_cells[l]; ++p) {
         std::size_t const count = new_keys[l][p].count;
-        levels_[l].cells[first_new[l] + p].borrow(block, part, count);
+        levels_[l].cells[first_new[l] + p].borrow(part, count);
         part += count;
       }
   }

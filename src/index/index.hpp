@@ -261,6 +261,9 @@ class Index {
   double cmax_ = 0.0;  // ≥ every |c_k| ever stored (for rounding margins)
   std::size_t count_ = 0;
   Buffer<Slot> slots_;  // by id
+  // The blocks of the cells that insert_many() created (bulk.cpp), freed
+  // with the index, after the levels (members are destroyed in reverse).
+  BlockList blocks_;
   Buffer<Level<D>> levels_;
 };
 
