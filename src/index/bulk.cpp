@@ -404,24 +404,6 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
     }
   }
 
-  // The new cells' room: parts of one block (buffer.hpp, BlockList), in
-  // the order of the cells.
-  std::size_t entries = 0;
-  for (std::size_t l = 0; l < nlevels; ++l)
-    for (std::size_t p = 0; p < new_cells[l]; ++p) entries += new_keys[l][p].count;
-  if (entries > 0) {
-    if (entries > std::size_t(-1) / sizeof(Entry<D>)) return fail(Status::no_memory);
-    void *const block = blocks_.allocate(entries * sizeof(Entry<D>));
-    if (block == nullptr) return fail(Status::no_memory);
-    Entry<D> *part = static_cast<Entry<D> *>(block);
-    for (std::size_t l = 0; l < nlevels; ++l)
-      for (std::size_t p = 0; p < new_cells[l]; ++p) {
-        std::size_t const count = new_keys[l][p].count;
-        levels_[l].cells[first_new[l] + p].borrow(part, count);
-        part += count;
-      }
-  }
-
   // Pass 5: room in every touched cell that existed before the call, and
   // the runs of the list of items by cell (prefix sums of the counts, in
   // the order of the maps' slots).
@@ -452,6 +434,7 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
       status[k] = ChunkStatus{n, Status::success};
       for (std::size_t s = s0; s < s1; ++s) {
         if (map[s].key == TouchedMap::empty) continue;
+        if (map[s].cell >= first_new[l]) continue;  // a part of the block, below
         Cell<D> &cell = lv.cells[map[s].cell];
         if (!cell.reserve(cell.size() + map[s].count)) {
           status[k] = ChunkStatus{s, Status::no_memory};
@@ -465,6 +448,24 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
   if (!ok) {
     return fail(Status::no_memory);
   }
+  // The new cells' room: parts of one block (buffer.hpp, BlockList), in
+  // the order of the cells, the call's last allocation.
+  std::size_t entries = 0;
+  for (std::size_t l = 0; l < nlevels; ++l)
+    for (std::size_t p = 0; p < new_cells[l]; ++p) entries += new_keys[l][p].count;
+  if (entries > 0) {
+    if (entries > std::size_t(-1) / sizeof(Entry<D>)) return fail(Status::no_memory);
+    void *const block = blocks_.allocate(entries * sizeof(Entry<D>));
+    if (block == nullptr) return fail(Status::no_memory);
+    Entry<D> *part = static_cast<Entry<D> *>(block);
+    for (std::size_t l = 0; l < nlevels; ++l)
+      for (std::size_t p = 0; p < new_cells[l]; ++p) {
+        std::size_t const count = new_keys[l][p].count;
+        levels_[l].cells[first_new[l] + p].borrow(part, count);
+        part += count;
+      }
+  }
+
   // Nothing fails from here on.
 
   // Pass 6: the items into their cells' runs, each run sorted.
