@@ -583,8 +583,9 @@ void test_borrowed_parts() {
 
 // After insert_many() into an empty index (its new cells share a block),
 // the edits that make cells grow (insert, update), shrink (remove) and a
-// second bulk call (new cells and old) leave the state that the same
-// edits leave after a loop of insert(), periodic and open.
+// second bulk call (into cells that exist, and into the new cells of a new
+// level: every other ellipsoid twice as large) leave the state that the
+// same edits leave after a loop of insert(), periodic and open.
 void test_bulk_then_edits() {
   using namespace pw85::detail;
   GRand *rng = g_rand_new_with_seed(29);
@@ -597,6 +598,8 @@ void test_bulk_then_edits() {
     double const s = std::pow(10., g_rand_double(rng) * 0.6);
     double const e[3] = {s * s * .04, s * s * .25, s * s};
     random_form_with_eigenvalues(rng, e, &q[6 * i]);
+    if (i >= n - moved && i % 2 == 1)
+      for (int k = 0; k < 6; ++k) q[6 * i + k] *= 4.0;
     for (int k = 0; k < 3; ++k) c[3 * i + k] = g_rand_double_range(rng, 0, side);
   }
   for (std::size_t i = 0; i < 3 * moved; ++i) c2[i] = g_rand_double_range(rng, -side, 2 * side);
@@ -616,8 +619,10 @@ void test_bulk_then_edits() {
     }
     for (std::size_t i = n - moved; i < n; ++i)
       g_assert_true(ref.insert(i, &c[3 * i], &q[6 * i]) == Status::success);
+    std::size_t const levels = ix.levels().size();
     g_assert_true(ix.insert_many(moved, &ids[n - moved], &c[3 * (n - moved)],
                                  &q[6 * (n - moved)], 2) == Status::success);
+    g_assert_cmpuint(ix.levels().size(), >, levels);
     if (!same_state(ref, ix, n)) {
       g_test_message("%s: not the state of insert()", b ? "periodic" : "open");
       g_test_fail();
