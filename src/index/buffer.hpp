@@ -62,8 +62,11 @@ class BlockList {
   // A new block of `bytes` bytes aligned to 64, or nullptr when the
   // allocation fails.
   void *allocate(std::size_t bytes) noexcept {
-    if (bytes > std::size_t(-1) - sizeof(Header)) return nullptr;
-    void *p = buffer_alloc(sizeof(Header) + bytes, alignof(Header));
+    constexpr std::size_t a = alignof(Header);
+    if (bytes > std::size_t(-1) - sizeof(Header) - a) return nullptr;
+    // A multiple of the alignment, as aligned_alloc() requires.
+    std::size_t const total = (sizeof(Header) + bytes + a - 1) & ~(a - 1);
+    void *p = buffer_alloc(total, a);
     if (p == nullptr) return nullptr;
     head_ = new (p) Header{head_};
     return head_ + 1;
