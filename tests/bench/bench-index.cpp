@@ -25,7 +25,7 @@
 // "profile": insert_many and one all-pairs query, for a profiler;
 // "first": the first insert_many and all-pairs query of a process, as a
 // program that builds one assembly runs them, page faults on fresh memory
-// included, which the best of 3 in one process hides in part).
+// included, which the best of repeated runs in one process hides in part).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
