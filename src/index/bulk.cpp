@@ -380,13 +380,8 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
   // is_new_founder() is false from here on.
 
   // The new cells, registered in order (as reserve_for() registers them).
-  Buffer<std::size_t> first_new;  // per level: the position of its first new cell
-  if (!first_new.resize_uninitialised(nlevels)) {
-    return fail(Status::no_memory);
-  }
   for (std::size_t l = 0; l < nlevels; ++l) {
     Level<D> &lv = levels_[l];
-    first_new[l] = lv.cells.size();
     for (std::size_t p = 0; p < new_cells[l]; ++p) {
       std::uint64_t const key = new_keys[l][p].key;
       if (lv.dense.empty() && !lv.map.reserve_one()) {
@@ -428,13 +423,14 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
   for (std::size_t l = 0; ok && l < nlevels; ++l) {
     TouchedMap &map = maps[l];
     Level<D> &lv = levels_[l];
+    std::size_t const first_new = lv.cells.size() - new_cells[l];
     std::size_t const mchunks_l = (map.size() + bulk_chunk - 1) / bulk_chunk;
     for_each_chunk(nt, mchunks_l, [&](std::size_t k) {
       auto const [s0, s1] = items_of(k, map.size());
       status[k] = ChunkStatus{n, Status::success};
       for (std::size_t s = s0; s < s1; ++s) {
         if (map[s].key == TouchedMap::empty) continue;
-        if (map[s].cell >= first_new[l]) continue;  // a part of the block, below
+        if (map[s].cell >= first_new) continue;  // a part of the block, below
         Cell<D> &cell = lv.cells[map[s].cell];
         if (!cell.reserve(cell.size() + map[s].count)) {
           status[k] = ChunkStatus{s, Status::no_memory};
@@ -458,12 +454,15 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
     void *const block = blocks_.allocate(entries * sizeof(Entry<D>));
     if (block == nullptr) return fail(Status::no_memory);
     Entry<D> *part = static_cast<Entry<D> *>(block);
-    for (std::size_t l = 0; l < nlevels; ++l)
+    for (std::size_t l = 0; l < nlevels; ++l) {
+      Buffer<Cell<D>> &cells = levels_[l].cells;
+      std::size_t const first_new = cells.size() - new_cells[l];
       for (std::size_t p = 0; p < new_cells[l]; ++p) {
         std::size_t const count = new_keys[l][p].count;
-        levels_[l].cells[first_new[l] + p].borrow(part, count);
+        cells[first_new + p].borrow(part, count);
         part += count;
       }
+    }
   }
 
   // Nothing fails from here on.
