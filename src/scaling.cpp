@@ -11,21 +11,6 @@ namespace pw85::detail {
 
 namespace {
 
-// The biased exponent field of x (0 for zero and subnormals).
-inline int biased_exponent(double x) noexcept {
-  std::uint64_t bits;
-  std::memcpy(&bits, &x, sizeof bits);
-  return static_cast<int>((bits >> 52) & 0x7ff);
-}
-
-// 2^k for k in [−1022, 1023], from its bits (pow2() without the check).
-inline double normal_pow2(int k) noexcept {
-  std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
-  double x;
-  std::memcpy(&x, &bits, sizeof x);
-  return x;
-}
-
 // The smallest and largest |x| of the diagonals of q1 and q2, written out
 // as a tree of min and max: -O2 leaves loops rolled, and this runs on
 // every call.
@@ -61,23 +46,13 @@ inline void scale_n(double const *x, int k, double *y) noexcept {
 
 }  // namespace
 
-int exponent(double x) noexcept {
-  int const biased = biased_exponent(x);
-  if (biased != 0) return biased - 1022;
+int frexp_exponent(double x) noexcept {
   int e = 0;
   std::frexp(x, &e);
   return e;
 }
 
-double pow2(int k) noexcept {
-  if (k < -1022 || k > 1023) return std::ldexp(1.0, k);
-  return normal_pow2(k);
-}
-
-double times_pow2(double x, int k) noexcept {
-  // x·2^k is rounded once, as ldexp rounds it, when 2^k is a double.
-  return k >= -1022 && k <= 1023 ? x * pow2(k) : std::ldexp(x, k);
-}
+double ldexp_of(double x, int k) noexcept { return std::ldexp(x, k); }
 
 namespace {
 

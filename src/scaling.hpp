@@ -3,21 +3,56 @@
 #ifndef PW85_SRC_SCALING_HPP
 #define PW85_SRC_SCALING_HPP
 
+#include <cstdint>
+#include <cstring>
+
+#include "compiler.hpp"
 #include "sym.hpp"
 
 namespace pw85::detail {
 
+// The biased exponent field of x (0 for zero and subnormals).
+inline int biased_exponent(double x) noexcept {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return static_cast<int>((bits >> 52) & 0x7ff);
+}
+
+// 2^k for k in [−1022, 1023], from its bits (pow2() without the check).
+inline double normal_pow2(int k) noexcept {
+  std::uint64_t const bits = static_cast<std::uint64_t>(k + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+// The rare paths of the functions below (libm's frexp and ldexp), out of
+// line.
+int frexp_exponent(double x) noexcept;
+double ldexp_of(double x, int k) noexcept;
+
 // The exponent e with |x| = m·2^e, m in [0.5, 1), read from the bits (a
 // libm call per entry would cost more than the rest of the rescaling);
-// frexp for zero and subnormals. x finite.
-int exponent(double x) noexcept;
+// frexp for zero and subnormals. x finite. Inline, as the two below: the
+// search calls them at every compensated point (lambda_rho()), where a call
+// cost more than the bit operations.
+inline int exponent(double x) noexcept {
+  int const biased = biased_exponent(x);
+  return PW85_UNLIKELY(biased == 0) ? frexp_exponent(x) : biased - 1022;
+}
 
 // 2^k, built from its bits when it is a normal double; ldexp otherwise.
-double pow2(int k) noexcept;
+inline double pow2(int k) noexcept {
+  return PW85_UNLIKELY(k < -1022 || k > 1023) ? ldexp_of(1.0, k)
+                                               : normal_pow2(k);
+}
 
 // x·2^k, as std::ldexp(x, k) computes it, without a libm call when 2^k is a
-// normal double.
-double times_pow2(double x, int k) noexcept;
+// normal double (x·2^k is then rounded once, as ldexp rounds it).
+inline double times_pow2(double x, int k) noexcept {
+  return PW85_UNLIKELY(k < -1022 || k > 1023) ? ldexp_of(x, k)
+                                               : x * normal_pow2(k);
+}
 
 // r, Q1, Q2 rescaled exactly by powers of two (docs/theory.rst, eq. (3.6):
 // μ²(t·r, s·Q1, s·Q2) = (t²/s)·μ²(r, Q1, Q2), λ unchanged): r to order
