@@ -121,7 +121,8 @@ PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
     double const omega = omega_dd(lambda, p, s, s_lo);
     double slope = plain_step.domega;
     double const secant = (omega - prev_omega) / (lambda - prev_lambda);
-    if (secant > 0.0 && secant < HUGE_VAL) slope = secant;
+    bool const by_secant = secant > 0.0 && secant < HUGE_VAL;
+    if (by_secant) slope = secant;
     // The signs through copysign, not std::signbit: unoptimised, libstdc++'s
     // std::signbit(double) is emitted as a weak symbol of default
     // visibility, which the static archive must not export (check-archive).
@@ -140,8 +141,18 @@ PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
       radius = std::min(2.0 * radius, polish_max_radius);
       continue;
     }
-    lambda -= step;
-    if (std::fabs(step) <= polish_accept * size) break;
+    double const next = lambda - step;
+    // A small step ends the polish when its slope is a secant of the
+    // compensated ω, accurate to about the previous step's size; with the
+    // plain ω′, only below polish_plain_accept. The plain ω′ may be off by
+    // far more than its rounding suggests (0.2 % at λ* = 9.7e-165 with Q1
+    // nearly singular, where the plain ω had the wrong sign: a step of
+    // 1.6e-10 relative then left λ 3e-13 off; fuzz-geometry,
+    // corpus/contact-raw/regress-geo-plain-slope-*).
+    double const accept = by_secant ? polish_accept : polish_plain_accept;
+    bool const done = std::fabs(step) <= accept * size;
+    lambda = next;
+    if (done) break;
   }
   return lambda;
 }

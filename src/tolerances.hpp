@@ -130,6 +130,14 @@ constexpr double p_carry_cond = 1e7;
 // 6e-14 at λ* = 0.357 on a fuzzing input, the search's λ may be that far
 // off). At most polish_iter evaluations.
 constexpr double polish_accept = 1e-9;
+// A step taken with the plain ω′ (the polish's first) ends it only below
+// this (relative): the plain ω′ may be off by a few tenths of a percent
+// where the plain ω is off by far more than its rounding (polish.hpp), and
+// the λ it leaves is then off by that times the step, here below u/8 for a
+// slope 1 % off. Larger steps are checked by one more evaluation, whose
+// secant slope is accurate. The search's λ is usually within this of λ*:
+// then the polish costs one evaluation, as before.
+constexpr double polish_plain_accept = 0x1p-50;
 // The finish's λ is off by about δω/ω′, relative to the nearer end δω/h
 // with h = min(λ, 1 − λ)·ω′ (small at a flat maximum: f″·λ²/μ² small),
 // δω the error of ω in double from the compensated Pᵢ, which may be off

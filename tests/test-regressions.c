@@ -282,6 +282,24 @@ static void test_point_orientation(void) {
   g_assert_cmpfloat(rel3(g + PW85_GEOM_NORMAL, p->ref + 5), <=, bound);
 }
 
+/* fuzz-geometry (2026-11-29, seed 20261129): λ* = 9.7e-165, Q1 nearly
+ * singular (cond 2.6e14), cond(Q(λ*)) = 6.17 (mpmath). The plain ω′ was
+ * 0.2 % off there and the polish accepted the step taken with it: λ and
+ * x − c1 (which moves with λ here) were 3.0e-13 off, against pw85.h's
+ * 1.5·u·cond(Q(λ)); held to 8·u·cond as the other tests of the geometry
+ * (4.4e-15). The polish now checks such a step by one more evaluation. */
+static void test_geo_plain_slope(void) {
+  Pair const *p = pair("geo-plain-slope");
+  double const bound = 8 * 0x1p-53 * 6.17;
+  double g[PW85_GEOM_SIZE];
+  g_assert_cmpint(pw85_contact_geometry(p->in, p->in + 3, p->in + 9, g), ==,
+                  PW85_SUCCESS);
+  g_assert_cmpfloat(g[PW85_GEOM_MU2], ==, p->ref[0]);
+  g_assert_cmpfloat(fabs(g[PW85_GEOM_LAMBDA] / p->ref[1] - 1), <=, bound);
+  g_assert_cmpfloat(rel3(g + PW85_GEOM_POINT, p->ref + 2), <=, bound);
+  g_assert_cmpfloat(rel3(g + PW85_GEOM_NORMAL, p->ref + 5), <=, bound);
+}
+
 /* fuzz-contact-raw (seed 29; 90 inputs of one class, and fuzz-2d's
  * status-erange-overlap in 2D): forms singular far below double precision.
  * The contact function cannot evaluate f along its search (PW85_ERANGE;
@@ -365,6 +383,7 @@ int main(int argc, char **argv) {
   g_test_add_func("/pw85/regressions/point-orientation",
                   test_point_orientation);
   g_test_add_func("/pw85/regressions/newton-overflow", test_newton_overflow);
+  g_test_add_func("/pw85/regressions/geo-plain-slope", test_geo_plain_slope);
   g_test_add_data_func("/pw85/regressions/flat-least-slope",
                        "flat-least-slope", test_geo_flat);
   g_test_add_data_func("/pw85/regressions/geo-flat-21e2b386",
