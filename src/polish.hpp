@@ -92,7 +92,8 @@ PW85_INLINE double omega_dd(double lambda, Problem<D> const &p, double *s,
 // Newton steps on ω in double-double (omega_dd(); its root is λ*, the
 // maximiser of f: docs/theory.rst): the slope only sets the rate, the
 // compensated ω sets the root. The slope is the plain ω′ (eq. (5.7)) at
-// the first point, then the secant through the last two compensated ω
+// the first point (the plain point is evaluated only then, and where no
+// secant serves), then the secant through the last two compensated ω
 // where it is positive and finite: where Q(λ) is so ill-conditioned that
 // the plain ω′ is off by a few percent, Newton with it converges only
 // linearly, and a step of polish_accept left λ 2e-11 off (fuzz-geometry,
@@ -111,18 +112,20 @@ PW85_INLINE double polish(Problem<D> const &p, double lambda0) noexcept {
   double prev_lambda = NAN, prev_omega = NAN;
   double radius = polish_max_step;
   for (int k = 0; k < polish_iter; ++k) {
-    PlainPoint<D> pt;
-    NewtonStep plain_step;
     double s[D], s_lo[D];
-    if (!evaluate_plain<Fast>(lambda, p, &pt) ||
-        !newton_step(pt, &plain_step) ||
-        !solve_accurately(p, lambda, s, s_lo))
-      break;
+    if (!solve_accurately(p, lambda, s, s_lo)) break;
     double const omega = omega_dd(lambda, p, s, s_lo);
-    double slope = plain_step.domega;
-    double const secant = (omega - prev_omega) / (lambda - prev_lambda);
-    bool const by_secant = secant > 0.0 && secant < HUGE_VAL;
-    if (by_secant) slope = secant;
+    double slope = (omega - prev_omega) / (lambda - prev_lambda);
+    bool const by_secant = slope > 0.0 && slope < HUGE_VAL;
+    if (!by_secant) {
+      // The plain ω′ (eq. (5.7)), evaluated only where no secant serves.
+      PlainPoint<D> pt;
+      NewtonStep plain_step;
+      if (!evaluate_plain<Fast>(lambda, p, &pt) ||
+          !newton_step(pt, &plain_step))
+        break;
+      slope = plain_step.domega;
+    }
     // The signs through copysign, not std::signbit: unoptimised, libstdc++'s
     // std::signbit(double) is emitted as a weak symbol of default
     // visibility, which the static archive must not export (check-archive).
