@@ -438,11 +438,12 @@ PAIRS = {
         ["0x1.74c0ce4c8e922p-82", "-0x1.2f856cf297ea4p-80", "0x1.27ae84574b024p-82", "0x1.ee4baa875c1c3p-79", "-0x1.e1875736b1001p-81", "0x1.d5176e5a03c93p-83"],
         ["0x1.b14b3f22fba36p+34", "0x1.82ff451855788p+33", "-0x1.614fcc3344732p+33", "0x1.bad6efd25c6ffp+32", "-0x1.8d51b1820baf4p+32", "0x1.64de5030fef29p+32"]),
     # fuzz-geometry (campaign of 2026-11-29, seed 20261129): λ* = 9.7e-165
-    # with Q1 nearly singular (every entry within 5e-5 of 2^-927·1.38) and
-    # cond(Q(λ*)) = 16. The plain ω had the wrong sign at the search's λ,
-    # and its ω′ was 0.2 % off; the polish accepted its first step (1.6e-10
-    # relative) with that slope, leaving λ, hence x − c1 (which moves with
-    # λ here), 3e-13 off: 2700·u where pw85.h states 1.5·u·cond(Q(λ)).
+    # with Q1 nearly singular (every entry within 5e-5 of 2^-927·1.38,
+    # cond 2.6e14) and cond(Q(λ*)) = 6.2 (mpmath). The plain ω had the wrong
+    # sign at the search's λ, and its ω′ was 0.2 % off; the polish accepted
+    # its first step (1.6e-10 relative) with that slope, leaving λ, hence
+    # x − c1 (which moves with λ here), 3e-13 off: 440·u·cond(Q(λ)) where
+    # pw85.h states 1.5·u·cond(Q(λ)).
     "geo-plain-slope": (
         ["-0x1p-399", "-0x1.1fe7fp+280", "0x1.f4747474742cbp+124"],
         ["0x1.6064747474747p-927", "0x1.6060606060606p-927", "0x1.6060606060606p-927", "0x1.606060606065bp-927", "0x1.6060606060606p-927", "0x1.606060606064p-927"],
