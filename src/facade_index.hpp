@@ -25,6 +25,8 @@ using Index = pw85::detail::spatial::Index<D>;
 template <int D>
 using PairHit = pw85::detail::spatial::PairHit<D>;
 template <int D>
+using OverlapPair = pw85::detail::spatial::OverlapPair<D>;
+template <int D>
 using Hit = pw85::detail::spatial::Hit<D>;
 template <class T>
 using Buffer = pw85::detail::Buffer<T>;
@@ -37,9 +39,9 @@ inline bool outputs_ok(std::size_t capacity, void const *a, void const *b,
 
 // The ids and shifts of the first n pairs: ids[2k], ids[2k + 1] and
 // shifts[D·k + a].
-template <int D>
-void copy_pairs(Buffer<PairHit<D>> const &pairs, std::size_t n,
-                std::size_t *ids, int *shifts) noexcept {
+template <int D, class H>
+void copy_pairs(Buffer<H> const &pairs, std::size_t n, std::size_t *ids,
+                int *shifts) noexcept {
   for (std::size_t k = 0; k < n; ++k) {
     ids[2 * k] = pairs[k].i;
     ids[2 * k + 1] = pairs[k].j;
@@ -167,8 +169,8 @@ int overlapping_pairs(Handle const *index, int threads, std::size_t capacity,
   if (index == nullptr || count == nullptr ||
       !outputs_ok(capacity, ids, shifts, results))
     return PW85_EFAULT;
-  Buffer<PairHit<D>> pairs;
-  Status const s = index->index.pairs(false, 1.0, threads, &pairs, nullptr);
+  Buffer<OverlapPair<D>> pairs;
+  Status const s = index->index.overlapping_pairs(threads, &pairs, nullptr);
   if (s != Status::success) return to_code(s);
   std::size_t const n = std::min(capacity, pairs.size());
   copy_pairs<D>(pairs, n, ids, shifts);

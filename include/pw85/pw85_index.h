@@ -58,21 +58,22 @@
  * bytes per cell of a grid of the box (cells 2 to 4 times as wide as the
  * largest √Q_kk of those ellipsoids), at most 16 MiB each (a larger grid
  * uses a hash table instead). The all-pairs queries allocate, for the time
- * of the call, about 150 bytes per ellipsoid and 80 per pair reported
- * (large blocks are marked for transparent huge pages on Linux, a hint
- * that changes nothing but speed). Calls that modify
- * an index (insert, update, remove, destroy) need exclusive access to it;
- * queries only read it and may run concurrently with each other from
- * several threads. The all-pairs queries, pw85_index_energy(),
- * pw85_index_overlap_any_batch() and pw85_index_insert_many_threads()
- * start up to `threads` OpenMP threads when libpw85 was built with OpenMP
- * (see pw85_index_openmp()), and run serially otherwise: no more than
- * their work is worth (the all-pairs queries: one per 256 ellipsoids;
- * overlap_any_batch: one per 256 candidates; insert_many_threads: one per
- * 4096 items), and never more than 1024, a larger count running as 1024
- * (libgomp takes the start data of its threads from the caller's stack);
- * their output (the index they leave, for the last) is the same, bit for
- * bit, for any number of threads. No other function starts a thread.
+ * of the call, about 150 bytes per ellipsoid, and per pair reported 48
+ * (overlapping pairs) or 80 (pairs within); large blocks are marked for
+ * transparent huge pages on Linux, a hint that changes nothing but speed.
+ * Calls that modify an index (insert, update, remove, destroy) need
+ * exclusive access to it; queries only read it and may run concurrently
+ * with each other from several threads. The all-pairs queries,
+ * pw85_index_energy(), pw85_index_overlap_any_batch() and
+ * pw85_index_insert_many_threads() start up to `threads` OpenMP threads
+ * when libpw85 was built with OpenMP (see pw85_index_openmp()), and run
+ * serially otherwise: no more than their work is worth (the all-pairs
+ * queries: one per 256 ellipsoids; overlap_any_batch: one per 256
+ * candidates; insert_many_threads: one per 4096 items), and never more
+ * than 1024, a larger count running as 1024 (libgomp takes the start
+ * data of its threads from the caller's stack); their output (the index
+ * they leave, for the last) is the same, bit for bit, for any number of
+ * threads. No other function starts a thread.
  *
  * PW85_EINVAL, the status of a finite argument outside its domain, has
  * these causes, each documented with its function: a box side not > 0 or

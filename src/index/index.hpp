@@ -151,6 +151,19 @@ static_assert(sizeof(PairHit<3>) == 40 && sizeof(PairHit<2>) == 40,
               "pw85_index_energy()'s and pw85_2d_index_energy()'s memory "
               "figures");
 
+// A result of the overlapping-pairs query alone, (i, j, n) and the
+// result: PairHit without μ² and λ, which that query does not compute.
+// Its pairs are held twice during the query (the threads' lists and the
+// merged output): 48 bytes a pair in 3D instead of 80.
+template <int D>
+struct OverlapPair {
+  std::uint32_t i, j;
+  std::int32_t shift[D];
+  int result;
+};
+static_assert(sizeof(OverlapPair<3>) == 24 && sizeof(OverlapPair<2>) == 20,
+              "pw85_index.h's and pw85_2d.h's memory figures");
+
 // The index in D = 2 or 3 dimensions: its members are defined in
 // index.cpp, queries.cpp, pairs.cpp and bulk.cpp, and each is
 // instantiated there for both.
@@ -191,6 +204,9 @@ class Index {
   // receives the number of pairs that passed the broad phase.
   Status pairs(bool within, double t, int threads, Buffer<PairHit<D>> *out,
                std::size_t *candidates) const noexcept;
+  // The pairs of pairs(false, 1, ...) in the smaller record.
+  Status overlapping_pairs(int threads, Buffer<OverlapPair<D>> *out,
+                           std::size_t *candidates) const noexcept;
 
   // For pairs.cpp.
   double const *box() const noexcept { return box_; }
@@ -202,6 +218,10 @@ class Index {
   double coordinate_bound() const noexcept { return cmax_; }
 
  private:
+  // pairs() and overlapping_pairs(), for either record (pairs.cpp).
+  template <class H>
+  Status pairs_into(bool within, double t, int threads, Buffer<H> *out,
+                    std::size_t *candidates) const noexcept;
   Status check_ellipsoid(double const *c, double const *q) const noexcept;
   Status check_centre(double const *c) const noexcept;
   // The side rule of a periodic box: 2·h_k·(1 + broad_margin) < L_k.
@@ -287,6 +307,7 @@ using Cell = spatial::Cell<3>;
 using Level = spatial::Level<3>;
 using Hit = spatial::Hit<3>;
 using PairHit = spatial::PairHit<3>;
+using OverlapPair = spatial::OverlapPair<3>;
 using ImageVector = spatial::ImageVector<3>;
 
 }  // namespace pw85::detail

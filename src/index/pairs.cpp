@@ -18,6 +18,7 @@
 // not depend on which end found it. The broad phase: broad.hpp.
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "batch.hpp"
 #include "broad.hpp"
@@ -317,59 +318,69 @@ bool shift_positive(std::int32_t const *n) noexcept {
   return false;
 }
 
-template <int D>
-bool pair_less(PairHit<D> const &a, PairHit<D> const &b) noexcept {
+// The output's order, (i, j, shift) lexicographic, on either record.
+template <class H>
+bool pair_less(H const &a, H const &b) noexcept {
   if (a.i != b.i) return a.i < b.i;
   if (a.j != b.j) return a.j < b.j;
-  for (int k = 0; k < D; ++k)
+  for (std::size_t k = 0; k < sizeof a.shift / sizeof a.shift[0]; ++k)
     if (a.shift[k] != b.shift[k]) return a.shift[k] < b.shift[k];
   return false;
 }
 
-// A list of pairs in blocks that are never moved: the first of 4096
-// pairs, each next one twice as large up to 2^18 pairs (10 MB). A growing
-// array would copy its content at each doubling, and the copies into fresh
-// pages cost 8% of the all-pairs query at N = 1e6 (perf).
-template <int D>
+// The record of pair (i, j), its other fields zero (a failure's place).
+template <class H>
+H pair_at(std::uint32_t i, std::uint32_t j) noexcept {
+  H h{};
+  h.i = i, h.j = j;
+  return h;
+}
+
+// A list of pairs (records H) in blocks that are never moved: the first
+// of 4096 pairs, each next one twice as large up to 12 MiB (large enough
+// for huge pages, buffer.hpp). A growing array would copy its content at
+// each doubling, and the copies into fresh pages cost 8% of the all-pairs
+// query at N = 1e6 (perf).
+template <class H>
 class PairList {
  public:
   std::size_t size() const noexcept { return size_; }
   std::size_t blocks() const noexcept { return blocks_.size(); }
-  Buffer<PairHit<D>> const &block(std::size_t b) const noexcept {
-    return blocks_[b];
-  }
-  [[nodiscard]] bool push_back(PairHit<D> const &hit) noexcept {
+  Buffer<H> const &block(std::size_t b) const noexcept { return blocks_[b]; }
+  [[nodiscard]] bool push_back(H const &hit) noexcept {
     if (blocks_.empty() || blocks_.back().size() == blocks_.back().capacity()) {
+      constexpr std::size_t most = (std::size_t(12) << 20) / sizeof(H);
       std::size_t const n =
           blocks_.empty() ? 4096
-                          : std::min<std::size_t>(2 * blocks_.back().capacity(),
-                                                  std::size_t(1) << 18);
-      Buffer<PairHit<D>> block;
+                          : std::min(2 * blocks_.back().capacity(), most);
+      Buffer<H> block;
       if (!blocks_.grow_for(1) || !block.reserve(n)) return false;
-      blocks_.push_back_reserved(static_cast<Buffer<PairHit<D>> &&>(block));
+      blocks_.push_back_reserved(static_cast<Buffer<H> &&>(block));
     }
-    PairHit<D> copy = hit;
-    blocks_.back().push_back_reserved(static_cast<PairHit<D> &&>(copy));
+    H copy = hit;
+    blocks_.back().push_back_reserved(static_cast<H &&>(copy));
     ++size_;
     return true;
   }
 
  private:
-  Buffer<Buffer<PairHit<D>>> blocks_;
+  Buffer<Buffer<H>> blocks_;
   std::size_t size_ = 0;
 };
 
 // One thread's share: its pairs, its count of broad-phase candidates, and
 // the least pair (in the output order) on which the narrow phase failed.
-template <int D>
+template <class H>
 struct Share {
-  PairList<D> pairs;
+  PairList<H> pairs;
   std::size_t candidates = 0;
   Status status = Status::success;
-  PairHit<D> failed_at{};
+  H failed_at{};
 };
 
-template <int D>
+// The search, with results of type H: PairHit<D>, or OverlapPair<D> in
+// overlap mode only.
+template <int D, class H>
 class Search {
  public:
   Search(Index<D> const &index, Snapshot<D> const &s, bool within, double t)
@@ -395,14 +406,14 @@ class Search {
   }
 
   // The pairs found from entry a (an index into the snapshot).
-  void from(std::size_t a, Share<D> *share) const noexcept {
+  void from(std::size_t a, Share<H> *share) const noexcept {
     for (std::size_t g = 0; g < s_.grids.size(); ++g) {
       if (!grid(s_.grids[g], a, share)) return;
     }
   }
 
  private:
-  void fail(Share<D> *share, Status status, PairHit<D> const &at) const
+  void fail(Share<H> *share, Status status, H const &at) const
       noexcept {
     if (share->status == Status::success ||
         (share->status != Status::no_memory && pair_less(at, share->failed_at))) {
@@ -418,7 +429,7 @@ class Search {
   // line test, the narrow phase on the exact r = (c_j + n∘L) − c_i), as a
   // brute force over (i, j, n) would. False stops (no memory).
   bool test(std::size_t a, std::size_t b, std::int32_t const *shift,
-            Share<D> *share) const noexcept {
+            Share<H> *share) const noexcept {
     std::int32_t n[D];
     for (int k = 0; k < D; ++k) n[k] = shift[k];
     if (s_.hot[b].id < s_.hot[a].id) {
@@ -437,10 +448,8 @@ class Search {
     ++share->candidates;
     ImageVector<D> v;
     image_vector_exact(x.c, y.c, n, box_, &v);
-    PairHit<D> hit;
-    hit.i = x.id, hit.j = y.id;
+    H hit = pair_at<H>(x.id, y.id);
     for (int k = 0; k < D; ++k) hit.shift[k] = n[k];
-    hit.result = 0, hit.mu2 = hit.lambda = 0.0;
     if (!narrow(v, q1, q2, &hit, share)) return true;
     if (!share->pairs.push_back(hit)) {
       share->status = Status::no_memory;
@@ -452,19 +461,21 @@ class Search {
   // The narrow phase of test(): true when the pair is reported (hit
   // filled); a failure is recorded in the share.
   bool narrow(ImageVector<D> const &v, double const *q1, double const *q2,
-              PairHit<D> *hit, Share<D> *share) const noexcept {
-    if (within_) {
-      double out[2] = {NAN, NAN};
-      Status const st = image_contact(v, q1, q2, out);
-      if (st == Status::out_of_range && out[0] == HUGE_VAL) return false;
-      if (st != Status::success) {
-        fail(share, st, *hit);
-        return false;
+              H *hit, Share<H> *share) const noexcept {
+    if constexpr (std::is_same_v<H, PairHit<D>>) {
+      if (within_) {
+        double out[2] = {NAN, NAN};
+        Status const st = image_contact(v, q1, q2, out);
+        if (st == Status::out_of_range && out[0] == HUGE_VAL) return false;
+        if (st != Status::success) {
+          fail(share, st, *hit);
+          return false;
+        }
+        if (!(out[0] < t_)) return false;
+        hit->mu2 = out[0];
+        hit->lambda = out[1];
+        return true;
       }
-      if (!(out[0] < t_)) return false;
-      hit->mu2 = out[0];
-      hit->lambda = out[1];
-      return true;
     }
     int res = 1;
     Status const st = image_overlap(v, q1, q2, &res);
@@ -480,7 +491,7 @@ class Search {
   // it is kept from the one earlier in the snapshot, b > a, or, for an
   // entry's own image (b = a), with a positive shift (the pair (a, a, −n)
   // is the same as (a, a, n)).
-  bool grid(Grid<D> const &g, std::size_t a, Share<D> *share) const noexcept {
+  bool grid(Grid<D> const &g, std::size_t a, Share<H> *share) const noexcept {
     Hot<D> const &x = s_.hot[a];
     Reach<D> const rc = reach_of<D>(x.c, x.h, g.hmax, sqrt_t_, cmax_, box_);
     double first[D], last[D], lo[D], hi[D];
@@ -501,14 +512,14 @@ class Search {
   // x are those within the pair's own bound plus the slack, a superset of
   // those that the box test keeps.
   bool every_entry(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
-                   Share<D> *share) const noexcept {
+                   Share<H> *share) const noexcept {
     Hot<D> const &x = s_.hot[a];
     std::int64_t lo[D], hi[D];
     for (std::size_t b = g.first; b < g.first + g.count; ++b) {
       Hot<D> const &y = s_.hot[b];
       if (y.id >= x.id &&
           !shift_range<D>(periodic_, x.c, rc.reach, rc.slack, y.c, box_, lo, hi)) {
-        fail(share, Status::out_of_range, PairHit<D>{x.id, y.id, {}, 0, 0, 0});
+        fail(share, Status::out_of_range, pair_at<H>(x.id, y.id));
         return true;
       }
     }
@@ -519,7 +530,7 @@ class Search {
       if (!shift_range<D>(periodic_, x.c, bound, rc.slack, y.c, box_, lo, hi)) {
         // only if y.id < x.id (see above)
         std::uint32_t const i = std::min(x.id, y.id), j = std::max(x.id, y.id);
-        fail(share, Status::out_of_range, PairHit<D>{i, j, {}, 0, 0, 0});
+        fail(share, Status::out_of_range, pair_at<H>(i, j));
         return true;
       }
       if (!for_each_shift<D>(lo, hi, [&](std::int32_t const *shift) {
@@ -538,7 +549,7 @@ class Search {
   // test in the output's orientation discards too (both slacks bound the
   // rounding of r̂, formed from either end: margins.hpp).
   bool runs(Grid<D> const &g, std::size_t a, Reach<D> const &rc,
-            double const *lo, double const *hi, Share<D> *share) const
+            double const *lo, double const *hi, Share<H> *share) const
       noexcept {
     constexpr int z = D - 1;
     std::int64_t const lo_z = std::int64_t(lo[z]), hi_z = std::int64_t(hi[z]);
@@ -556,7 +567,7 @@ class Search {
     std::size_t a;
     Reach<D> const &rc;
     double const *lo, *hi;
-    Share<D> *share;
+    Share<H> *share;
     std::int64_t lo_z, hi_z, copy_lo, copy_hi;
   };
 
@@ -624,9 +635,9 @@ constexpr std::size_t merge_ahead = 8;
 // The pairs of every share into out, sorted by (i, j, shift); ids: the
 // id table's size, total: the number of pairs. False when an allocation
 // fails.
-template <int D>
-bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
-           std::size_t total, Buffer<PairHit<D>> *out) noexcept {
+template <class H>
+bool merge(Buffer<Share<H>> const &shares, int threads, std::size_t ids,
+           std::size_t total, Buffer<H> *out) noexcept {
   // Merge: a counting sort by i, then each i's pairs sorted by (j, shift).
   // The keys (i, j, n) are distinct, so the order within an i before its
   // sort does not matter: the shares are scattered concurrently (slots
@@ -637,7 +648,7 @@ bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
   int const nt = threads_for(threads, total);
   auto count_share = [&](std::size_t k, bool atomic) {
     for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit<D>> const &p = shares[k].pairs.block(b);
+      Buffer<H> const &p = shares[k].pairs.block(b);
       for (std::size_t q = 0; q < p.size(); ++q) {
         if (q + merge_ahead < p.size())
           PW85_PREFETCH(&first[p[q + merge_ahead].i + 1]);
@@ -651,7 +662,7 @@ bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
   };
   auto scatter_share = [&](std::size_t k, bool atomic) {
     for (std::size_t b = 0; b < shares[k].pairs.blocks(); ++b) {
-      Buffer<PairHit<D>> const &p = shares[k].pairs.block(b);
+      Buffer<H> const &p = shares[k].pairs.block(b);
       for (std::size_t q = 0; q < p.size(); ++q) {
         if (q + 2 * merge_ahead < p.size())
           PW85_PREFETCH(&first[p[q + 2 * merge_ahead].i]);
@@ -671,7 +682,7 @@ bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
     // first[i] is now the end of i's pairs, first[i − 1] their start.
     std::size_t const begin = i == 0 ? 0 : first[i - 1], end = first[i];
     if (end - begin > 1)
-      std::sort(out->data() + begin, out->data() + end, pair_less<D>);
+      std::sort(out->data() + begin, out->data() + end, pair_less<H>);
   };
   if (nt <= 1) {
     for (std::size_t k = 0; k < shares.size(); ++k) count_share(k, false);
@@ -701,9 +712,9 @@ bool merge(Buffer<Share<D>> const &shares, int threads, std::size_t ids,
 }  // namespace
 
 template <int D>
-Status Index<D>::pairs(bool within, double t, int threads,
-                       Buffer<PairHit<D>> *out,
-                       std::size_t *candidates) const noexcept {
+template <class H>
+Status Index<D>::pairs_into(bool within, double t, int threads, Buffer<H> *out,
+                            std::size_t *candidates) const noexcept {
   if (within) {
     if (!std::isfinite(t)) return Status::not_finite;
     if (!(t > 0.0)) return Status::invalid_argument;
@@ -719,10 +730,10 @@ Status Index<D>::pairs(bool within, double t, int threads,
   std::size_t const chunks = (n + chunk - 1) / chunk;
   // A share per thread: no more threads than chunks, nor than max_threads.
   threads = team_size(threads, chunks);
-  Buffer<Share<D>> shares;
+  Buffer<Share<H>> shares;
   if (!shares.resize(std::size_t(threads))) return Status::no_memory;
-  Search<D> const search(*this, snap, within, within ? t : 1.0);
-  auto run = [&](std::size_t k, Share<D> *share) {
+  Search<D, H> const search(*this, snap, within, within ? t : 1.0);
+  auto run = [&](std::size_t k, Share<H> *share) {
     if (share->status == Status::no_memory) return;
     std::size_t const end = std::min(n, (k + 1) * chunk);
     for (std::size_t a = k * chunk; a < end; ++a) search.from(a, share);
@@ -734,7 +745,7 @@ Status Index<D>::pairs(bool within, double t, int threads,
     long long const nchunks = static_cast<long long>(chunks);
 #pragma omp parallel num_threads(threads)
     {
-      Share<D> *share = &shares[std::size_t(omp_get_thread_num())];
+      Share<H> *share = &shares[std::size_t(omp_get_thread_num())];
 #pragma omp for schedule(dynamic, 1)
       for (long long k = 0; k < nchunks; ++k) run(std::size_t(k), share);
     }
@@ -743,15 +754,15 @@ Status Index<D>::pairs(bool within, double t, int threads,
 
   // The least failure in the output order, whatever the schedule.
   Status status = Status::success;
-  PairHit<D> at{};
+  H at{};
   std::size_t total = 0, found = 0;
   for (std::size_t k = 0; k < shares.size(); ++k) {
-    Share<D> const &sh = shares[k];
+    Share<H> const &sh = shares[k];
     total += sh.pairs.size();
     found += sh.candidates;
     if (sh.status == Status::no_memory) return Status::no_memory;
     if (sh.status != Status::success &&
-        (status == Status::success || pair_less<D>(sh.failed_at, at))) {
+        (status == Status::success || pair_less<H>(sh.failed_at, at))) {
       status = sh.status;
       at = sh.failed_at;
     }
@@ -765,9 +776,26 @@ Status Index<D>::pairs(bool within, double t, int threads,
   return Status::success;
 }
 
+template <int D>
+Status Index<D>::pairs(bool within, double t, int threads,
+                       Buffer<PairHit<D>> *out,
+                       std::size_t *candidates) const noexcept {
+  return pairs_into(within, t, threads, out, candidates);
+}
+
+template <int D>
+Status Index<D>::overlapping_pairs(int threads, Buffer<OverlapPair<D>> *out,
+                                   std::size_t *candidates) const noexcept {
+  return pairs_into(false, 1.0, threads, out, candidates);
+}
+
 template Status Index<2>::pairs(bool, double, int, Buffer<PairHit<2>> *,
                                 std::size_t *) const noexcept;
 template Status Index<3>::pairs(bool, double, int, Buffer<PairHit<3>> *,
                                 std::size_t *) const noexcept;
+template Status Index<2>::overlapping_pairs(int, Buffer<OverlapPair<2>> *,
+                                            std::size_t *) const noexcept;
+template Status Index<3>::overlapping_pairs(int, Buffer<OverlapPair<3>> *,
+                                            std::size_t *) const noexcept;
 
 }  // namespace pw85::detail::spatial

@@ -536,8 +536,8 @@ Status Packer<D>::check(Config<D> const &cf, bool *ok) noexcept {
   for (std::size_t i = 0; i < n_; ++i) ids[i] = i;
   Status s = idx.insert_many(n_, ids.data(), cf.c.data(), cf.q.data());
   if (s != Status::success) return s;
-  Buffer<spatial::PairHit<D>> hits;
-  s = idx.pairs(false, 1.0, prm_.threads, &hits, nullptr);
+  Buffer<spatial::OverlapPair<D>> hits;
+  s = idx.overlapping_pairs(prm_.threads, &hits, nullptr);
   if (s != Status::success) return s;
   *ok = hits.empty();
   return Status::success;

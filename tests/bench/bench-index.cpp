@@ -143,9 +143,9 @@ Run all_pairs(pw85::detail::Index const &index, int threads, int reps,
               std::set<PairKey> *keys = nullptr) {
   Run best{1e300, 0, 0};
   for (int r = 0; r < reps; ++r) {
-    pw85::detail::Buffer<pw85::detail::PairHit> out;
+    pw85::detail::Buffer<pw85::detail::OverlapPair> out;
     auto const t0 = Clock::now();
-    pw85::detail::Status const s = index.pairs(false, 1., threads, &out, &best.candidates);
+    pw85::detail::Status const s = index.overlapping_pairs(threads, &out, &best.candidates);
     double const t = seconds_since(t0);
     if (s != pw85::detail::Status::success) {
       std::printf("pairs failed\n");
