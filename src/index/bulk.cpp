@@ -15,10 +15,11 @@
 //   (a serial pass over one int per item: about 1 ms per 1e6 items);
 // - a new cell per cell that no item finds, in the order of the first item
 //   in each: the cells the call touches are keys of a temporary hash map
-//   per level (lock-free insertion, atomic minimum of the first item and
-//   count of the items), and a new cell's position is the level's count of
-//   cells plus the rank of its first item among the first items of new
-//   cells (per chunk of items, then a prefix sum);
+//   per level, in tables that one thread each fills in the order of the
+//   items (a key's table set by its hash), with the first item and count
+//   of each cell, and a new cell's position is the level's count of cells
+//   plus the rank of its first item among the first items of new cells
+//   (per chunk of items, then a prefix sum);
 // - the entries of a cell in the order of the items: the items are
 //   scattered to their cell's run of a list of positions (atomic cursors),
 //   each run is sorted, and each cell is then filled from its run by one
@@ -87,55 +88,69 @@ struct Touched {
   std::uint32_t start;
 };
 
-// An insert-only hash map of the cells a level's items touch, filled
-// concurrently: open addressing, linear probing, at most half full.
+// An insert-only hash map of the cells a level's items touch: open
+// addressing, linear probing, in `parts` tables, each at most half full.
+// A key belongs to the table of its hash's top bits (part_of()), and each
+// table is filled by one thread, in the order of the items: no atomic
+// operation, and no table written by two threads. (With a single table
+// filled concurrently, an atomic count and minimum per item, pass 3 took
+// longer on 2 threads than on 1, 118 to 135 against 96 ms for 10^6 items,
+// the cache lines of its slots passing from core to core; 57 to 67 ms
+// this way on 2 threads; bench-index first, timers not committed.)
 class TouchedMap {
  public:
   static constexpr std::uint64_t empty = ~std::uint64_t{0};
 
-  // Room for `keys` keys; false when the allocation fails.
-  bool init(std::size_t keys) noexcept {
-    std::size_t n = 16;
-    while (n < 2 * keys) n *= 2;
-    if (!slots_.resize_uninitialised(n)) return false;
-    for (std::size_t i = 0; i < n; ++i) slots_[i] = Touched{empty, none, 0, none, 0};
+  // parts tables (≥ 1), table p with room for keys[p] keys; false when an
+  // allocation fails.
+  bool init(std::size_t parts, std::size_t const *keys) noexcept {
+    if (!start_.resize_uninitialised(parts + 1)) return false;
+    start_[0] = 0;
+    for (std::size_t p = 0; p < parts; ++p) {
+      std::size_t n = keys[p] == 0 ? 0 : 16;
+      while (n < 2 * keys[p]) n *= 2;
+      start_[p + 1] = start_[p] + n;
+    }
+    if (!slots_.resize_uninitialised(start_[parts])) return false;
+    for (std::size_t i = 0; i < slots_.size(); ++i)
+      slots_[i] = Touched{empty, none, 0, none, 0};
     return true;
   }
   std::size_t size() const noexcept { return slots_.size(); }
   Touched &operator[](std::size_t i) noexcept { return slots_[i]; }
 
-  void prefetch(std::uint64_t key) const noexcept {
-    PW85_PREFETCH(slots_.data() + (hash(key) & (slots_.size() - 1)));
+  void prefetch(std::size_t p, std::uint64_t key) const noexcept {
+    std::size_t const base = start_[p], mask = start_[p + 1] - base - 1;
+    PW85_PREFETCH(slots_.data() + base + (hash(key) & mask));
   }
-  // Adds item i to the cell of that key (safe on several threads at once);
-  // returns the cell's slot.
-  std::uint32_t add(std::uint64_t key, std::uint32_t i) noexcept {
-    std::size_t const mask = slots_.size() - 1;
-    std::size_t s = hash(key) & mask;
-    for (;; s = (s + 1) & mask) {
-      std::uint64_t k = __atomic_load_n(&slots_[s].key, __ATOMIC_RELAXED);
-      if (k == empty) {
-        std::uint64_t expected = empty;
-        if (__atomic_compare_exchange_n(&slots_[s].key, &expected, key, false,
-                                        __ATOMIC_RELAXED, __ATOMIC_RELAXED))
-          k = key;
-        else
-          k = expected;
-      }
-      if (k == key) {
-        atomic_min(&slots_[s].first, i);
-        __atomic_fetch_add(&slots_[s].count, 1u, __ATOMIC_RELAXED);
-        return static_cast<std::uint32_t>(s);
+  // The table of a key, among `parts`.
+  static std::size_t part_of(std::uint64_t key, std::size_t parts) noexcept {
+    return static_cast<std::size_t>((((key * fibonacci) >> 44) * parts) >> 20);
+  }
+  // Adds item i to the cell of that key, in table p = part_of(key) (by
+  // the thread that fills table p); returns the cell's slot.
+  std::uint32_t add(std::size_t p, std::uint64_t key, std::uint32_t i) noexcept {
+    std::size_t const base = start_[p], mask = start_[p + 1] - base - 1;
+    for (std::size_t s = hash(key) & mask;; s = (s + 1) & mask) {
+      Touched &t = slots_[base + s];
+      if (t.key == empty) t.key = key, t.first = i;
+      if (t.key == key) {
+        ++t.count;
+        return static_cast<std::uint32_t>(base + s);
       }
     }
   }
 
  private:
-  // Fibonacci hashing, as CellMap's.
+  static constexpr std::uint64_t fibonacci = 0x9E3779B97F4A7C15ull;
+  // Fibonacci hashing, as CellMap's: bits 20 and up of the product (the
+  // table's slot; part_of() maps bits 44 to 63 onto [0, parts), parts ≤
+  // 1024, without a division; tables of 2^24 slots or more see them too).
   static std::size_t hash(std::uint64_t key) noexcept {
-    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20);
+    return static_cast<std::size_t>((key * fibonacci) >> 20);
   }
   Buffer<Touched> slots_;
+  Buffer<std::size_t> start_;  // table p: slots [start_[p], start_[p + 1])
 };
 
 // A cell that the call creates: its key and the count of its items.
@@ -274,39 +289,66 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
   }
   for (std::size_t i = 0; i < n; ++i) ++items_in[std::size_t(place[i])];
 
-  // Pass 3: the cells touched, per level, with their first item and count.
+  // Pass 3: the cells touched, per level, with their first item and count:
+  // the items' keys (in chunks), the number of items of each level in each
+  // table of its map (a serial pass, which sizes the tables), then each
+  // table filled by one thread. Which thread fills which table changes no
+  // result: the passes below read the maps per slot or per item, and the
+  // index they build does not depend on the slots' order.
+  std::size_t const parts = std::size_t(nt);
   Buffer<TouchedMap> maps;
   Buffer<std::uint32_t> slot_of;  // per item: its cell's slot in its map
-  bool ok = maps.resize(nlevels) && slot_of.resize_uninitialised(n);
-  for (std::size_t l = 0; ok && l < nlevels; ++l) {
-    if (items_in[l] == 0) continue;
-    std::size_t keys = items_in[l];
-    Level<D> const &lv = levels_[l];
-    if (periodic_) {
-      double cells = double(lv.n[0]);
-      for (int k = 1; k < D; ++k) cells *= double(lv.n[k]);
-      keys = std::size_t(std::min(double(keys), cells));
-    }
-    ok = maps[l].init(keys);
-  }
+  Buffer<std::uint64_t> key_of;   // per item: its cell's key
+  Buffer<std::size_t> in_part;    // per level and table: items
+  bool ok = maps.resize(nlevels) && slot_of.resize_uninitialised(n) &&
+            key_of.resize_uninitialised(n) && in_part.resize(nlevels * parts);
   if (!ok) {
     return fail(Status::no_memory);
   }
   for_each_chunk(nt, chunks, [&](std::size_t k) {
     auto const [i0, i1] = items_of(k, n);
-    std::uint64_t keys[bulk_chunk];  // the chunk's keys, then their slots prefetched
     for (std::size_t i = i0; i < i1; ++i) {
       std::int32_t w[D];
       std::uint64_t u[D];
       wraps(c + D * i, w);
       cell_coords(levels_[std::size_t(place[i])], c + D * i, w, u);
-      keys[i - i0] = Level<D>::pack(u);
+      key_of[i] = Level<D>::pack(u);
     }
-    for (std::size_t i = i0; i < i1; ++i) {
-      if (i + prefetch_ahead < i1)
-        maps[std::size_t(place[i + prefetch_ahead])].prefetch(keys[i + prefetch_ahead - i0]);
-      slot_of[i] = maps[std::size_t(place[i])].add(keys[i - i0], std::uint32_t(i));
+  });
+  for (std::size_t i = 0; i < n; ++i)
+    ++in_part[std::size_t(place[i]) * parts + TouchedMap::part_of(key_of[i], parts)];
+  for (std::size_t l = 0; ok && l < nlevels; ++l) {
+    if (items_in[l] == 0) continue;
+    // No more keys than cells in a periodic box.
+    Level<D> const &lv = levels_[l];
+    double cells = double(lv.n[0]);
+    for (int k = 1; k < D; ++k) cells *= double(lv.n[k]);
+    for (std::size_t p = 0; periodic_ && p < parts; ++p)
+      in_part[l * parts + p] = std::size_t(std::min(double(in_part[l * parts + p]), cells));
+    ok = maps[l].init(parts, in_part.data() + l * parts);
+  }
+  if (!ok) {
+    return fail(Status::no_memory);
+  }
+  for_each_chunk(nt, parts, [&](std::size_t p) {
+    // The table's items in order, each added prefetch_ahead items of the
+    // table after its home slot was prefetched (a ring of pending items).
+    std::uint32_t ring[prefetch_ahead];
+    std::size_t pending = 0;
+    auto add = [&](std::uint32_t i) {
+      slot_of[i] = maps[std::size_t(place[i])].add(p, key_of[i], i);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      if (TouchedMap::part_of(key_of[i], parts) != p) continue;
+      maps[std::size_t(place[i])].prefetch(p, key_of[i]);
+      std::uint32_t &at = ring[pending % prefetch_ahead];
+      if (pending >= prefetch_ahead) add(at);
+      at = std::uint32_t(i);
+      ++pending;
     }
+    for (std::size_t k = pending > prefetch_ahead ? pending - prefetch_ahead : 0;
+         k < pending; ++k)
+      add(ring[k % prefetch_ahead]);
   });
 
   // Pass 4: the touched cells that exist, then the positions of the new
