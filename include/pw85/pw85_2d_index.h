@@ -196,14 +196,15 @@ PW85_API int pw85_2d_index_insert_many(pw85_2d_index *index, size_t n,
  * pw85_2d_index_overlap_any(), are those of a serial insertion, bit for
  * bit. At most n/4096 + 1 threads are started (none for threads = 1). For
  * n ≥ 1024 the ellipses are placed in passes over the whole call, which
- * allocate, for the time of the call, 12 bytes per ellipse and a hash
- * table of 48 to 96 bytes per cell that the ellipses of a level may occupy
- * (as many as they are, or, in a periodic rectangle, as the cells of the
- * level's grid if fewer). The cells that the call creates keep their
- * ellipses in one block (marked for transparent huge pages when large),
- * freed with the index; a cell that grows beyond what the call put in it
- * moves to memory of its own, and its part of the block stays
- * allocated, unused, until the index is destroyed.
+ * allocate, for the time of the call, 20 bytes per ellipse and hash
+ * tables of 48 to 96 bytes per cell that the ellipses of a level may
+ * occupy (as many as they are, or, in a periodic rectangle, as the cells
+ * of the level's grid times the threads if fewer: a table per thread).
+ * The cells that the call creates keep their ellipses in one block
+ * (marked for transparent huge pages when large), freed with the index; a
+ * cell that grows beyond what the call put in it moves to memory of its
+ * own, and its part of the block stays allocated, unused, until the index
+ * is destroyed.
  * @param[in,out] index the index.
  * @param[in] n the number of ellipses (0 does nothing).
  * @param[in] ids their ids (n values, distinct, not in use).

@@ -210,10 +210,11 @@ PW85_API int pw85_index_insert_many(pw85_index *index, size_t n,
  * insertion, bit for bit. At most n/4096 + 1 threads are started (none
  * for threads = 1). For n ≥ 1024 the ellipsoids are placed in passes over
  * the whole call (pw85_index_insert_many() takes the same path, on the
- * calling thread), which allocate, for the time of the call, 12 bytes per
- * ellipsoid and a hash table of 48 to 96 bytes per cell that the
+ * calling thread), which allocate, for the time of the call, 20 bytes per
+ * ellipsoid and hash tables of 48 to 96 bytes per cell that the
  * ellipsoids of a level may occupy (as many as they are, or, in a
- * periodic box, as the cells of the level's grid if fewer). The cells
+ * periodic box, as the cells of the level's grid times the threads if
+ * fewer: a table per thread). The cells
  * that the call creates keep their ellipsoids in one block (marked for
  * transparent huge pages when large), freed with the index; a cell that
  * grows beyond what the call put in it moves to memory of its own, and

@@ -162,7 +162,7 @@ struct OverlapPair {
   int result;
 };
 static_assert(sizeof(OverlapPair<3>) == 24 && sizeof(OverlapPair<2>) == 20,
-              "pw85_index.h's and pw85_2d.h's memory figures");
+              "pw85_index.h's and pw85_2d_index.h's memory figures");
 
 // The index in D = 2 or 3 dimensions: its members are defined in
 // index.cpp, queries.cpp, pairs.cpp and bulk.cpp, and each is
