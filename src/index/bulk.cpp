@@ -315,12 +315,14 @@ Status Index<D>::insert_bulk(std::size_t n, std::size_t const *ids,
     ++in_part[std::size_t(place[i]) * parts + TouchedMap::part_of(key_of[i], parts)];
   for (std::size_t l = 0; ok && l < nlevels; ++l) {
     if (items_in[l] == 0) continue;
-    // No more keys than cells in a periodic box.
-    Level<D> const &lv = levels_[l];
-    double cells = double(lv.n[0]);
-    for (int k = 1; k < D; ++k) cells *= double(lv.n[k]);
-    for (std::size_t p = 0; periodic_ && p < parts; ++p)
-      in_part[l * parts + p] = std::size_t(std::min(double(in_part[l * parts + p]), cells));
+    if (periodic_) {  // no more keys than cells in a periodic box
+      Level<D> const &lv = levels_[l];
+      double cells = double(lv.n[0]);
+      for (int k = 1; k < D; ++k) cells *= double(lv.n[k]);
+      for (std::size_t p = 0; p < parts; ++p)
+        in_part[l * parts + p] =
+            std::size_t(std::min(double(in_part[l * parts + p]), cells));
+    }
     ok = maps[l].init(parts, in_part.data() + l * parts);
   }
   if (!ok) {
