@@ -59,8 +59,9 @@
  * largest √Q_kk of those ellipsoids), at most 16 MiB each (a larger grid
  * uses a hash table instead). The all-pairs queries allocate, for the time
  * of the call, about 150 bytes per ellipsoid, and per pair reported 48
- * (overlapping pairs) or 80 (pairs within); large blocks are marked for
- * transparent huge pages on Linux, a hint that changes nothing but speed.
+ * (overlapping pairs) or 80 (pairs within). Blocks of 1 MiB and more
+ * are rounded up to whole 2 MiB pages and marked for transparent huge
+ * pages on Linux, a hint that changes nothing but speed.
  * Calls that modify an index (insert, update, remove, destroy) need
  * exclusive access to it; queries only read it and may run concurrently
  * with each other from several threads. The all-pairs queries,

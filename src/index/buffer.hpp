@@ -5,14 +5,17 @@
 // grow_for()), so that a caller can make every allocation of an operation
 // before it changes anything.
 //
-// Large buffers (the all-pairs queries' snapshot and pair lists, tens to
-// hundreds of megabytes at N = 1e6) are aligned to 2 MiB and, on Linux,
-// marked for huge pages (PW85_ADVISE_HUGEPAGES, compiler.hpp): with
-// transparent huge pages in "madvise" mode (the default of Debian 12) a
-// page fault then maps 2 MiB instead of 4 KiB.
+// Buffers of 1 MiB and more (the all-pairs queries' snapshot and pair
+// lists, insert_many()'s cells and per-item arrays: tens to hundreds of
+// megabytes at N = 1e6) are rounded up to whole 2 MiB pages, aligned to
+// 2 MiB and, on Linux, marked for huge pages (PW85_ADVISE_HUGEPAGES,
+// compiler.hpp): with transparent huge pages in "madvise" mode (the
+// default of Debian 12) a page fault then maps 2 MiB instead of 4 KiB, at
+// the cost of at most one partly used huge page per buffer.
 // Faults on fresh memory cost a quarter of the all-pairs query at N = 1e6
-// without it (measured with perf on a virtual machine). The advice is a
-// hint to the kernel: its failure changes nothing.
+// without it (measured with perf on a virtual machine, where a 4 KiB
+// fault costs tens of microseconds). The advice is a hint to the kernel:
+// its failure changes nothing.
 #ifndef PW85_SRC_INDEX_BUFFER_HPP
 #define PW85_SRC_INDEX_BUFFER_HPP
 
@@ -28,10 +31,14 @@
 namespace pw85::detail {
 
 // Allocates `bytes` aligned to `align` (a power of two, a multiple of
-// alignof(max_align_t) or 0 for malloc's); large blocks as above.
+// alignof(max_align_t) or 0 for malloc's); large blocks as above. (The
+// threshold was 8 MiB until 2.5: the arrays of 4 to 8 bytes per item of
+// insert_many() and the first blocks of the pair lists then took 9,300
+// faults of 4 KiB in `bench-index first`, 10^6 ellipsoids; 1 MiB leaves
+// about 700.)
 inline void *buffer_alloc(std::size_t bytes, std::size_t align) noexcept {
   constexpr std::size_t huge = std::size_t(1) << 21;
-  if (bytes >= 4 * huge) {
+  if (bytes >= huge / 2) {
     std::size_t const rounded = (bytes + huge - 1) & ~(huge - 1);
     if (rounded < bytes) return nullptr;
     void *p = std::aligned_alloc(huge, rounded);
