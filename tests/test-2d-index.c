@@ -10,8 +10,12 @@
  * paths), update, remove and insert; every query (overlap_any and its
  * batch, within, overlapping_pairs, pairs_within) on 1, 2 and 8 threads,
  * bit for bit; insert_many_threads on 1, 2 and 8 threads; every bad input,
- * with the outputs untouched. PW85_TEST_SMALL (sanitizer and valgrind
- * runs) makes the configurations smaller. */
+ * with the outputs untouched. The configurations are small enough that
+ * the library runs them on one thread (a thread per 4096 ellipses):
+ * /pw85/2d-index/threads-large checks 40000 ellipses, where insert_many
+ * and the all-pairs queries run on 2, 3 and 8 threads, against 1, bit for
+ * bit. PW85_TEST_SMALL (sanitizer and valgrind runs) makes the
+ * configurations smaller. */
 #include <float.h>
 #include <limits.h>
 #include <pw85/pw85_2d_index.h>
@@ -730,6 +734,53 @@ static void test_own_images(void) {
   pw85_2d_index_destroy(ix);
 }
 
+/* Thread counts that the smaller configurations above never reach (a
+ * thread per 4096 ellipses): 40000 ellipses in a periodic rectangle,
+ * insert_many_threads on 1, 3 and 8 threads (as many hash tables in its
+ * bulk path), then every all-pairs query on 1, 2, 3 and 8 threads, bit
+ * for bit. (Their agreement with the brute force: test_config().) */
+static void test_threads_large(void) {
+  Config const cf = {"large", 1, 40000, .4, 4., 0};
+  int const n = small_run() ? 12300 : cf.n; /* 12300: 3 threads still */
+  GRand *rng = g_rand_new_with_seed(0x2d7a3eu);
+  double const mean_area = G_PI * .75 * .75 / (1. + .5 * (cf.aspect - 1.));
+  double const side = grid(sqrt(n * mean_area / cf.fraction)) + 0x1p-12;
+  double const box[2] = {side, .8 * side}, span[2] = {side, .8 * side};
+  size_t *ids = g_new(size_t, n);
+  double *c = g_new(double, 2 * n), *q = g_new(double, 3 * n);
+  for (int i = 0; i < n; i++) ids[i] = (size_t)(n - 1 - i);
+  for (int i = 0; i < n; i++) random_ellipse(rng, &cf, c + 2 * i, q + 3 * i, span);
+  Answer ref[2];
+  int const inserts[] = {1, 3, 8};
+  for (size_t a = 0; a < G_N_ELEMENTS(inserts); a++) {
+    pw85_2d_index *ix = NULL;
+    g_assert_cmpint(pw85_2d_index_create(box, &ix), ==, PW85_SUCCESS);
+    g_assert_cmpint(pw85_2d_index_insert_many_threads(ix, (size_t)n, ids, c, q, inserts[a]),
+                    ==, PW85_SUCCESS);
+    for (int mode = 0; mode < 2; mode++) {
+      gboolean const within = mode == 1;
+      int const threads[] = {1, 2, 3, 8};
+      for (size_t k = 0; k < G_N_ELEMENTS(threads); k++) {
+        Answer more = all_pairs(ix, within, within ? 2.25 : 1., threads[k]);
+        if (a == 0 && k == 0) {
+          ref[mode] = more;
+          g_assert_cmpuint(more.count, >, (size_t)n / 2); /* pairs to compare */
+          continue;
+        }
+        if (!same_answer(&ref[mode], &more))
+          test_mismatch("%s after insert_many on %d threads: %d threads differ from 1",
+                        within ? "pairs_within" : "overlapping_pairs", inserts[a],
+                        threads[k]);
+        answer_free(&more);
+      }
+    }
+    pw85_2d_index_destroy(ix);
+  }
+  answer_free(&ref[0]), answer_free(&ref[1]);
+  g_free(ids), g_free(c), g_free(q);
+  g_rand_free(rng);
+}
+
 static Config const configs[] = {
     {"open-sparse", 0, 300, .2, 3., 0},
     {"open-dense", 0, 300, .6, 1.5, 0},
@@ -749,6 +800,7 @@ int main(int argc, char **argv) {
     g_test_add_data_func(path, &configs[k], test_config);
     g_free(path);
   }
+  g_test_add_func("/pw85/2d-index/threads-large", test_threads_large);
   g_test_add_func("/pw85/2d-index/own-images", test_own_images);
   g_test_add_func("/pw85/2d-index/errors", test_errors);
   g_test_add_func("/pw85/2d-index/exact-images", test_exact_images);
