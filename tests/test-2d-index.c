@@ -12,9 +12,9 @@
  * bit for bit; insert_many_threads on 1, 2 and 8 threads; every bad input,
  * with the outputs untouched. The configurations are small enough that
  * the library runs them on one thread (a thread per 4096 ellipses):
- * /pw85/2d-index/threads-large checks 40000 ellipses, where insert_many
- * and the all-pairs queries run on 2, 3 and 8 threads, against 1, bit for
- * bit. PW85_TEST_SMALL (sanitizer and valgrind runs) makes the
+ * /pw85/2d-index/threads-large checks 40000 ellipses, where insert_many,
+ * the all-pairs queries and overlap_any_batch (10000 candidates) run on
+ * 2, 3 and 8 threads, against 1, bit for bit. PW85_TEST_SMALL (sanitizer and valgrind runs) makes the
  * configurations smaller. */
 #include <float.h>
 #include <limits.h>
@@ -737,8 +737,9 @@ static void test_own_images(void) {
 /* Thread counts that the smaller configurations above never reach (a
  * thread per 4096 ellipses): 40000 ellipses in a periodic rectangle,
  * insert_many_threads on 1, 3 and 8 threads (as many hash tables in its
- * bulk path), then every all-pairs query on 1, 2, 3 and 8 threads, bit
- * for bit. (Their agreement with the brute force: test_config().) */
+ * bulk path), then every all-pairs query, and overlap_any_batch of 10000
+ * candidates, on 1, 2, 3 and 8 threads, bit for bit. (Their agreement
+ * with the brute force: test_config().) */
 static void test_threads_large(void) {
   Config const cf = {"large", 1, 40000, .4, 4., 0};
   int const n = small_run() ? 12300 : cf.n; /* 12300: 3 threads still */
@@ -773,6 +774,35 @@ static void test_threads_large(void) {
                         threads[k]);
         answer_free(&more);
       }
+    }
+    if (a == 0) { /* overlap_any_batch: every 4th ellipse grown 1.5 times */
+      int const m = n / 4;
+      double *qs = g_new(double, 3 * (size_t)m);
+      size_t *exclude = g_new(size_t, m), *hit = g_new(size_t, 2 * (size_t)m);
+      int *res = g_new(int, 2 * (size_t)m), *st = g_new(int, 2 * (size_t)m);
+      for (int k = 0; k < m; k++) {
+        for (int j = 0; j < 3; j++) qs[3 * k + j] = 2.25 * q[3 * (4 * k) + j];
+        exclude[k] = ids[4 * k];
+      }
+      int const batch_threads[] = {1, 2, 3, 8};
+      for (size_t b = 0; b < G_N_ELEMENTS(batch_threads); b++) {
+        size_t const o = b == 0 ? 0 : (size_t)m;
+        g_assert_cmpint(pw85_2d_index_overlap_any_batch(ix, (size_t)m, c, 8, qs, 3, exclude,
+                                                        res + o, hit + o, st + o,
+                                                        batch_threads[b]),
+                        ==, PW85_SUCCESS);
+        if (b == 0) {
+          int overlapping = 0;
+          for (int k = 0; k < m; k++) overlapping += res[k] < 0;
+          g_assert_cmpint(overlapping, >, m / 4); /* answers of both kinds */
+          g_assert_cmpint(overlapping, <, m);
+        } else if (memcmp(res, res + m, (size_t)m * sizeof(int)) != 0 ||
+                   memcmp(st, st + m, (size_t)m * sizeof(int)) != 0 ||
+                   memcmp(hit, hit + m, (size_t)m * sizeof(size_t)) != 0) {
+          test_mismatch("overlap_any_batch on %d threads differs from 1", batch_threads[b]);
+        }
+      }
+      g_free(qs), g_free(exclude), g_free(hit), g_free(res), g_free(st);
     }
     pw85_2d_index_destroy(ix);
   }
