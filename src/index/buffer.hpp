@@ -31,11 +31,11 @@
 namespace pw85::detail {
 
 // Allocates `bytes` aligned to `align` (a power of two, a multiple of
-// alignof(max_align_t) or 0 for malloc's); large blocks as above. (The
-// threshold was 8 MiB until 2.5: the arrays of 4 to 8 bytes per item of
-// insert_many() and the first blocks of the pair lists then took 9,300
-// faults of 4 KiB in `bench-index first`, 10^6 ellipsoids; 1 MiB leaves
-// fewer than 1,000.)
+// alignof(max_align_t) or 0 for malloc's); large blocks as above. (With
+// a threshold of 8 MiB, the arrays of 4 to 8 bytes per item of
+// insert_many() and the first blocks of the pair lists took 9,300 faults
+// of 4 KiB in `bench-index first`, 10^6 ellipsoids; 1 MiB leaves fewer
+// than 1,000.)
 inline void *buffer_alloc(std::size_t bytes, std::size_t align) noexcept {
   constexpr std::size_t huge = std::size_t(1) << 21;
   if (bytes >= huge / 2) {
