@@ -65,14 +65,15 @@
  * table of 4 bytes per cell of a grid of the rectangle (cells 2 to 4 times
  * as wide as the largest √Q_kk of those ellipses), at most 16 MiB each (a
  * larger grid uses a hash table instead). The all-pairs queries allocate,
- * for the time of the call, about 100 bytes per ellipse, and per pair
- * reported 40 (overlapping pairs) or 80 (pairs within). Blocks of 1 MiB
- * and more are rounded up to whole 2 MiB pages and marked for
- * transparent huge pages on Linux, a hint that changes nothing but
- * speed. Calls that modify an index (insert, update, remove, destroy)
- * need exclusive access to it; queries only read it and may run
- * concurrently with each other from several threads. The all-pairs
- * queries, pw85_2d_index_energy(), pw85_2d_index_overlap_any_batch() and
+ * for the time of the call, about 100 bytes per ellipse (8 of them per id
+ * below the largest in use, stored or not), and per pair reported 40
+ * (overlapping pairs) or 80 (pairs within). Blocks of 1 MiB and more are
+ * rounded up to whole 2 MiB pages and marked for transparent huge pages
+ * on Linux, a hint that changes nothing but speed. Calls that modify an
+ * index (insert, update, remove, destroy) need exclusive access to it;
+ * queries only read it and may run concurrently with each other from
+ * several threads. The all-pairs queries, pw85_2d_index_energy(),
+ * pw85_2d_index_overlap_any_batch() and
  * pw85_2d_index_insert_many_threads() start up to `threads` OpenMP
  * threads when libpw85 was built with OpenMP (see pw85_index_openmp()),
  * and run serially otherwise, with the limits of pw85_index.h (at most

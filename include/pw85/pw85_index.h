@@ -58,10 +58,11 @@
  * bytes per cell of a grid of the box (cells 2 to 4 times as wide as the
  * largest √Q_kk of those ellipsoids), at most 16 MiB each (a larger grid
  * uses a hash table instead). The all-pairs queries allocate, for the time
- * of the call, about 150 bytes per ellipsoid, and per pair reported 48
- * (overlapping pairs) or 80 (pairs within). Blocks of 1 MiB and more
- * are rounded up to whole 2 MiB pages and marked for transparent huge
- * pages on Linux, a hint that changes nothing but speed.
+ * of the call, about 150 bytes per ellipsoid (8 of them per id below the
+ * largest in use, stored or not), and per pair reported 48 (overlapping
+ * pairs) or 80 (pairs within). Blocks of 1 MiB and more are rounded up to
+ * whole 2 MiB pages and marked for transparent huge pages on Linux, a
+ * hint that changes nothing but speed.
  * Calls that modify an index (insert, update, remove, destroy) need
  * exclusive access to it; queries only read it and may run concurrently
  * with each other from several threads. The all-pairs queries,
