@@ -14,8 +14,8 @@
  * the library runs them on one thread (a thread per 4096 ellipses):
  * /pw85/2d-index/threads-large checks 40000 ellipses, where insert_many,
  * the all-pairs queries and overlap_any_batch (10000 candidates) run on
- * 2, 3 and 8 threads, against 1, bit for bit. PW85_TEST_SMALL (sanitizer and valgrind runs) makes the
- * configurations smaller. */
+ * 2, 3 and 8 threads, against 1, bit for bit. PW85_TEST_SMALL (sanitizer
+ * and valgrind runs) makes the configurations smaller. */
 #include <float.h>
 #include <limits.h>
 #include <pw85/pw85_2d_index.h>
