@@ -720,8 +720,7 @@ static void test_insert_many_threads(gconstpointer data) {
  * for up to 9 threads (one per 4096): as many hash tables in its pass 3,
  * not a power of two for 3, 5 and 7 (test_insert_many_threads() above
  * runs at most 2 with its 8000 items). Each leaves the index of 1 thread:
- * the stored ellipsoids, every overlapping pair and the neighbour that
- * overlap_any() names, bit for bit. */
+ * the state that assert_same_state() compares, bit for bit. */
 static void test_insert_many_tables(void) {
   Config const cf = {"tables", MONO, 1, 40000, .4, 0};
   int const n = small_run() ? 12300 : cf.n; /* 12300: 3 threads still */
@@ -732,51 +731,26 @@ static void test_insert_many_tables(void) {
   double *c = g_new(double, 3 * n), *q = g_new(double, 6 * n);
   for (int i = 0; i < n; i++) ids[i] = (size_t)(n - 1 - i);
   for (int i = 0; i < n; i++) random_ellipsoid(rng, &cf, side, c + 3 * i, q + 6 * i);
-  Pairs ref = {0};
-  double *got = g_new(double, 9 * (size_t)n), *want = g_new(double, 9 * (size_t)n);
-  /* overlap_any of every 7th ellipsoid grown 2.5 times: which of its
-   * neighbours it names depends on the order within the cells */
-  int const probes = (n + 6) / 7;
-  size_t *hit = g_new(size_t, 2 * (size_t)probes);
+  State expected = {0};
   int const counts[] = {1, 3, 5, 7, 9};
   for (size_t t = 0; t < G_N_ELEMENTS(counts); t++) {
     pw85_index *ix = NULL;
     g_assert_cmpint(pw85_index_create(box, &ix), ==, PW85_SUCCESS);
     g_assert_cmpint(pw85_index_insert_many_threads(ix, (size_t)n, ids, c, q, counts[t]), ==,
                     PW85_SUCCESS);
-    double *const out = t == 0 ? want : got;
-    for (int i = 0; i < n; i++)
-      g_assert_cmpint(pw85_index_get(ix, (size_t)i, out + 9 * i, out + 9 * i + 3), ==,
-                      PW85_SUCCESS);
-    size_t *const named = hit + (t == 0 ? 0 : probes);
-    for (int k = 0; k < probes; k++) {
-      double qk[6];
-      for (int j = 0; j < 6; j++) qk[j] = 6.25 * out[9 * (7 * k) + 3 + j];
-      int result = 1;
-      named[k] = PW85_INDEX_NO_ID;
-      g_assert_cmpint(pw85_index_overlap_any(ix, out + 9 * (7 * k), qk, (size_t)(7 * k),
-                                             &result, &named[k]),
-                      ==, PW85_SUCCESS);
-    }
-    Pairs p = index_pairs(ix, FALSE, 1., 2);
     if (t == 0) {
-      g_assert_cmpuint(p.count, >, (size_t)n / 2); /* a dense set: pairs to compare */
-      ref = p;
+      expected = state_of(ix, (size_t)n);
+      /* a dense set: pairs to compare */
+      g_assert_cmpuint(expected.overlapping.count, >, (size_t)n / 2);
     } else {
-      if (memcmp(got, want, 9 * (size_t)n * sizeof(double)) != 0)
-        test_mismatch("insert_many_threads on %d threads: the stored ellipsoids differ",
-                      counts[t]);
-      if (!pairs_equal(&ref, &p))
-        test_mismatch("insert_many_threads on %d threads: overlapping pairs differ",
-                      counts[t]);
-      if (memcmp(hit, hit + probes, (size_t)probes * sizeof(size_t)) != 0)
-        test_mismatch("insert_many_threads on %d threads: overlap_any differs", counts[t]);
-      pairs_clear(&p);
+      char *what = g_strdup_printf("insert_many_threads on %d threads", counts[t]);
+      assert_same_state(&expected, ix, what);
+      g_free(what);
     }
     pw85_index_destroy(ix);
   }
-  pairs_clear(&ref);
-  g_free(got), g_free(want), g_free(hit), g_free(ids), g_free(c), g_free(q);
+  state_clear(&expected);
+  g_free(ids), g_free(c), g_free(q);
   g_rand_free(rng);
 }
 
