@@ -269,10 +269,15 @@ def test_library():
         check(ov == count == overlapping,
               "%d rank(s): compute pw85/overlap %d, pypw85.overlap %d, "
               "Index.overlapping_pairs %d" % (ranks, ov, count, overlapping))
-    # Two types, ε given for 1 1 and 2 2, mixed for 1 2 (geometric:
-    # √(ε11·ε22)), on 2 ranks.
+    # Two types of two shapes (type 2 half the size: the 1-2 cut-off is
+    # the sum of two bounding radii, which a single shape would not test),
+    # ε given for 1 1 and 2 2, mixed for 1 2 (geometric: √(ε11·ε22)), on 2
+    # ranks.
     types = np.random.default_rng(9).integers(1, 3, size=150)
-    work, _ = prepared(5, 150, 0.45, types=types)
+    box, c, a, p = configuration(5, 150, 0.45)
+    a[types == 2] = 0.5 * SEMI
+    work = lr.tempfile.mkdtemp(prefix="pw85-lammps-")
+    lr.write_data(os.path.join(work, "data.lmp"), box, c, a, p, types=types)
     eps = np.zeros((3, 3))
     eps[1, 1], eps[2, 2] = EPS, 0.4
     eps[1, 2] = eps[2, 1] = math.sqrt(EPS * 0.4)
@@ -362,6 +367,16 @@ def relax_script(data, dump):
 def test_errors():
     work, _ = prepared(3, 20, 0.3)
     data = os.path.join(work, "data.lmp")
+    # The same configuration with the quaternion of atom 2 set to 0 0 0 0
+    # (LAMMPS normalises it to NaNs).
+    lines = open(data).read().splitlines()
+    k = lines.index("Ellipsoids") + 3
+    fields = lines[k].split()
+    fields[4:8] = ["0", "0", "0", "0"]
+    lines[k] = " ".join(fields)
+    zero_quat = os.path.join(work, "zero-quat.lmp")
+    with open(zero_quat, "w") as f:
+        f.write("\n".join(lines) + "\n")
     cases = [
         ("a cut-off that misses pairs",
          header(data).replace("pair_style pw85\n", "pair_style pw85 1.5\n") + "run 0\n",
@@ -385,6 +400,12 @@ def test_errors():
         ("a negative epsilon",
          header(data).replace("pair_coeff 1 1 %r" % EPS, "pair_coeff 1 1 -1") + "run 0\n",
          {}, "epsilon must be finite and >= 0"),
+        # A shape grown after the cut-off was set (no setup before run 1).
+        ("a shape grown within a run",
+         header(data) + "run 0\nset type 1 shape 3 1 0.6\nrun 1 pre no\n", {},
+         "grew beyond the cut-off set at the start of the run"),
+        ("a quaternion of zeros", header(zero_quat) + "run 0\n", {},
+         "give no ellipsoid"),
     ]
     # Two ranks where the check involves them all (the cut-off, an atom
     # that one rank holds).
