@@ -10,9 +10,9 @@
  * At μ = 0 (coincident centres) dU/dμ² is infinite while every ∂μ²/∂(...)
  * is 0: the energy has a cusp there, and its force is taken as 0.
  *
- * This is the file to change for another energy (for instance the energy
- * call of the library's index, issue 27): the pair style and the tests
- * read the formula only through pw85_lammps_energy(). */
+ * This is the file to change for another energy: the pair style reads the
+ * formula only through pw85_lammps_energy() (the tests recompute it
+ * independently, in Python). */
 #ifndef PW85_LAMMPS_ENERGY_H
 #define PW85_LAMMPS_ENERGY_H
 
