@@ -150,8 +150,9 @@ void PairPW85::init_style()
 double PairPW85::init_one(int i, int j)
 {
   if (setflag[i][j] == 0) {
-    // Not given: ε mixed from the pure types (pair_modify mix; geometric by
-    // default) and the cut-off of pair_style.
+    // Not given: ε mixed from the pure types (mix_energy() with σ = 1 gives
+    // √(ε_I·ε_J) for every pair_modify mix rule) and the cut-off of
+    // pair_style.
     if (setflag[i][i] == 0 || setflag[j][j] == 0)
       error->all(FLERR, "Pair pw85: pair_coeff {} {} missing (and not mixable)", i, j);
     epsilon[i][j] = mix_energy(epsilon[i][i], epsilon[j][j], 1.0, 1.0);
