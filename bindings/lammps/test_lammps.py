@@ -370,7 +370,8 @@ def test_errors():
     # The same configuration with the quaternion of atom 2 set to 0 0 0 0
     # (LAMMPS normalises it to NaNs).
     lines = open(data).read().splitlines()
-    k = lines.index("Ellipsoids") + 3
+    start = lines.index("Ellipsoids")
+    k = next(i for i in range(start, len(lines)) if lines[i].split()[:1] == ["2"])
     fields = lines[k].split()
     fields[4:8] = ["0", "0", "0", "0"]
     lines[k] = " ".join(fields)
@@ -405,7 +406,7 @@ def test_errors():
          header(data) + "run 0\nset type 1 shape 3 1 0.6\nrun 1 pre no\n", {},
          "grew beyond the cut-off set at the start of the run"),
         ("a quaternion of zeros", header(zero_quat) + "run 0\n", {},
-         "give no ellipsoid"),
+         "give no ellipsoid: an input is NaN or infinite"),
     ]
     # Two ranks where the check involves them all (the cut-off, an atom
     # that one rank holds).
