@@ -67,8 +67,12 @@ def rel(a, b):
     return float(np.max(np.abs(a - b)) / max(np.max(np.abs(b)), 1e-300))
 
 
-def prepared(seed, n, phi, types=None):
+def prepared(seed, n, phi, types=None, scale=None):
+    """configuration() in a data file of a new work directory; scale, if
+    given, multiplies each atom's semi-axes."""
     box, c, a, p = configuration(seed, n, phi)
+    if scale is not None:
+        a *= np.asarray(scale)[:, None]
     work = lr.tempfile.mkdtemp(prefix="pw85-lammps-")
     lr.write_data(os.path.join(work, "data.lmp"), box, c, a, p, types=types)
     return work, box
@@ -274,10 +278,7 @@ def test_library():
     # ε given for 1 1 and 2 2, mixed for 1 2 (geometric: √(ε11·ε22)), on 2
     # ranks.
     types = np.random.default_rng(9).integers(1, 3, size=150)
-    box, c, a, p = configuration(5, 150, 0.45)
-    a[types == 2] = 0.5 * SEMI
-    work = lr.tempfile.mkdtemp(prefix="pw85-lammps-")
-    lr.write_data(os.path.join(work, "data.lmp"), box, c, a, p, types=types)
+    work, _ = prepared(5, 150, 0.45, types=types, scale=np.where(types == 2, 0.5, 1.0))
     eps = np.zeros((3, 3))
     eps[1, 1], eps[2, 2] = EPS, 0.4
     eps[1, 2] = eps[2, 1] = math.sqrt(EPS * 0.4)
@@ -369,15 +370,10 @@ def test_errors():
     data = os.path.join(work, "data.lmp")
     # The same configuration with the quaternion of atom 2 set to 0 0 0 0
     # (LAMMPS normalises it to NaNs).
-    lines = open(data).read().splitlines()
-    start = lines.index("Ellipsoids")
-    k = next(i for i in range(start, len(lines)) if lines[i].split()[:1] == ["2"])
-    fields = lines[k].split()
-    fields[4:8] = ["0", "0", "0", "0"]
-    lines[k] = " ".join(fields)
+    box, c, a, p = configuration(3, 20, 0.3)
+    p[1] = 0.0
     zero_quat = os.path.join(work, "zero-quat.lmp")
-    with open(zero_quat, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    lr.write_data(zero_quat, box, c, a, p)
     cases = [
         ("a cut-off that misses pairs",
          header(data).replace("pair_style pw85\n", "pair_style pw85 1.5\n") + "run 0\n",
